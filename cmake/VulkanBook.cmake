@@ -1,0 +1,67 @@
+# Settings, dependencies and helper functions shared by the top-level build and by every
+# chapter built on its own (cmake -S chapter-06 -B /tmp/b06). Included once per build tree.
+include_guard(GLOBAL)
+
+set(CMAKE_CXX_STANDARD 20)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+set(CMAKE_CXX_EXTENSIONS OFF)
+set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+    set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif()
+
+# Every chapter lands in <build>/bin with its shaders in <build>/bin/shaders/<chapter>/, so an
+# executable finds its data next to itself, whatever the working directory.
+set(CMAKE_RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+set(VKBOOK_ROOT ${CMAKE_CURRENT_LIST_DIR}/..)
+set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
+
+option(VKBOOK_WERROR "Treat compiler warnings as errors" ON)
+
+# All dependencies come from the system (Debian packages); nothing is downloaded.
+find_package(Vulkan 1.3 REQUIRED COMPONENTS glslangValidator)
+find_package(glfw3 3.3 REQUIRED)
+find_package(glm REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # Debian's libstb-dev ships no CMake config
+
+# vkbook_warnings(target): the warning set every target of ours builds with.
+function(vkbook_warnings target)
+    # Vulkan structs are filled with C++20 designated initializers, which zero every member they
+    # leave out; that is the point, so GCC's -Wmissing-field-initializers is off.
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                             -Wno-sign-conversion -Wno-missing-field-initializers)
+    if(VKBOOK_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+endfunction()
+
+# vkbook_shaders(target chapter src...): compiles shaders/<chapter>/<src> to
+# <build>/bin/shaders/<chapter>/<src>.spv at build time. glslangValidator writes a depfile, so
+# editing a file under shaders/include/ rebuilds every shader that includes it. A GLSL error
+# fails the build with the compiler's message.
+function(vkbook_shaders target chapter)
+    set(outputs)
+    foreach(src IN LISTS ARGN)
+        set(in ${VKBOOK_ROOT}/shaders/${chapter}/${src})
+        set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${src}.spv)
+        add_custom_command(
+            OUTPUT ${out}
+            COMMAND ${CMAKE_COMMAND} -E make_directory ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}
+            COMMAND Vulkan::glslangValidator --target-env vulkan1.3 -I${VKBOOK_ROOT}/shaders/include
+                    --depfile ${out}.d -o ${out} ${in}
+            MAIN_DEPENDENCY ${in}
+            DEPFILE ${out}.d
+            COMMENT "glslangValidator ${chapter}/${src}"
+            VERBATIM)
+        list(APPEND outputs ${out})
+    endforeach()
+    add_custom_target(${target}-shaders DEPENDS ${outputs})
+    add_dependencies(${target} ${target}-shaders)
+endfunction()
+
+# The common library, added once whichever CMakeLists comes first.
+if(NOT TARGET common)
+    add_subdirectory(${VKBOOK_ROOT}/common ${CMAKE_BINARY_DIR}/common)
+endif()

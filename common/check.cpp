@@ -1,0 +1,57 @@
+// VK_CHECK's reporting: the result's name and where the call was made.
+#include "common/check.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace common {
+
+const char* resultName(VkResult result) {
+    switch (result) {
+#define NAME(r) \
+    case r:     \
+        return #r
+        NAME(VK_SUCCESS);
+        NAME(VK_NOT_READY);
+        NAME(VK_TIMEOUT);
+        NAME(VK_EVENT_SET);
+        NAME(VK_EVENT_RESET);
+        NAME(VK_INCOMPLETE);
+        NAME(VK_ERROR_OUT_OF_HOST_MEMORY);
+        NAME(VK_ERROR_OUT_OF_DEVICE_MEMORY);
+        NAME(VK_ERROR_INITIALIZATION_FAILED);
+        NAME(VK_ERROR_DEVICE_LOST);
+        NAME(VK_ERROR_MEMORY_MAP_FAILED);
+        NAME(VK_ERROR_LAYER_NOT_PRESENT);
+        NAME(VK_ERROR_EXTENSION_NOT_PRESENT);
+        NAME(VK_ERROR_FEATURE_NOT_PRESENT);
+        NAME(VK_ERROR_INCOMPATIBLE_DRIVER);
+        NAME(VK_ERROR_TOO_MANY_OBJECTS);
+        NAME(VK_ERROR_FORMAT_NOT_SUPPORTED);
+        NAME(VK_ERROR_FRAGMENTED_POOL);
+        NAME(VK_ERROR_UNKNOWN);
+        NAME(VK_ERROR_OUT_OF_POOL_MEMORY);
+        NAME(VK_ERROR_INVALID_EXTERNAL_HANDLE);
+        NAME(VK_ERROR_FRAGMENTATION);
+        NAME(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS);
+        NAME(VK_PIPELINE_COMPILE_REQUIRED);
+        NAME(VK_ERROR_SURFACE_LOST_KHR);
+        NAME(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR);
+        NAME(VK_SUBOPTIMAL_KHR);
+        NAME(VK_ERROR_OUT_OF_DATE_KHR);
+        NAME(VK_ERROR_INCOMPATIBLE_DISPLAY_KHR);
+        NAME(VK_ERROR_VALIDATION_FAILED_EXT);
+#undef NAME
+        default:
+            return "VK_RESULT_UNKNOWN";
+    }
+}
+
+void throwVkError(VkResult result, const char* expression, const char* file, int line) {
+    std::string message = std::string(expression) + " failed with " + resultName(result) + " (" +
+                          std::filesystem::path(file).filename().string() + ":" + std::to_string(line) +
+                          ")";
+    throw Failure(message);
+}
+
+}  // namespace common

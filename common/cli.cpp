@@ -1,0 +1,148 @@
+// Command-line parsing shared by every chapter, and the mapping of failures to exit codes.
+#include "common/cli.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <cstdio>
+#include <string_view>
+
+#include "common/check.hpp"
+#include "common/instance.hpp"
+
+namespace common {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
+    "          [--device NAME] [--validation] [--resize WxH] [--help]\n"
+    "\n"
+    "  --headless         render offscreen, no window or display needed\n"
+    "  --width W          image width, 1..16384 (default 1280)\n"
+    "  --height H         image height, 1..16384 (default 720)\n"
+    "  --frames N         frames to render, 1..10000000 (default: 1 headless, until closed in a window)\n"
+    "  --screenshot FILE  write the last frame as a PNG\n"
+    "  --device NAME      use the first Vulkan device whose name contains NAME (case-insensitive)\n"
+    "  --validation       enable VK_LAYER_KHRONOS_validation with synchronization validation;\n"
+    "                     exit with code 3 if it reports any warning or error\n"
+    "  --resize WxH       (testing) resize the window or offscreen target to WxH after half of\n"
+    "                     --frames\n"
+    "  --help             print this text\n"
+    "\n"
+    "exit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
+
+uint32_t parseNumber(std::string_view flag, std::string_view text, uint32_t min, uint32_t max) {
+    uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error == std::errc::invalid_argument || end != text.data() + text.size())
+        throw InputError(std::string(flag) + " expects a whole number, got '" + std::string(text) + "'");
+    if (error == std::errc::result_out_of_range || value < min || value > max)
+        throw InputError(std::string(flag) + " must be between " + std::to_string(min) + " and " +
+                         std::to_string(max) + ", got " + std::string(text));
+    return value;
+}
+
+VkExtent2D parseExtent(std::string_view flag, std::string_view text) {
+    size_t x = text.find('x');
+    if (x == std::string_view::npos)
+        throw InputError(std::string(flag) + " expects WIDTHxHEIGHT, got '" + std::string(text) + "'");
+    return {parseNumber(flag, text.substr(0, x), 1, kMaxWindowDimension),
+            parseNumber(flag, text.substr(x + 1), 1, kMaxWindowDimension)};
+}
+
+// Refuses a screenshot path we could not write at the end of the run, before any work is done.
+// The file itself is only written at the end (through a temporary file and a rename, so an
+// existing file is never left half-written).
+void checkScreenshotPath(const std::filesystem::path& path) {
+    namespace fs = std::filesystem;
+    std::string name = path.string();
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png") throw InputError("--screenshot '" + name + "' must end in .png");
+    fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(directory, ec))
+        throw InputError("cannot write screenshot '" + name + "': directory '" + directory.string() +
+                         "' does not exist");
+    if (fs::is_directory(path, ec))
+        throw InputError("cannot write screenshot '" + name + "': it is a directory");
+    if (access(directory.c_str(), W_OK) != 0)
+        throw InputError("cannot write screenshot '" + name + "': directory '" + directory.string() +
+                         "' is not writable");
+    if (fs::exists(path, ec) && access(path.c_str(), W_OK) != 0)
+        throw InputError("cannot write screenshot '" + name + "': the file is not writable");
+}
+
+}  // namespace
+
+Options parseCommandLine(int argc, const char* const* argv) {
+    Options options;
+    bool framesGiven = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string_view arg = argv[i];
+        auto value = [&]() -> std::string_view {
+            if (i + 1 >= argc) throw InputError(std::string(arg) + " needs a value");
+            return argv[++i];
+        };
+        if (arg == "--headless") {
+            options.headless = true;
+        } else if (arg == "--width") {
+            options.width = parseNumber(arg, value(), 1, kMaxWindowDimension);
+        } else if (arg == "--height") {
+            options.height = parseNumber(arg, value(), 1, kMaxWindowDimension);
+        } else if (arg == "--frames") {
+            options.frames = parseNumber(arg, value(), 1, 10'000'000);
+            framesGiven = true;
+        } else if (arg == "--screenshot") {
+            options.screenshot = value();
+            checkScreenshotPath(options.screenshot);
+        } else if (arg == "--device") {
+            options.device = value();
+            if (options.device.empty()) throw InputError("--device needs a non-empty name");
+        } else if (arg == "--validation") {
+            options.validation = true;
+        } else if (arg == "--resize") {
+            options.resizeTo = parseExtent(arg, value());
+        } else if (arg == "--help" || arg == "-h") {
+            options.help = true;
+        } else if (arg.starts_with("-")) {
+            throw InputError("unknown option '" + std::string(arg) + "' (see --help)");
+        } else {
+            throw InputError("unexpected argument '" + std::string(arg) + "' (see --help)");
+        }
+    }
+    if (options.resizeTo && (!framesGiven || options.frames < 2))
+        throw InputError("--resize needs --frames 2 or more (it happens after half of them)");
+    return options;
+}
+
+uint32_t frameCount(const Options& options) {
+    if (options.frames != 0) return options.frames;
+    return options.headless ? 1 : 0;
+}
+
+int runChapter(int argc, const char* const* argv, const char* name, const char* summary,
+               const std::function<void(const Options&)>& chapter) {
+    try {
+        Options options = parseCommandLine(argc, argv);
+        if (options.help) {
+            std::printf("%s: %s\n\n", name, summary);
+            std::printf(kUsage, name);
+            return 0;
+        }
+        chapter(options);
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "%s: error: %s\n", name, error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "%s: error: %s\n", name, error.what());
+        return 1;
+    }
+    if (uint32_t count = validationMessageCount(); count != 0) {
+        std::fprintf(stderr, "%s: the validation layer reported %u message(s)\n", name, count);
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace common

@@ -1,0 +1,28 @@
+// Where a chapter finds its data (next to its executable, whatever the working directory),
+// SPIR-V shader modules compiled at build time, and the per-user cache directory.
+// The book's ShaderProgram (chapter 6) loads .spv files the same way.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include "common/device.hpp"
+
+namespace common {
+
+// The directory holding the running executable (from /proc/self/exe), e.g. <build>/bin.
+std::filesystem::path executableDir();
+
+// The whole file; throws Failure naming the file when it cannot be read.
+std::vector<char> readFile(const std::filesystem::path& path);
+
+// Loads <executableDir>/shaders/<name>.spv, e.g. loadShaderModule(device, "chapter-06/triangle.vert").
+VkShaderModule loadShaderModule(const Device& device, std::string_view name);
+
+// $XDG_CACHE_HOME/vulkan-book-cpp or ~/.cache/vulkan-book-cpp; empty when neither is set.
+std::filesystem::path cacheDir();
+
+}  // namespace common

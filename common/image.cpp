@@ -1,0 +1,62 @@
+// Image and image view creation.
+#include "common/image.hpp"
+
+#include "common/buffer.hpp"
+#include "common/check.hpp"
+
+namespace common {
+
+VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect) {
+    VkImageViewCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = image,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D,
+        .format = format,
+        .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0,
+                             .layerCount = 1},
+    };
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(device.handle, &info, nullptr, &view));
+    return view;
+}
+
+Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                  VkImageAspectFlags aspect) {
+    Image image;
+    image.format = format;
+    image.extent = extent;
+    VkImageCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .imageType = VK_IMAGE_TYPE_2D,
+        .format = format,
+        .extent = {extent.width, extent.height, 1},
+        .mipLevels = 1,
+        .arrayLayers = 1,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .tiling = VK_IMAGE_TILING_OPTIMAL,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+    };
+    VK_CHECK(vkCreateImage(device.handle, &info, nullptr, &image.handle));
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
+    VkMemoryAllocateInfo allocInfo{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+    };
+    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
+    VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
+    image.view = createImageView(device, image.handle, format, aspect);
+    return image;
+}
+
+void destroyImage(const Device& device, Image& image) {
+    vkDestroyImageView(device.handle, image.view, nullptr);
+    vkDestroyImage(device.handle, image.handle, nullptr);
+    vkFreeMemory(device.handle, image.memory, nullptr);
+    image = {};
+}
+
+}  // namespace common

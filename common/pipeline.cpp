@@ -1,0 +1,185 @@
+// Pipeline cache persistence and graphics pipeline creation.
+#include "common/pipeline.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "common/check.hpp"
+#include "common/files.hpp"
+
+namespace common {
+namespace {
+
+// Why `data` cannot seed a pipeline cache on this device; empty when it can. The layout is
+// VkPipelineCacheHeaderVersionOne (Vulkan spec, "Pipeline Cache"): drivers reject a foreign
+// cache themselves, but not all of them do it gracefully, so we check first.
+std::string cacheMismatch(const Device& device, const std::vector<char>& data) {
+    VkPipelineCacheHeaderVersionOne header;
+    if (data.size() < sizeof(header)) return "it is shorter than a cache header";
+    std::memcpy(&header, data.data(), sizeof(header));
+    if (header.headerSize < sizeof(header) || header.headerSize > data.size()) return "its header size is wrong";
+    if (header.headerVersion != VK_PIPELINE_CACHE_HEADER_VERSION_ONE) return "its header version is unknown";
+    if (header.vendorID != device.properties.vendorID || header.deviceID != device.properties.deviceID ||
+        std::memcmp(header.pipelineCacheUUID, device.properties.pipelineCacheUUID, VK_UUID_SIZE) != 0)
+        return "it was written by another device or driver";
+    return {};
+}
+
+void warn(const std::string& message) { std::fprintf(stderr, "warning: %s\n", message.c_str()); }
+
+}  // namespace
+
+PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
+    PipelineCache cache;
+    if (std::filesystem::path dir = cacheDir(); !dir.empty()) {
+        char suffix[32];
+        std::snprintf(suffix, sizeof(suffix), "-%04x-%04x.bin", device.properties.vendorID,
+                      device.properties.deviceID);
+        cache.file = dir / (std::string(name) + suffix);
+    }
+
+    std::vector<char> data;
+    std::error_code ec;
+    if (!cache.file.empty() && std::filesystem::exists(cache.file, ec)) {
+        try {
+            data = readFile(cache.file);
+        } catch (const Failure& error) {
+            warn(std::string("ignoring pipeline cache: ") + error.what());
+        }
+        if (std::string why = data.empty() ? "" : cacheMismatch(device, data); !why.empty()) {
+            warn("ignoring pipeline cache '" + cache.file.string() + "': " + why);
+            data.clear();
+        }
+    }
+
+    VkPipelineCacheCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO,
+        .initialDataSize = data.size(),
+        .pInitialData = data.data(),
+    };
+    if (vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle) != VK_SUCCESS) {
+        warn("the driver refused pipeline cache '" + cache.file.string() + "'; starting empty");
+        info.initialDataSize = 0;
+        info.pInitialData = nullptr;
+        VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));
+    }
+    return cache;
+}
+
+void savePipelineCache(const Device& device, const PipelineCache& cache) {
+    if (cache.file.empty()) return;
+    size_t size = 0;
+    VK_CHECK(vkGetPipelineCacheData(device.handle, cache.handle, &size, nullptr));
+    std::vector<char> data(size);
+    VK_CHECK(vkGetPipelineCacheData(device.handle, cache.handle, &size, data.data()));
+    data.resize(size);
+
+    // A crash or a second process halfway through never leaves a truncated cache behind: the
+    // bytes go to a file of our own first, which then replaces the old one in one rename().
+    std::error_code ec;
+    std::filesystem::create_directories(cache.file.parent_path(), ec);
+    std::filesystem::path temporary = cache.file;
+    temporary += ".tmp" + std::to_string(getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(data.data(), static_cast<std::streamsize>(data.size()));
+        if (!out.flush()) {
+            warn("cannot write pipeline cache '" + temporary.string() + "'");
+            std::filesystem::remove(temporary, ec);
+            return;
+        }
+    }
+    std::filesystem::rename(temporary, cache.file, ec);
+    if (ec) {
+        warn("cannot write pipeline cache '" + cache.file.string() + "': " + ec.message());
+        std::filesystem::remove(temporary, ec);
+    }
+}
+
+void destroyPipelineCache(const Device& device, PipelineCache& cache) {
+    vkDestroyPipelineCache(device.handle, cache.handle, nullptr);
+    cache = {};
+}
+
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module) {
+    return {
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+        .stage = stage,
+        .module = module,
+        .pName = "main",
+    };
+}
+
+VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache, const GraphicsPipelineDesc& desc) {
+    VkPipelineVertexInputStateCreateInfo noVertexInput{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+        .topology = desc.topology,
+    };
+    // Counts only: the viewport and scissor themselves are dynamic state.
+    VkPipelineViewportStateCreateInfo viewport{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
+        .viewportCount = 1,
+        .scissorCount = 1,
+    };
+    VkPipelineRasterizationStateCreateInfo rasterization{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+        .polygonMode = VK_POLYGON_MODE_FILL,
+        .cullMode = desc.cullMode,
+        .frontFace = desc.frontFace,
+        .lineWidth = 1.0f,
+    };
+    VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT,
+    };
+    VkPipelineDepthStencilStateCreateInfo depthStencil{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+        .depthTestEnable = desc.depthTest,
+        .depthWriteEnable = desc.depthWrite,
+        .depthCompareOp = desc.depthCompare,
+    };
+    std::vector<VkPipelineColorBlendAttachmentState> blendAttachments(
+        desc.colorAttachmentCount,
+        {.blendEnable = VK_FALSE,
+         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT});
+    VkPipelineColorBlendStateCreateInfo colorBlend{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+        .attachmentCount = desc.colorAttachmentCount,
+        .pAttachments = blendAttachments.data(),
+    };
+    VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+        .dynamicStateCount = 2,
+        .pDynamicStates = dynamicStates,
+    };
+    VkGraphicsPipelineCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+        .pNext = desc.pNext,
+        .stageCount = static_cast<uint32_t>(desc.stages.size()),
+        .pStages = desc.stages.data(),
+        .pVertexInputState = desc.vertexInput ? desc.vertexInput : &noVertexInput,
+        .pInputAssemblyState = &inputAssembly,
+        .pViewportState = &viewport,
+        .pRasterizationState = &rasterization,
+        .pMultisampleState = &multisample,
+        .pDepthStencilState = &depthStencil,
+        .pColorBlendState = &colorBlend,
+        .pDynamicState = &dynamic,
+        .layout = desc.layout,
+        .renderPass = desc.renderPass,
+        .subpass = desc.subpass,
+    };
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    return pipeline;
+}
+
+}  // namespace common

@@ -1,0 +1,50 @@
+// The pipeline cache, persisted to a file between runs, and a graphics pipeline builder whose
+// viewport and scissor are dynamic state. The book's PipelineCache and Pipeline (chapter 6).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include "common/device.hpp"
+
+namespace common {
+
+struct PipelineCache {
+    VkPipelineCache handle = VK_NULL_HANDLE;
+    std::filesystem::path file;  // where it is loaded from and saved to; empty: not persisted
+};
+
+// Loads <cacheDir>/<name>-<vendor>-<device>.bin when it exists and was written by this very
+// device and driver; a damaged or foreign file is ignored with a warning on stderr.
+PipelineCache loadPipelineCache(const Device& device, std::string_view name);
+// Writes the cache atomically (temporary file, then rename); a failure is only a warning.
+void savePipelineCache(const Device& device, const PipelineCache& cache);
+void destroyPipelineCache(const Device& device, PipelineCache& cache);
+
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module);
+
+// Everything that differs between the pipelines of these chapters; the rest is fixed: one
+// sample, fill mode, no blending, and viewport + scissor set at record time (so a resize does
+// not need a new pipeline).
+struct GraphicsPipelineDesc {
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    const VkPipelineVertexInputStateCreateInfo* vertexInput = nullptr;  // nullptr: no vertex input
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    bool depthTest = false;
+    bool depthWrite = false;
+    VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    uint32_t colorAttachmentCount = 1;  // one blend state (blending off) per colour attachment
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkRenderPass renderPass = VK_NULL_HANDLE;  // VK_NULL_HANDLE with dynamic rendering
+    uint32_t subpass = 0;
+    const void* pNext = nullptr;  // e.g. VkPipelineRenderingCreateInfo for dynamic rendering
+};
+
+VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache, const GraphicsPipelineDesc& desc);
+
+}  // namespace common

@@ -1,0 +1,111 @@
+// Screenshot read-back and PNG writing (stb_image_write).
+#include "common/screenshot.hpp"
+
+#include <stb_image_write.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/buffer.hpp"
+#include "common/check.hpp"
+#include "common/commands.hpp"
+
+namespace common {
+namespace {
+
+// Byte offsets of R, G and B within one 4-byte texel, or false for formats we do not read.
+bool channelOffsets(VkFormat format, int offsets[3]) {
+    switch (format) {
+        case VK_FORMAT_B8G8R8A8_UNORM:
+        case VK_FORMAT_B8G8R8A8_SRGB:
+            offsets[0] = 2, offsets[1] = 1, offsets[2] = 0;
+            return true;
+        case VK_FORMAT_R8G8B8A8_UNORM:
+        case VK_FORMAT_R8G8B8A8_SRGB:
+        case VK_FORMAT_A8B8G8R8_UNORM_PACK32:  // packed ABGR in a little-endian uint32 is R,G,B,A in memory
+        case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+            offsets[0] = 0, offsets[1] = 1, offsets[2] = 2;
+            return true;
+        default:
+            return false;
+    }
+}
+
+VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags srcAccess,
+                                   VkAccessFlags dstAccess) {
+    return {
+        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+        .srcAccessMask = srcAccess,
+        .dstAccessMask = dstAccess,
+        .oldLayout = from,
+        .newLayout = to,
+        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .image = image,
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+    };
+}
+
+}  // namespace
+
+void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent, VkImageLayout layout,
+                    const std::filesystem::path& path) {
+    int offsets[3];
+    if (!channelOffsets(format, offsets))
+        throw Failure("cannot take a screenshot of an image in format " + std::to_string(format));
+
+    VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * 4;
+    Buffer readback = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+
+    VkCommandBuffer cmd = beginOneTimeCommands(device);
+    // Whatever wrote the image earlier on this queue (a render pass, a blit) is done and visible
+    // to the copy; the image goes back to `layout` afterwards, so the caller's next step (present)
+    // finds it as it left it.
+    VkImageMemoryBarrier toTransfer = layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                                    VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &toTransfer);
+    VkBufferImageCopy region{
+        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+        .imageExtent = {extent.width, extent.height, 1},
+    };
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle, 1, &region);
+    VkImageMemoryBarrier back = layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                                              VK_ACCESS_TRANSFER_READ_BIT, 0);
+    VkBufferMemoryBarrier toHost{
+        .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER,
+        .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+        .dstAccessMask = VK_ACCESS_HOST_READ_BIT,
+        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .buffer = readback.handle,
+        .size = VK_WHOLE_SIZE,
+    };
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
+                         &toHost, 1, &back);
+    submitOneTimeCommands(device, cmd);
+
+    const auto* texels = static_cast<const uint8_t*>(readback.mapped);
+    std::vector<uint8_t> rgb(size_t{extent.width} * extent.height * 3);
+    for (size_t i = 0, n = size_t{extent.width} * extent.height; i < n; ++i)
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = texels[i * 4 + offsets[c]];
+    destroyBuffer(device, readback);
+
+    std::filesystem::path temporary = path;
+    temporary += ".tmp" + std::to_string(getpid());
+    if (!stbi_write_png(temporary.c_str(), static_cast<int>(extent.width), static_cast<int>(extent.height), 3,
+                        rgb.data(), static_cast<int>(extent.width * 3)))
+        throw Failure("cannot write screenshot '" + temporary.string() + "'");
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        throw Failure("cannot write screenshot '" + path.string() + "'");
+    }
+}
+
+}  // namespace common

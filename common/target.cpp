@@ -1,0 +1,291 @@
+// The window + swapchain target and the headless target.
+#include "common/target.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "common/check.hpp"
+#include "common/commands.hpp"
+
+namespace common {
+namespace {
+
+void onFramebufferSize(GLFWwindow* window, int, int) {
+    static_cast<Target*>(glfwGetWindowUserPointer(window))->resized = true;
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
+std::string glfwErrorText() {
+    const char* description = nullptr;
+    glfwGetError(&description);
+    return description ? description : "unknown GLFW error";
+}
+
+VkSurfaceFormatKHR chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface) {
+    uint32_t count = 0;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, surface, &count, nullptr));
+    std::vector<VkSurfaceFormatKHR> formats(count);
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, surface, &count, formats.data()));
+    if (formats.empty()) throw Failure("the window surface offers no image format");
+    // An _SRGB format lets the hardware encode our linear shader output for the display.
+    for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB})
+        for (const VkSurfaceFormatKHR& f : formats)
+            if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
+    return formats.front();
+}
+
+VkFormat chooseOffscreenFormat(const Device& device) {
+    // The format a window would most likely get, so headless images match windowed ones.
+    for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
+        VkFormatProperties properties;
+        vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
+        VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+        if ((properties.optimalTilingFeatures & needed) == needed) return format;
+    }
+    throw Failure("the device cannot render to an 8-bit sRGB colour image");
+}
+
+void createSwapchain(Target& target, const Device& device) {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(device.physical, target.surface, &caps));
+    VkSurfaceFormatKHR surfaceFormat = chooseSurfaceFormat(device, target.surface);
+
+    VkExtent2D extent = caps.currentExtent;
+    if (extent.width == UINT32_MAX) {  // the surface takes the swapchain's size: use the framebuffer's
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(target.window, &width, &height);
+        extent = {std::clamp(static_cast<uint32_t>(width), caps.minImageExtent.width, caps.maxImageExtent.width),
+                  std::clamp(static_cast<uint32_t>(height), caps.minImageExtent.height, caps.maxImageExtent.height)};
+    }
+    uint32_t imageCount = caps.minImageCount + 1;
+    if (caps.maxImageCount != 0) imageCount = std::min(imageCount, caps.maxImageCount);
+    VkCompositeAlphaFlagBitsKHR compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    if (!(caps.supportedCompositeAlpha & compositeAlpha))
+        compositeAlpha = static_cast<VkCompositeAlphaFlagBitsKHR>(
+            caps.supportedCompositeAlpha & ~(caps.supportedCompositeAlpha - 1));  // lowest supported bit
+
+    VkSwapchainKHR old = target.swapchain;
+    VkSwapchainCreateInfoKHR info{
+        .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
+        .surface = target.surface,
+        .minImageCount = imageCount,
+        .imageFormat = surfaceFormat.format,
+        .imageColorSpace = surfaceFormat.colorSpace,
+        .imageExtent = extent,
+        .imageArrayLayers = 1,
+        // TRANSFER_SRC lets --screenshot copy a swapchain image out.
+        .imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
+        .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .preTransform = caps.currentTransform,
+        .compositeAlpha = compositeAlpha,
+        .presentMode = VK_PRESENT_MODE_FIFO_KHR,  // always available; waits for vertical blank
+        .clipped = VK_TRUE,
+        .oldSwapchain = old,
+    };
+    VK_CHECK(vkCreateSwapchainKHR(device.handle, &info, nullptr, &target.swapchain));
+    if (old != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, old, nullptr);
+
+    uint32_t count = 0;
+    VK_CHECK(vkGetSwapchainImagesKHR(device.handle, target.swapchain, &count, nullptr));
+    target.images.resize(count);
+    VK_CHECK(vkGetSwapchainImagesKHR(device.handle, target.swapchain, &count, target.images.data()));
+    target.format = surfaceFormat.format;
+    target.extent = extent;
+    target.presentLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    for (VkImage image : target.images)
+        target.views.push_back(createImageView(device, image, target.format, VK_IMAGE_ASPECT_COLOR_BIT));
+}
+
+void createOffscreen(Target& target, const Device& device) {
+    uint32_t limit = device.properties.limits.maxImageDimension2D;
+    if (target.requestedExtent.width > limit || target.requestedExtent.height > limit)
+        throw InputError("image size " + std::to_string(target.requestedExtent.width) + "x" +
+                         std::to_string(target.requestedExtent.height) + " exceeds this device's limit of " +
+                         std::to_string(limit));
+    constexpr uint32_t kOffscreenImages = 2;  // like a double-buffered swapchain
+    target.format = chooseOffscreenFormat(device);
+    target.extent = target.requestedExtent;
+    target.presentLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    for (uint32_t i = 0; i < kOffscreenImages; ++i) {
+        target.offscreen.push_back(createImage(device, target.extent, target.format,
+                                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                               VK_IMAGE_ASPECT_COLOR_BIT));
+        target.images.push_back(target.offscreen.back().handle);
+        target.views.push_back(target.offscreen.back().view);
+    }
+    target.nextOffscreen = 0;
+}
+
+// Destroys what depends on the images; a swapchain itself survives to become oldSwapchain.
+void releaseImages(Target& target, const Device& device) {
+    for (VkSemaphore semaphore : target.renderFinished) vkDestroySemaphore(device.handle, semaphore, nullptr);
+    target.renderFinished.clear();
+    if (target.window) {
+        for (VkImageView view : target.views) vkDestroyImageView(device.handle, view, nullptr);
+    } else {
+        for (Image& image : target.offscreen) destroyImage(device, image);
+        target.offscreen.clear();
+    }
+    target.views.clear();
+    target.images.clear();
+}
+
+}  // namespace
+
+Target openTarget(const Options& options, const char* title) {
+    Target target;
+    target.requestedExtent = {options.width, options.height};
+    target.frameLimit = frameCount(options);
+    target.scriptedResize = options.resizeTo;
+    if (options.headless) return target;
+
+    if (!glfwInit()) throw Failure("cannot open a window (" + glfwErrorText() + "); run with --headless");
+    if (!glfwVulkanSupported()) {
+        glfwTerminate();
+        throw Failure("GLFW found no Vulkan loader for window surfaces; run with --headless");
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan, not OpenGL
+    target.window = glfwCreateWindow(static_cast<int>(options.width), static_cast<int>(options.height), title,
+                                     nullptr, nullptr);
+    if (!target.window) {
+        std::string why = glfwErrorText();
+        glfwTerminate();
+        throw Failure("cannot create a window (" + why + "); run with --headless");
+    }
+    return target;
+}
+
+std::vector<const char*> targetInstanceExtensions(const Target& target) {
+    if (!target.window) return {};
+    uint32_t count = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    return std::vector<const char*>(names, names + count);
+}
+
+void createTargetSurface(Target& target, const Instance& instance) {
+    if (!target.window) return;
+    VK_CHECK(glfwCreateWindowSurface(instance.handle, target.window, nullptr, &target.surface));
+}
+
+void createTargetImages(Target& target, const Device& device) {
+    if (target.window) {
+        // The callbacks find the target through the window; it must not move from here on.
+        glfwSetWindowUserPointer(target.window, &target);
+        glfwSetFramebufferSizeCallback(target.window, onFramebufferSize);
+        glfwSetKeyCallback(target.window, onKey);
+        createSwapchain(target, device);
+    } else {
+        createOffscreen(target, device);
+    }
+    for (size_t i = 0; i < target.images.size(); ++i) target.renderFinished.push_back(createSemaphore(device));
+    target.resized = false;
+}
+
+bool pollTarget(Target& target, uint32_t frame) {
+    if (target.scriptedResize && frame == target.frameLimit / 2) {
+        VkExtent2D size = *target.scriptedResize;
+        target.scriptedResize.reset();
+        if (target.window) {
+            // Goes through the window system; the framebuffer callback sets `resized` when the
+            // new size arrives, exactly as when a user drags the window border.
+            glfwSetWindowSize(target.window, static_cast<int>(size.width), static_cast<int>(size.height));
+        } else {
+            target.requestedExtent = size;
+            target.resized = true;
+        }
+    }
+    bool closing = false;
+    if (target.window) {
+        glfwPollEvents();
+        closing = glfwWindowShouldClose(target.window);
+    }
+    return closing || (target.frameLimit != 0 && frame + 1 >= target.frameLimit);
+}
+
+bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable, uint32_t* imageIndex) {
+    if (target.window) {
+        VkResult result = vkAcquireNextImageKHR(device.handle, target.swapchain, UINT64_MAX, imageAvailable,
+                                                VK_NULL_HANDLE, imageIndex);
+        if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
+        if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);  // suboptimal still signals: draw, then recreate
+        return true;
+    }
+    // Headless: images are handed out in turn, and an empty submission signals the semaphore the
+    // way the presentation engine would, so the frame waits on it exactly as it does on a window.
+    *imageIndex = target.nextOffscreen;
+    target.nextOffscreen = (target.nextOffscreen + 1) % static_cast<uint32_t>(target.images.size());
+    VkSubmitInfo signal{
+        .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
+        .signalSemaphoreCount = 1,
+        .pSignalSemaphores = &imageAvailable,
+    };
+    VK_CHECK(vkQueueSubmit(device.queue, 1, &signal, VK_NULL_HANDLE));
+    return true;
+}
+
+bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex) {
+    if (target.window) {
+        VkPresentInfoKHR info{
+            .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+            .waitSemaphoreCount = 1,
+            .pWaitSemaphores = &target.renderFinished[imageIndex],
+            .swapchainCount = 1,
+            .pSwapchains = &target.swapchain,
+            .pImageIndices = &imageIndex,
+        };
+        VkResult result = vkQueuePresentKHR(device.queue, &info);
+        if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
+        VK_CHECK(result);
+        return !target.resized;
+    }
+    // Headless: nothing to show, but the semaphore is consumed as a present would consume it.
+    VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    VkSubmitInfo consume{
+        .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
+        .waitSemaphoreCount = 1,
+        .pWaitSemaphores = &target.renderFinished[imageIndex],
+        .pWaitDstStageMask = &waitStage,
+    };
+    VK_CHECK(vkQueueSubmit(device.queue, 1, &consume, VK_NULL_HANDLE));
+    return !target.resized;
+}
+
+bool recreateTargetImages(Target& target, const Device& device) {
+    if (target.window) {
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(target.window, &width, &height);
+        while ((width == 0 || height == 0) && !glfwWindowShouldClose(target.window)) {
+            glfwWaitEvents();  // minimised: sleep until the window comes back
+            glfwGetFramebufferSize(target.window, &width, &height);
+        }
+        if (glfwWindowShouldClose(target.window)) return false;
+    }
+    VK_CHECK(vkDeviceWaitIdle(device.handle));
+    releaseImages(target, device);
+    createTargetImages(target, device);
+    return true;
+}
+
+void destroyTargetImages(Target& target, const Device& device) {
+    releaseImages(target, device);
+    if (target.swapchain != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, target.swapchain, nullptr);
+    target.swapchain = VK_NULL_HANDLE;
+}
+
+void destroyTargetSurface(Target& target, const Instance& instance) {
+    if (target.surface != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance.handle, target.surface, nullptr);
+    target.surface = VK_NULL_HANDLE;
+}
+
+void closeTarget(Target& target) {
+    if (target.window) {
+        glfwDestroyWindow(target.window);
+        glfwTerminate();
+    }
+    target.window = nullptr;
+}
+
+}  // namespace common

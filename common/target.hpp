@@ -1,0 +1,76 @@
+// Where a chapter's frames go: a GLFW window with a swapchain, or -- with --headless -- a set of
+// offscreen colour images of the same format that behave like one. Both are driven by the same
+// calls, so a chapter's frame loop has no headless special case:
+//
+//   openTarget -> createInstance(targetInstanceExtensions) -> createTargetSurface -> createDevice
+//   -> createTargetImages; per frame: pollTarget, acquireTargetImage, (record, submit),
+//   presentTargetImage, recreateTargetImages when either says so; teardown in reverse.
+//
+// The book's Window, Surface and SwapChain (chapters 1-5).
+#pragma once
+
+#include <GLFW/glfw3.h>
+#include <vulkan/vulkan.h>
+
+#include <optional>
+#include <vector>
+
+#include "common/cli.hpp"
+#include "common/device.hpp"
+#include "common/image.hpp"
+#include "common/instance.hpp"
+
+namespace common {
+
+struct Target {
+    GLFWwindow* window = nullptr;  // nullptr: headless
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+    std::vector<Image> offscreen;  // headless: the images a swapchain would own
+
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{};
+    // The layout an image must be in when handed to presentTargetImage: PRESENT_SRC_KHR for a
+    // swapchain, TRANSFER_SRC_OPTIMAL for headless images (they are only ever copied out).
+    VkImageLayout presentLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    std::vector<VkImage> images;
+    std::vector<VkImageView> views;
+    // Signalled when drawing into image i is done and waited on by its presentation. One per
+    // image, not per frame in flight: a frame's semaphore could otherwise be signalled again
+    // while the presentation engine still waits on it.
+    std::vector<VkSemaphore> renderFinished;
+
+    bool resized = false;         // the window or the requested size changed since the images were made
+    VkExtent2D requestedExtent{};  // headless: size of the images; window: size asked for
+    uint32_t frameLimit = 0;       // 0: until the window is closed
+    std::optional<VkExtent2D> scriptedResize;  // --resize, applied at frame frameLimit / 2
+    uint32_t nextOffscreen = 0;
+};
+
+// Opens the window (or nothing, headless) described by the command line.
+Target openTarget(const Options& options, const char* title);
+// Instance extensions the target needs (the window system's surface extensions).
+std::vector<const char*> targetInstanceExtensions(const Target& target);
+void createTargetSurface(Target& target, const Instance& instance);
+// The swapchain, or the headless images, at the current size; throws InputError when a headless
+// size exceeds the device's limit.
+void createTargetImages(Target& target, const Device& device);
+
+// Processes window events and scripted resizes. Returns true when frame `frame` is the last one:
+// --frames reached, or the window asked to close.
+bool pollTarget(Target& target, uint32_t frame);
+// Gets the next image to draw into; `imageAvailable` is signalled when it may be written.
+// Returns false when the target is out of date: call recreateTargetImages and try again.
+bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable, uint32_t* imageIndex);
+// Presents image `imageIndex` once its renderFinished semaphore is signalled. Returns false when
+// the target must be recreated (resized, out of date or suboptimal).
+bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex);
+// Waits for the device, then rebuilds images at the new size. A minimised window (zero-size
+// framebuffer) is waited out. Returns false if the window was closed while waiting.
+bool recreateTargetImages(Target& target, const Device& device);
+
+void destroyTargetImages(Target& target, const Device& device);
+void destroyTargetSurface(Target& target, const Instance& instance);
+void closeTarget(Target& target);
+
+}  // namespace common
