@@ -48,10 +48,12 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
     std::vector<Mesh> meshes;
     for (const MeshData& data : meshData) {
         Mesh mesh;
-        mesh.vertices = common::uploadStaged(device, batch, data.positions.data(),
-                                             data.positions.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        mesh.indices = common::uploadStaged(device, batch, data.indices.data(),
-                                            data.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        mesh.vertices =
+            common::uploadStaged(device, batch, data.positions.data(), data.positions.size() * sizeof(float),
+                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        mesh.indices =
+            common::uploadStaged(device, batch, data.indices.data(), data.indices.size() * sizeof(uint32_t),
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
         mesh.indexCount = static_cast<uint32_t>(data.indices.size());
         meshes.push_back(mesh);
     }
@@ -195,8 +197,8 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
 
 //> record
 // Re-recorded every frame, as the book does from this chapter on.
-void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebuffer framebuffer, VkExtent2D extent,
-                         const Pipeline& pipeline, const std::vector<Mesh>& meshes) {
+void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebuffer framebuffer,
+                         VkExtent2D extent, const Pipeline& pipeline, const std::vector<Mesh>& meshes) {
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,

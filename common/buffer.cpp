@@ -49,7 +49,9 @@ void destroyBuffer(const Device& device, Buffer& buffer) {
     buffer = {};
 }
 
-StagingBatch beginStaging(const Device& device) { return StagingBatch{beginOneTimeCommands(device), {}}; }
+StagingBatch beginStaging(const Device& device) {
+    return StagingBatch{beginOneTimeCommands(device), {}};
+}
 
 Buffer uploadStaged(const Device& device, StagingBatch& batch, const void* data, VkDeviceSize size,
                     VkBufferUsageFlags usage) {
@@ -76,8 +78,8 @@ void endStaging(const Device& device, StagingBatch& batch) {
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
         .dstAccessMask = VK_ACCESS_MEMORY_READ_BIT,
     };
-    vkCmdPipelineBarrier(batch.commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                         0, 1, &barrier, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(batch.commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
     submitOneTimeCommands(device, batch.commandBuffer);
     for (Buffer& staging : batch.stagingBuffers) destroyBuffer(device, staging);
     batch = {};

@@ -49,8 +49,7 @@ const char* resultName(VkResult result) {
 
 void throwVkError(VkResult result, const char* expression, const char* file, int line) {
     std::string message = std::string(expression) + " failed with " + resultName(result) + " (" +
-                          std::filesystem::path(file).filename().string() + ":" + std::to_string(line) +
-                          ")";
+                          std::filesystem::path(file).filename().string() + ":" + std::to_string(line) + ")";
     throw Failure(message);
 }
 

@@ -28,9 +28,9 @@ const char* resultName(VkResult result);
 // Stays on in Release builds: a failed call throws common::Failure naming the call, the file,
 // the line and the result. Swapchain results (SUBOPTIMAL, OUT_OF_DATE) are handled where they
 // occur (common/target.cpp), never through this macro.
-#define VK_CHECK(expression)                                                        \
-    do {                                                                            \
-        VkResult vkCheckResult_ = (expression);                                     \
-        if (vkCheckResult_ != VK_SUCCESS)                                           \
+#define VK_CHECK(expression)                                                         \
+    do {                                                                             \
+        VkResult vkCheckResult_ = (expression);                                      \
+        if (vkCheckResult_ != VK_SUCCESS)                                            \
             ::common::throwVkError(vkCheckResult_, #expression, __FILE__, __LINE__); \
     } while (0)

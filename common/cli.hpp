@@ -19,7 +19,7 @@ struct Options {
     bool headless = false;
     uint32_t width = 1280;
     uint32_t height = 720;
-    uint32_t frames = 0;  // 0: the default, 1 frame headless, until closed in a window
+    uint32_t frames = 0;               // 0: the default, 1 frame headless, until closed in a window
     std::filesystem::path screenshot;  // empty: no screenshot
     std::string device;                // substring of the device name; empty: best device
     bool validation = false;

@@ -20,11 +20,16 @@ struct Candidate {
 
 int typeRank(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-        default: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 1;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 3;
+        default:
+            return 4;
     }
 }
 
@@ -65,8 +70,9 @@ Candidate inspect(VkPhysicalDevice physical, VkSurfaceKHR surface) {
             return candidate;
         }
     }
-    candidate.unsuitable = surface != VK_NULL_HANDLE ? "no queue family can both draw and present to the window"
-                                                     : "it has no graphics queue";
+    candidate.unsuitable = surface != VK_NULL_HANDLE
+                               ? "no queue family can both draw and present to the window"
+                               : "it has no graphics queue";
     return candidate;
 }
 
@@ -88,14 +94,16 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
     for (VkPhysicalDevice physical : physicals) candidates.push_back(inspect(physical, surface));
 
     std::string all;
-    for (const Candidate& c : candidates) all += (all.empty() ? "'" : ", '") + std::string(c.properties.deviceName) + "'";
+    for (const Candidate& c : candidates)
+        all += (all.empty() ? "'" : ", '") + std::string(c.properties.deviceName) + "'";
 
     std::vector<Candidate> matching;
     for (const Candidate& c : candidates)
         if (lowercase(c.properties.deviceName).find(lowercase(nameFilter)) != std::string::npos)
             matching.push_back(c);
     if (matching.empty())
-        throw InputError("no Vulkan device matches --device '" + std::string(nameFilter) + "' (devices: " + all + ")");
+        throw InputError("no Vulkan device matches --device '" + std::string(nameFilter) +
+                         "' (devices: " + all + ")");
 
     std::stable_sort(matching.begin(), matching.end(), [](const Candidate& a, const Candidate& b) {
         if (a.unsuitable.empty() != b.unsuitable.empty()) return a.unsuitable.empty();
@@ -103,7 +111,8 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
     });
     const Candidate& best = matching.front();
     if (!best.unsuitable.empty())
-        throw Failure("cannot use Vulkan device '" + std::string(best.properties.deviceName) + "': " + best.unsuitable);
+        throw Failure("cannot use Vulkan device '" + std::string(best.properties.deviceName) +
+                      "': " + best.unsuitable);
     return best;
 }
 

@@ -12,8 +12,8 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
         .image = image,
         .viewType = VK_IMAGE_VIEW_TYPE_2D,
         .format = format,
-        .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0,
-                             .layerCount = 1},
+        .subresourceRange =
+            {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1},
     };
     VkImageView view = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device.handle, &info, nullptr, &view));
@@ -44,7 +44,8 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
     VkMemoryAllocateInfo allocInfo{
         .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
         .allocationSize = requirements.size,
-        .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+        .memoryTypeIndex =
+            findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
     };
     VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
     VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));

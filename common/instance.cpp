@@ -57,7 +57,9 @@ bool hasInstanceExtension(const char* name) {
 
 }  // namespace
 
-uint32_t validationMessageCount() { return gValidationMessages.load(); }
+uint32_t validationMessageCount() {
+    return gValidationMessages.load();
+}
 
 Instance createInstance(const char* applicationName, bool validation, std::vector<const char*> extensions) {
     uint32_t apiVersion = 0;
@@ -85,7 +87,8 @@ Instance createInstance(const char* applicationName, bool validation, std::vecto
     std::vector<const char*> layers;
     // Synchronization validation is off by default in the layer; it is what catches a missing
     // barrier between the passes of a deferred renderer, so every --validation run enables it.
-    VkValidationFeatureEnableEXT enabledFeatures[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeatureEnableEXT enabledFeatures[] = {
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     VkValidationFeaturesEXT validationFeatures{
         .sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
         .enabledValidationFeatureCount = 1,

@@ -21,7 +21,8 @@ std::string cacheMismatch(const Device& device, const std::vector<char>& data) {
     VkPipelineCacheHeaderVersionOne header;
     if (data.size() < sizeof(header)) return "it is shorter than a cache header";
     std::memcpy(&header, data.data(), sizeof(header));
-    if (header.headerSize < sizeof(header) || header.headerSize > data.size()) return "its header size is wrong";
+    if (header.headerSize < sizeof(header) || header.headerSize > data.size())
+        return "its header size is wrong";
     if (header.headerVersion != VK_PIPELINE_CACHE_HEADER_VERSION_ONE) return "its header version is unknown";
     if (header.vendorID != device.properties.vendorID || header.deviceID != device.properties.deviceID ||
         std::memcmp(header.pipelineCacheUUID, device.properties.pipelineCacheUUID, VK_UUID_SIZE) != 0)
@@ -29,7 +30,9 @@ std::string cacheMismatch(const Device& device, const std::vector<char>& data) {
     return {};
 }
 
-void warn(const std::string& message) { std::fprintf(stderr, "warning: %s\n", message.c_str()); }
+void warn(const std::string& message) {
+    std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
 
 }  // namespace
 
@@ -45,12 +48,14 @@ PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
     std::vector<char> data;
     std::error_code ec;
     if (!cache.file.empty() && std::filesystem::exists(cache.file, ec)) {
+        std::string why;
         try {
             data = readFile(cache.file);
+            why = cacheMismatch(device, data);
         } catch (const Failure& error) {
-            warn(std::string("ignoring pipeline cache: ") + error.what());
+            why = error.what();
         }
-        if (std::string why = data.empty() ? "" : cacheMismatch(device, data); !why.empty()) {
+        if (!why.empty()) {
             warn("ignoring pipeline cache '" + cache.file.string() + "': " + why);
             data.clear();
         }
@@ -114,7 +119,8 @@ VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShade
     };
 }
 
-VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache, const GraphicsPipelineDesc& desc) {
+VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
+                                  const GraphicsPipelineDesc& desc) {
     VkPipelineVertexInputStateCreateInfo noVertexInput{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{
@@ -145,10 +151,9 @@ VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache, c
         .depthCompareOp = desc.depthCompare,
     };
     std::vector<VkPipelineColorBlendAttachmentState> blendAttachments(
-        desc.colorAttachmentCount,
-        {.blendEnable = VK_FALSE,
-         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                           VK_COLOR_COMPONENT_A_BIT});
+        desc.colorAttachmentCount, {.blendEnable = VK_FALSE,
+                                    .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                                      VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT});
     VkPipelineColorBlendStateCreateInfo colorBlend{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
         .attachmentCount = desc.colorAttachmentCount,

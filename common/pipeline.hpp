@@ -45,6 +45,7 @@ struct GraphicsPipelineDesc {
     const void* pNext = nullptr;  // e.g. VkPipelineRenderingCreateInfo for dynamic rendering
 };
 
-VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache, const GraphicsPipelineDesc& desc);
+VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
+                                  const GraphicsPipelineDesc& desc);
 
 }  // namespace common

@@ -33,8 +33,8 @@ bool channelOffsets(VkFormat format, int offsets[3]) {
     }
 }
 
-VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags srcAccess,
-                                   VkAccessFlags dstAccess) {
+VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                   VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
     return {
         .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
         .srcAccessMask = srcAccess,
@@ -50,15 +50,16 @@ VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLay
 
 }  // namespace
 
-void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent, VkImageLayout layout,
-                    const std::filesystem::path& path) {
+void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
+                    VkImageLayout layout, const std::filesystem::path& path) {
     int offsets[3];
     if (!channelOffsets(format, offsets))
         throw Failure("cannot take a screenshot of an image in format " + std::to_string(format));
 
     VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * 4;
-    Buffer readback = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    Buffer readback =
+        createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 
     VkCommandBuffer cmd = beginOneTimeCommands(device);
     // Whatever wrote the image earlier on this queue (a render pass, a blit) is done and visible
@@ -66,15 +67,15 @@ void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExte
     // finds it as it left it.
     VkImageMemoryBarrier toTransfer = layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                                     VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                         nullptr, 1, &toTransfer);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &toTransfer);
     VkBufferImageCopy region{
         .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
         .imageExtent = {extent.width, extent.height, 1},
     };
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle, 1, &region);
-    VkImageMemoryBarrier back = layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                                              VK_ACCESS_TRANSFER_READ_BIT, 0);
+    VkImageMemoryBarrier back =
+        layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_ACCESS_TRANSFER_READ_BIT, 0);
     VkBufferMemoryBarrier toHost{
         .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER,
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,

@@ -13,7 +13,7 @@ namespace common {
 // they are already sRGB-encoded, which is what a PNG holds. BGRA and RGBA 8-bit formats are
 // swizzled to RGB; alpha is dropped (a presented image is opaque). The PNG goes to a
 // temporary file first and is renamed over `path`, so a failure never leaves half a file.
-void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent, VkImageLayout layout,
-                    const std::filesystem::path& path);
+void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
+                    VkImageLayout layout, const std::filesystem::path& path);
 
 }  // namespace common

@@ -42,7 +42,8 @@ VkFormat chooseOffscreenFormat(const Device& device) {
     for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
-        VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+        VkFormatFeatureFlags needed =
+            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
         if ((properties.optimalTilingFeatures & needed) == needed) return format;
     }
     throw Failure("the device cannot render to an 8-bit sRGB colour image");
@@ -57,8 +58,10 @@ void createSwapchain(Target& target, const Device& device) {
     if (extent.width == UINT32_MAX) {  // the surface takes the swapchain's size: use the framebuffer's
         int width = 0, height = 0;
         glfwGetFramebufferSize(target.window, &width, &height);
-        extent = {std::clamp(static_cast<uint32_t>(width), caps.minImageExtent.width, caps.maxImageExtent.width),
-                  std::clamp(static_cast<uint32_t>(height), caps.minImageExtent.height, caps.maxImageExtent.height)};
+        extent = {
+            std::clamp(static_cast<uint32_t>(width), caps.minImageExtent.width, caps.maxImageExtent.width),
+            std::clamp(static_cast<uint32_t>(height), caps.minImageExtent.height,
+                       caps.maxImageExtent.height)};
     }
     uint32_t imageCount = caps.minImageCount + 1;
     if (caps.maxImageCount != 0) imageCount = std::min(imageCount, caps.maxImageCount);
@@ -77,7 +80,8 @@ void createSwapchain(Target& target, const Device& device) {
         .imageExtent = extent,
         .imageArrayLayers = 1,
         // TRANSFER_SRC lets --screenshot copy a swapchain image out.
-        .imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
+        .imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                      (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
         .preTransform = caps.currentTransform,
         .compositeAlpha = compositeAlpha,
@@ -110,9 +114,10 @@ void createOffscreen(Target& target, const Device& device) {
     target.extent = target.requestedExtent;
     target.presentLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     for (uint32_t i = 0; i < kOffscreenImages; ++i) {
-        target.offscreen.push_back(createImage(device, target.extent, target.format,
-                                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                               VK_IMAGE_ASPECT_COLOR_BIT));
+        target.offscreen.push_back(
+            createImage(device, target.extent, target.format,
+                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                        VK_IMAGE_ASPECT_COLOR_BIT));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
     }
@@ -180,7 +185,8 @@ void createTargetImages(Target& target, const Device& device) {
     } else {
         createOffscreen(target, device);
     }
-    for (size_t i = 0; i < target.images.size(); ++i) target.renderFinished.push_back(createSemaphore(device));
+    for (size_t i = 0; i < target.images.size(); ++i)
+        target.renderFinished.push_back(createSemaphore(device));
     target.resized = false;
 }
 
@@ -205,7 +211,8 @@ bool pollTarget(Target& target, uint32_t frame) {
     return closing || (target.frameLimit != 0 && frame + 1 >= target.frameLimit);
 }
 
-bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable, uint32_t* imageIndex) {
+bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
+                        uint32_t* imageIndex) {
     if (target.window) {
         VkResult result = vkAcquireNextImageKHR(device.handle, target.swapchain, UINT64_MAX, imageAvailable,
                                                 VK_NULL_HANDLE, imageIndex);

@@ -40,7 +40,7 @@ struct Target {
     // while the presentation engine still waits on it.
     std::vector<VkSemaphore> renderFinished;
 
-    bool resized = false;         // the window or the requested size changed since the images were made
+    bool resized = false;          // the window or the requested size changed since the images were made
     VkExtent2D requestedExtent{};  // headless: size of the images; window: size asked for
     uint32_t frameLimit = 0;       // 0: until the window is closed
     std::optional<VkExtent2D> scriptedResize;  // --resize, applied at frame frameLimit / 2
@@ -61,7 +61,8 @@ void createTargetImages(Target& target, const Device& device);
 bool pollTarget(Target& target, uint32_t frame);
 // Gets the next image to draw into; `imageAvailable` is signalled when it may be written.
 // Returns false when the target is out of date: call recreateTargetImages and try again.
-bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable, uint32_t* imageIndex);
+bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
+                        uint32_t* imageIndex);
 // Presents image `imageIndex` once its renderFinished semaphore is signalled. Returns false when
 // the target must be recreated (resized, out of date or suboptimal).
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex);

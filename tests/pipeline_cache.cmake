@@ -1,0 +1,33 @@
+# A damaged pipeline cache file is ignored with a warning, and the next run replaces it.
+#   cmake -DCHAPTER=path/to/chapter-NN -DCACHE_HOME=dir -P pipeline_cache.cmake
+file(REMOVE_RECURSE ${CACHE_HOME})
+set(ENV{XDG_CACHE_HOME} ${CACHE_HOME})
+set(run ${CHAPTER} --headless --device llvmpipe)
+
+execute_process(COMMAND ${run} RESULT_VARIABLE rc ERROR_VARIABLE err)
+file(GLOB caches ${CACHE_HOME}/vulkan-book-cpp/*.bin)
+if(NOT rc EQUAL 0 OR NOT caches)
+    message(FATAL_ERROR "first run: exit ${rc}, cache files '${caches}', stderr: ${err}")
+endif()
+message("first run wrote ${caches}")
+
+foreach(content "garbage, not a pipeline cache" "")
+    foreach(cache IN LISTS caches)
+        file(WRITE ${cache} "${content}")
+    endforeach()
+    execute_process(COMMAND ${run} RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT err MATCHES "warning: ignoring pipeline cache")
+        message(FATAL_ERROR "damaged cache ('${content}'): exit ${rc}, expected 0 with a warning; stderr: ${err}")
+    endif()
+    message("damaged cache ('${content}'): ${err}")
+endforeach()
+
+execute_process(COMMAND ${run} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT err STREQUAL "")
+    message(FATAL_ERROR "after the damaged run the cache should be valid again: exit ${rc}, stderr: ${err}")
+endif()
+file(GLOB leftovers ${CACHE_HOME}/vulkan-book-cpp/*.tmp*)
+if(leftovers)
+    message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+endif()
+message("the rewritten cache loads without a warning")

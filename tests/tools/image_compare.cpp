@@ -1,0 +1,164 @@
+// image_compare: checks a rendered PNG -- its size, chosen pixels, and its match to a golden
+// image within a per-channel tolerance on a bounded fraction of pixels (the Filament scheme:
+// at most --max-fraction of pixels may differ by more than --max-diff in any channel).
+//
+//   image_compare IMAGE [--size W H] [--pixel-linear X Y R G B]... [--pixel X Y R G B]...
+//                       [--pixel-tolerance N] [--golden FILE --max-diff N --max-fraction F]
+//
+// --pixel-linear takes a linear colour (what a shader writes or a clear colour holds) and
+// expects its sRGB encoding in the PNG; --pixel takes 8-bit values as stored. On a golden
+// mismatch an image of the differing pixels is written to IMAGE.diff.png.
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+struct Png {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+bool load(const char* path, Png& png) {
+    int channels = 0;
+    unsigned char* data = stbi_load(path, &png.width, &png.height, &channels, 3);
+    if (!data) {
+        std::fprintf(stderr, "image_compare: cannot read '%s': %s\n", path, stbi_failure_reason());
+        return false;
+    }
+    png.rgb.assign(data, data + size_t(png.width) * png.height * 3);
+    stbi_image_free(data);
+    return true;
+}
+
+// The sRGB transfer function (IEC 61966-2-1), rounded to 8 bits.
+int encodeSrgb(double linear) {
+    double c = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return static_cast<int>(std::lround(std::fmin(std::fmax(c, 0.0), 1.0) * 255.0));
+}
+
+struct PixelCheck {
+    int x, y, rgb[3];
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: image_compare IMAGE [options] (see the source)\n");
+        return 2;
+    }
+    const char* imagePath = argv[1];
+    int wantWidth = -1, wantHeight = -1, pixelTolerance = 2, maxDiff = 5;
+    double maxFraction = 0.001;
+    const char* golden = nullptr;
+    std::vector<PixelCheck> pixels;
+    for (int i = 2; i < argc; ++i) {
+        std::string_view arg = argv[i];
+        auto need = [&](int n) {
+            if (i + n >= argc) {
+                std::fprintf(stderr, "image_compare: %s needs %d values\n", argv[i], n);
+                std::exit(2);
+            }
+        };
+        if (arg == "--size") {
+            need(2);
+            wantWidth = std::atoi(argv[++i]);
+            wantHeight = std::atoi(argv[++i]);
+        } else if (arg == "--pixel" || arg == "--pixel-linear") {
+            need(5);
+            PixelCheck p{std::atoi(argv[i + 1]), std::atoi(argv[i + 2]), {}};
+            for (int c = 0; c < 3; ++c)
+                p.rgb[c] =
+                    arg == "--pixel" ? std::atoi(argv[i + 3 + c]) : encodeSrgb(std::atof(argv[i + 3 + c]));
+            pixels.push_back(p);
+            i += 5;
+        } else if (arg == "--pixel-tolerance") {
+            need(1);
+            pixelTolerance = std::atoi(argv[++i]);
+        } else if (arg == "--golden") {
+            need(1);
+            golden = argv[++i];
+        } else if (arg == "--max-diff") {
+            need(1);
+            maxDiff = std::atoi(argv[++i]);
+        } else if (arg == "--max-fraction") {
+            need(1);
+            maxFraction = std::atof(argv[++i]);
+        } else {
+            std::fprintf(stderr, "image_compare: unknown option '%s'\n", argv[i]);
+            return 2;
+        }
+    }
+
+    Png image;
+    if (!load(imagePath, image)) return 1;
+    int failures = 0;
+    if (wantWidth >= 0 && (image.width != wantWidth || image.height != wantHeight)) {
+        std::printf("FAIL size: %dx%d, expected %dx%d\n", image.width, image.height, wantWidth, wantHeight);
+        return 1;  // nothing else can be compared meaningfully
+    }
+    for (const PixelCheck& p : pixels) {
+        if (p.x < 0 || p.y < 0 || p.x >= image.width || p.y >= image.height) {
+            std::printf("FAIL pixel (%d,%d) is outside the image\n", p.x, p.y);
+            ++failures;
+            continue;
+        }
+        const unsigned char* got = &image.rgb[(size_t(p.y) * image.width + p.x) * 3];
+        bool ok = true;
+        for (int c = 0; c < 3; ++c) ok = ok && std::abs(got[c] - p.rgb[c]) <= pixelTolerance;
+        std::printf("%s pixel (%d,%d): (%d,%d,%d), expected (%d,%d,%d) +-%d\n", ok ? "ok  " : "FAIL", p.x,
+                    p.y, got[0], got[1], got[2], p.rgb[0], p.rgb[1], p.rgb[2], pixelTolerance);
+        failures += !ok;
+    }
+
+    if (golden) {
+        Png reference;
+        if (!load(golden, reference)) return 1;
+        if (reference.width != image.width || reference.height != image.height) {
+            std::printf("FAIL golden is %dx%d, image is %dx%d\n", reference.width, reference.height,
+                        image.width, image.height);
+            return 1;
+        }
+        size_t count = size_t(image.width) * image.height, over = 0;
+        int worst = 0;
+        double sumSquares = 0;
+        std::vector<unsigned char> diff(count * 3, 0);
+        for (size_t i = 0; i < count; ++i) {
+            int pixelWorst = 0;
+            for (int c = 0; c < 3; ++c) {
+                int d = std::abs(image.rgb[i * 3 + c] - reference.rgb[i * 3 + c]);
+                pixelWorst = std::max(pixelWorst, d);
+                sumSquares += double(d) * d;
+            }
+            worst = std::max(worst, pixelWorst);
+            if (pixelWorst > maxDiff) {
+                ++over;
+                diff[i * 3] = 255;
+            } else if (pixelWorst > 0) {
+                diff[i * 3 + 1] = 255;
+            }
+        }
+        double fraction = double(over) / double(count);
+        double rmse = std::sqrt(sumSquares / double(count * 3));
+        bool ok = fraction <= maxFraction;
+        std::printf(
+            "%s golden %s: max abs diff %d/255, RMSE %.4f/255, %zu pixels (%.5f%%) over %d/255, "
+            "allowed %.5f%%\n",
+            ok ? "ok  " : "FAIL", golden, worst, rmse, over, fraction * 100.0, maxDiff, maxFraction * 100.0);
+        if (!ok) {
+            std::string diffPath = std::string(imagePath) + ".diff.png";
+            stbi_write_png(diffPath.c_str(), image.width, image.height, 3, diff.data(), image.width * 3);
+            std::printf("     differing pixels (red: over the tolerance, green: under it): %s\n",
+                        diffPath.c_str());
+            ++failures;
+        }
+    }
+    return failures == 0 ? 0 : 1;
+}
