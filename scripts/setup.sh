@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# One command from a fresh Debian/Ubuntu machine to a running chapter or a green test suite.
+#
+#   scripts/setup.sh run [chapter-NN] [options...]   install, build (Release), run a chapter
+#   scripts/setup.sh test                            install, build (Release), run every test
+#
+# Installs only the Debian packages that are missing (with sudo when not root), configures
+# build/ in Release and builds it. `run` opens a window when a display is available, otherwise
+# renders headless to build/<chapter>.png and says so.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build="$root/build"
+default_chapter=chapter-06
+
+packages=(
+    build-essential cmake pkg-config            # compiler and build
+    libvulkan-dev mesa-vulkan-drivers           # Vulkan loader + headers, lavapipe (CPU device)
+    vulkan-validationlayers glslang-tools       # --validation, shader compiler
+    libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev
+    xvfb xauth clang-format                     # tests: windowed runs, formatting check
+)
+
+install_missing() {
+    local missing=()
+    for p in "${packages[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "setup: installing ${missing[*]}"
+    local sudo=()
+    [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+    "${sudo[@]}" apt-get update -q
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+build_release() {
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    cmake --build "$build" -j "$(nproc)"
+}
+
+command=${1:-}
+[ $# -gt 0 ] && shift
+case "$command" in
+    run)
+        chapter=$default_chapter
+        if [ $# -gt 0 ] && [[ $1 == chapter-* ]]; then chapter=$1; shift; fi
+        install_missing
+        build_release
+        if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+            echo "setup: running $chapter in a window (Escape closes it)"
+            exec "$build/bin/$chapter" "$@"
+        fi
+        echo "setup: no display, running $chapter headless"
+        "$build/bin/$chapter" --headless --screenshot "$build/$chapter.png" "$@"
+        echo "setup: wrote $build/$chapter.png"
+        ;;
+    test)
+        install_missing
+        build_release
+        ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+        ;;
+    *)
+        echo "usage: scripts/setup.sh run [chapter-NN] [options...] | scripts/setup.sh test" >&2
+        exit 2
+        ;;
+esac
