@@ -69,6 +69,7 @@ Buffer uploadStaged(const Device& device, StagingBatch& batch, const void* data,
     return target;
 }
 
+//> staging
 void endStaging(const Device& device, StagingBatch& batch) {
     // Waiting on the fence only tells the host the copies are done; this barrier is what makes
     // the copied bytes visible to every later read on the device (vertex fetch, index fetch,
@@ -84,5 +85,6 @@ void endStaging(const Device& device, StagingBatch& batch) {
     for (Buffer& staging : batch.stagingBuffers) destroyBuffer(device, staging);
     batch = {};
 }
+//< staging
 
 }  // namespace common
