@@ -3,6 +3,7 @@
 #         [-DONE_LINE_STDERR=ON] [-DQUIET_STDERR=ON] [-DWORKDIR=dir] [-DUNSET_DISPLAY=ON] -P expect.cmake
 # ONE_LINE_STDERR: stderr must be exactly one line (the promise for bad input).
 # QUIET_STDERR: stderr must be empty (no validation message, no warning).
+cmake_minimum_required(VERSION 3.21)
 if(NOT DEFINED EXPECT_EXIT)
     set(EXPECT_EXIT 0)
 endif()
