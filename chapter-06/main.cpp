@@ -345,5 +345,6 @@ void run(const common::Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return common::runChapter(argc, argv, "chapter-06", "drawing a triangle (the book's chapter 6)", run);
+    return common::runChapter(argc, argv, {"chapter-06", "drawing a triangle (the book's chapter 6)", {}},
+                              run);
 }

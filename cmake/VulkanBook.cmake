@@ -13,7 +13,7 @@ endif()
 # Every chapter lands in <build>/bin with its shaders in <build>/bin/shaders/<chapter>/, so an
 # executable finds its data next to itself, whatever the working directory.
 set(CMAKE_RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
-set(VKBOOK_ROOT ${CMAKE_CURRENT_LIST_DIR}/..)
+cmake_path(GET CMAKE_CURRENT_LIST_DIR PARENT_PATH VKBOOK_ROOT)
 set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
 
 option(VKBOOK_WERROR "Treat compiler warnings as errors" ON)
@@ -23,6 +23,7 @@ find_package(Vulkan 1.3 REQUIRED COMPONENTS glslangValidator)
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(tinyobjloader REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # Debian's libstb-dev ships no CMake config
 
@@ -65,3 +66,12 @@ endfunction()
 if(NOT TARGET common)
     add_subdirectory(${VKBOOK_ROOT}/common ${CMAKE_BINARY_DIR}/common)
 endif()
+
+# vkbook_default_scene(target): the chapter renders the generated default scene, so building it
+# generates the scene first (scenes/CMakeLists.txt), also when the chapter is built on its own.
+function(vkbook_default_scene target)
+    if(NOT TARGET default-scene)
+        add_subdirectory(${VKBOOK_ROOT}/scenes ${CMAKE_BINARY_DIR}/scenes)
+    endif()
+    add_dependencies(${target} default-scene)
+endfunction()

@@ -15,7 +15,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
-    "          [--device NAME] [--validation] [--resize WxH] [--help]\n"
+    "          [--device NAME] [--validation] [--resize WxH] [--help]%s\n"
     "\n"
     "  --headless         render offscreen, no window or display needed\n"
     "  --width W          image width, 1..16384 (default 1280)\n"
@@ -27,9 +27,15 @@ constexpr const char* kUsage =
     "                     exit with code 3 if it reports any warning or error\n"
     "  --resize WxH       (testing) resize the window or offscreen target to WxH after half of\n"
     "                     --frames\n"
-    "  --help             print this text\n"
-    "\n"
-    "exit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
+    "  --help             print this text\n";
+
+constexpr const char* kSceneUsage =
+    "  --scene FILE.json  render the scene described by FILE.json (default: the generated default scene)\n"
+    "  --model FILE.obj   render one OBJ model (with its MTL and textures), framed by the camera\n"
+    "  --view NAME        show one attachment instead of the final image: %s\n";
+
+constexpr const char* kExitCodes =
+    "\nexit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
 
 uint32_t parseNumber(std::string_view flag, std::string_view text, uint32_t min, uint32_t max) {
     uint32_t value = 0;
@@ -75,7 +81,7 @@ void checkScreenshotPath(const std::filesystem::path& path) {
 
 }  // namespace
 
-Options parseCommandLine(int argc, const char* const* argv) {
+Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
     Options options;
     bool framesGiven = false;
     for (int i = 1; i < argc; ++i) {
@@ -103,6 +109,22 @@ Options parseCommandLine(int argc, const char* const* argv) {
             options.validation = true;
         } else if (arg == "--resize") {
             options.resizeTo = parseExtent(arg, value());
+        } else if ((arg == "--scene" || arg == "--model" || arg == "--view") && chapter.views.empty()) {
+            throw InputError(std::string(chapter.name) + " draws no scene and takes no " + std::string(arg));
+        } else if (arg == "--scene") {
+            options.scene = value();
+        } else if (arg == "--model") {
+            options.model = value();
+        } else if (arg == "--view") {
+            std::string_view name = value();
+            std::string names;
+            bool found = false;
+            for (uint32_t v = 0; v < chapter.views.size(); ++v) {
+                names += (v ? "|" : "") + chapter.views[v];
+                if (chapter.views[v] == name) options.view = v, found = true;
+            }
+            if (!found)
+                throw InputError("--view must be one of " + names + ", got '" + std::string(name) + "'");
         } else if (arg == "--help" || arg == "-h") {
             options.help = true;
         } else if (arg.starts_with("-")) {
@@ -111,6 +133,8 @@ Options parseCommandLine(int argc, const char* const* argv) {
             throw InputError("unexpected argument '" + std::string(arg) + "' (see --help)");
         }
     }
+    if (!options.scene.empty() && !options.model.empty())
+        throw InputError("--scene and --model exclude each other");
     if (options.resizeTo && (!framesGiven || options.frames < 2))
         throw InputError("--resize needs --frames 2 or more (it happens after half of them)");
     return options;
@@ -121,13 +145,21 @@ uint32_t frameCount(const Options& options) {
     return options.headless ? 1 : 0;
 }
 
-int runChapter(int argc, const char* const* argv, const char* name, const char* summary,
+int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                const std::function<void(const Options&)>& chapter) {
+    const char* name = info.name;
     try {
-        Options options = parseCommandLine(argc, argv);
+        Options options = parseCommandLine(argc, argv, info);
         if (options.help) {
-            std::printf("%s: %s\n\n", name, summary);
-            std::printf(kUsage, name);
+            std::printf("%s: %s\n\n", name, info.summary);
+            std::printf(kUsage, name,
+                        info.views.empty() ? "" : " [--scene FILE.json | --model FILE.obj] [--view NAME]");
+            if (!info.views.empty()) {
+                std::string names;
+                for (const std::string& view : info.views) names += (names.empty() ? "" : "|") + view;
+                std::printf(kSceneUsage, names.c_str());
+            }
+            std::printf("%s", kExitCodes);
             return 0;
         }
         chapter(options);

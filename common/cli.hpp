@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace common {
 
@@ -25,17 +26,30 @@ struct Options {
     bool validation = false;
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
     bool help = false;
+    // Chapters that render scenes (chapter-10 on):
+    std::filesystem::path scene;  // --scene FILE.json
+    std::filesystem::path model;  // --model FILE.obj
+    uint32_t view = 0;            // --view: index into ChapterInfo::views (0 = the final image)
+};
+
+// What a chapter is, for --help and for the options only some chapters take.
+struct ChapterInfo {
+    const char* name;     // "chapter-06"
+    const char* summary;  // one line for --help
+    // The attachments --view can show, the final image first; empty for chapters without a
+    // scene, which then refuse --scene, --model and --view.
+    std::vector<std::string> views;
 };
 
 // Parses argv; throws InputError with a one-line message on any bad argument.
-Options parseCommandLine(int argc, const char* const* argv);
+Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter);
 
 // How many frames this run renders: --frames, or the default for the mode (0 = until closed).
 uint32_t frameCount(const Options& options);
 
 // Runs a chapter: parses the command line, prints --help, calls `chapter`, and maps what
 // happened to the exit codes above. Every chapter's main() is this one call.
-int runChapter(int argc, const char* const* argv, const char* name, const char* summary,
+int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                const std::function<void(const Options&)>& chapter);
 
 }  // namespace common

@@ -6,14 +6,18 @@
 
 namespace common {
 
-VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect) {
+VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect,
+                            uint32_t mipLevels) {
     VkImageViewCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
         .image = image,
         .viewType = VK_IMAGE_VIEW_TYPE_2D,
         .format = format,
-        .subresourceRange =
-            {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1},
+        .subresourceRange = {.aspectMask = aspect,
+                             .baseMipLevel = 0,
+                             .levelCount = mipLevels,
+                             .baseArrayLayer = 0,
+                             .layerCount = 1},
     };
     VkImageView view = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device.handle, &info, nullptr, &view));
@@ -21,8 +25,9 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 }
 
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect) {
+                  VkImageAspectFlags aspect, uint32_t mipLevels) {
     Image image;
+    image.mipLevels = mipLevels;
     image.format = format;
     image.extent = extent;
     VkImageCreateInfo info{
@@ -30,7 +35,7 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
         .imageType = VK_IMAGE_TYPE_2D,
         .format = format,
         .extent = {extent.width, extent.height, 1},
-        .mipLevels = 1,
+        .mipLevels = mipLevels,
         .arrayLayers = 1,
         .samples = VK_SAMPLE_COUNT_1_BIT,
         .tiling = VK_IMAGE_TILING_OPTIMAL,
@@ -49,7 +54,7 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
     };
     VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
     VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
-    image.view = createImageView(device, image.handle, format, aspect);
+    image.view = createImageView(device, image.handle, format, aspect, mipLevels);
     return image;
 }
 

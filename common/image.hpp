@@ -14,13 +14,15 @@ struct Image {
     VkImageView view = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{};
+    uint32_t mipLevels = 1;
 };
 
-VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect);
+VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect,
+                            uint32_t mipLevels = 1);
 
-// A device-local 2D image, one mip level, one layer, optimal tiling, with a view of `aspect`.
+// A device-local 2D image, one layer, optimal tiling, with a view of `aspect` over all its mip levels.
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect);
+                  VkImageAspectFlags aspect, uint32_t mipLevels = 1);
 void destroyImage(const Device& device, Image& image);
 
 }  // namespace common

@@ -17,7 +17,7 @@ packages=(
     build-essential cmake pkg-config            # compiler and build
     libvulkan-dev mesa-vulkan-drivers           # Vulkan loader + headers, lavapipe (CPU device)
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
-    libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev
+    libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev nlohmann-json3-dev libgtest-dev
     xvfb xauth clang-format                     # tests: windowed runs, formatting check
 )
 

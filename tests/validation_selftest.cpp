@@ -59,6 +59,6 @@ void makeMistakes(const common::Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return common::runChapter(argc, argv, "validation_selftest", "makes two deliberate mistakes",
+    return common::runChapter(argc, argv, {"validation_selftest", "makes two deliberate mistakes", {}},
                               makeMistakes);
 }

@@ -1,0 +1,313 @@
+// chapter-10: the geometry pass.
+#include "geometry_pass.hpp"
+
+#include <array>
+#include <cstring>
+
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+#include "common/files.hpp"
+#include "common/pipeline.hpp"
+#include "common/texture.hpp"
+
+namespace {
+
+constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+GBuffer createGBuffer(const common::Device& device, VkExtent2D extent) {
+    return {
+        .albedo = common::createImage(device, extent, kAlbedoFormat,
+                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                      VK_IMAGE_ASPECT_COLOR_BIT),
+        .depth = common::createImage(device, extent, kDepthFormat,
+                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     VK_IMAGE_ASPECT_DEPTH_BIT),
+    };
+}
+
+//> geometry-render-pass
+VkRenderPass createGeometryRenderPass(const common::Device& device) {
+    // Both attachments are cleared, kept for the lighting pass, and end in the layouts it
+    // samples them in, so the render pass itself does the transition.
+    std::array<VkAttachmentDescription, 2> attachments{{
+        {
+            .format = kAlbedoFormat,
+            .samples = VK_SAMPLE_COUNT_1_BIT,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+            .stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+            .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+            .finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        },
+        {
+            .format = kDepthFormat,
+            .samples = VK_SAMPLE_COUNT_1_BIT,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+            .stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+            .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+            .finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+        },
+    }};
+    VkAttachmentReference albedoRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{
+        .pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS,
+        .colorAttachmentCount = 1,
+        .pColorAttachments = &albedoRef,
+        .pDepthStencilAttachment = &depthRef,
+    };
+
+    std::array<VkSubpassDependency, 2> dependencies{{
+        // The previous frame's lighting pass samples these attachments in its fragment shader.
+        // Our clear and layout transition (a write) must wait for those reads to finish:
+        // a write-after-read hazard, for which an execution dependency is enough.
+        {
+            .srcSubpass = VK_SUBPASS_EXTERNAL,
+            .dstSubpass = 0,
+            .srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+            .dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                            VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+            .srcAccessMask = 0,
+            .dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+        },
+        // Our colour and depth writes, and the final layout transition, must be done and
+        // visible before the lighting pass samples them: a read-after-write hazard.
+        {
+            .srcSubpass = 0,
+            .dstSubpass = VK_SUBPASS_EXTERNAL,
+            .srcStageMask =
+                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+            .dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+            .srcAccessMask =
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            .dstAccessMask = VK_ACCESS_SHADER_READ_BIT,
+        },
+    }};
+    VkRenderPassCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO,
+        .attachmentCount = uint32_t(attachments.size()),
+        .pAttachments = attachments.data(),
+        .subpassCount = 1,
+        .pSubpasses = &subpass,
+        .dependencyCount = uint32_t(dependencies.size()),
+        .pDependencies = dependencies.data(),
+    };
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateRenderPass(device.handle, &info, nullptr, &renderPass));
+    return renderPass;
+}
+//< geometry-render-pass
+
+VkFramebuffer createGeometryFramebuffer(const common::Device& device, VkRenderPass renderPass,
+                                        const GBuffer& gbuffer) {
+    std::array<VkImageView, 2> views{gbuffer.albedo.view, gbuffer.depth.view};
+    VkFramebufferCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO,
+        .renderPass = renderPass,
+        .attachmentCount = uint32_t(views.size()),
+        .pAttachments = views.data(),
+        .width = gbuffer.albedo.extent.width,
+        .height = gbuffer.albedo.extent.height,
+        .layers = 1,
+    };
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffer));
+    return framebuffer;
+}
+
+void createDescriptors(const common::Device& device, GeometryPass& pass, const common::GpuScene& scene,
+                       uint32_t framesInFlight) {
+    pass.matrixLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+    pass.textureLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.materialLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)});
+
+    //> descriptor-pool
+    // Sized from what the scene holds: a set per texture, a view matrix per frame in flight.
+    uint32_t textures = uint32_t(scene.textures.size());
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 2 + framesInFlight + textures,
+                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1 + framesInFlight},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textures},
+                                      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1}});
+    //< descriptor-pool
+
+    VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    pass.projection =
+        common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+    pass.projectionSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
+    common::writeBufferDescriptor(device, pass.projectionSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                  pass.projection.handle, sizeof(glm::mat4));
+    // One view matrix per frame in flight: the CPU writes frame N+1's while the GPU may still
+    // read frame N's.
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        pass.views.push_back(
+            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible));
+        pass.viewSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout));
+        common::writeBufferDescriptor(device, pass.viewSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      pass.views.back().handle, sizeof(glm::mat4));
+    }
+
+    pass.sampler = common::createSampler(device, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    for (const common::Image& texture : scene.textures) {
+        pass.textureSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
+        common::writeImageDescriptor(device, pass.textureSets.back(), 0, pass.sampler, texture.view,
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    }
+
+    //> materials
+    // Every material in one uniform buffer; a draw selects its own with a dynamic offset, which
+    // must be a multiple of minUniformBufferOffsetAlignment.
+    VkDeviceSize alignment = device.properties.limits.minUniformBufferOffsetAlignment;
+    pass.materialStride = (sizeof(glm::vec4) + alignment - 1) / alignment * alignment;
+    pass.materials = common::createBuffer(device, pass.materialStride * scene.materials.size(),
+                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        std::memcpy(static_cast<char*>(pass.materials.mapped) + i * pass.materialStride,
+                    &scene.materials[i].diffuse, sizeof(glm::vec4));
+    pass.materialSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialLayout);
+    common::writeBufferDescriptor(device, pass.materialSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                                  pass.materials.handle, sizeof(glm::vec4));
+    //< materials
+}
+
+void createPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass) {
+    std::array<VkDescriptorSetLayout, 4> layouts{pass.matrixLayout, pass.matrixLayout, pass.textureLayout,
+                                                 pass.materialLayout};
+    VkPushConstantRange modelMatrix{
+        .stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(glm::mat4)};
+    VkPipelineLayoutCreateInfo layoutInfo{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+        .setLayoutCount = uint32_t(layouts.size()),
+        .pSetLayouts = layouts.data(),
+        .pushConstantRangeCount = 1,
+        .pPushConstantRanges = &modelMatrix,
+    };
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+
+    VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/geometry.vert");
+    VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/geometry.frag");
+    common::SceneVertexInput vertexInput;
+    common::describeSceneVertexInput(vertexInput,
+                                     common::kPosition | common::kUv);  // all geometry.vert reads
+    pass.pipeline = common::createGraphicsPipeline(
+        device, cache,
+        {
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+            .vertexInput = &vertexInput.state,
+            .depthTest = true,
+            .depthWrite = true,
+            .colorAttachmentCount = 1,
+            .layout = pass.pipelineLayout,
+            .renderPass = pass.renderPass,
+        });
+    vkDestroyShaderModule(device.handle, fragment, nullptr);
+    vkDestroyShaderModule(device.handle, vertex, nullptr);
+}
+
+}  // namespace
+
+GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                                const common::GpuScene& scene, uint32_t framesInFlight) {
+    GeometryPass pass;
+    pass.renderPass = createGeometryRenderPass(device);
+    pass.gbuffer = createGBuffer(device, extent);
+    pass.framebuffer = createGeometryFramebuffer(device, pass.renderPass, pass.gbuffer);
+    createDescriptors(device, pass, scene, framesInFlight);
+    createPipeline(device, cache, pass);
+    return pass;
+}
+
+void resizeGeometryPass(const common::Device& device, GeometryPass& pass, VkExtent2D extent) {
+    vkDestroyFramebuffer(device.handle, pass.framebuffer, nullptr);
+    common::destroyImage(device, pass.gbuffer.depth);
+    common::destroyImage(device, pass.gbuffer.albedo);
+    pass.gbuffer = createGBuffer(device, extent);
+    pass.framebuffer = createGeometryFramebuffer(device, pass.renderPass, pass.gbuffer);
+}
+
+void setProjection(GeometryPass& pass, const glm::mat4& projection) {
+    std::memcpy(pass.projection.mapped, &projection, sizeof(projection));
+}
+
+void setView(GeometryPass& pass, uint32_t frame, const glm::mat4& view) {
+    std::memcpy(pass.views[frame].mapped, &view, sizeof(view));
+}
+
+//> record-geometry
+void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const common::GpuScene& scene,
+                        uint32_t frame) {
+    VkExtent2D extent = pass.gbuffer.albedo.extent;
+    std::array<VkClearValue, 2> clears{};
+    clears[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{
+        .sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
+        .renderPass = pass.renderPass,
+        .framebuffer = pass.framebuffer,
+        .renderArea = {{0, 0}, extent},
+        .clearValueCount = uint32_t(clears.size()),
+        .pClearValues = clears.data(),
+    };
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+    VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+
+    // Sets 0 and 1 are the same for every draw; 2 and 3 change with the material.
+    std::array<VkDescriptorSet, 2> matrices{pass.projectionSet, pass.viewSets[frame]};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, matrices.data(),
+                            0, nullptr);
+    for (const common::Draw& draw : scene.draws) {
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        const common::GpuMaterial& material = scene.materials[draw.material];
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+        std::array<VkDescriptorSet, 2> materialSets{pass.textureSets[material.albedoTexture],
+                                                    pass.materialSet};
+        uint32_t materialOffset = uint32_t(draw.material * pass.materialStride);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 2,
+                                materialSets.data(), 1, &materialOffset);
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                           &draw.model);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+    }
+    vkCmdEndRenderPass(cmd);
+}
+//< record-geometry
+
+void destroyGeometryPass(const common::Device& device, GeometryPass& pass) {
+    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);  // frees its sets
+    common::destroyBuffer(device, pass.materials);
+    for (common::Buffer& view : pass.views) common::destroyBuffer(device, view);
+    common::destroyBuffer(device, pass.projection);
+    vkDestroyDescriptorSetLayout(device.handle, pass.materialLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.textureLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.matrixLayout, nullptr);
+    vkDestroyFramebuffer(device.handle, pass.framebuffer, nullptr);
+    common::destroyImage(device, pass.gbuffer.depth);
+    common::destroyImage(device, pass.gbuffer.albedo);
+    vkDestroyRenderPass(device.handle, pass.renderPass, nullptr);
+    pass = {};
+}

@@ -1,0 +1,57 @@
+// chapter-10: the geometry pass -- the scene rendered into the G-buffer (albedo + depth) with a
+// classic VkRenderPass and VkFramebuffer. The book's GeometryAttachments, GeometryRenderPass,
+// GeometryFrameBuffer and GeometryRenderActivity.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/buffer.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/image.hpp"
+
+// The G-buffer: one set of attachments shared by all frames in flight (the subpass
+// dependencies keep one frame's writes from overtaking the previous frame's reads).
+struct GBuffer {
+    common::Image albedo;  // R16G16B16A16_SFLOAT
+    common::Image depth;   // D32_SFLOAT
+};
+
+struct GeometryPass {
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    GBuffer gbuffer;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+
+    // Set 0: projection, set 1: view (one per frame in flight), set 2: one per texture,
+    // set 3: all materials in one dynamic uniform buffer.
+    VkDescriptorSetLayout matrixLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    common::Buffer projection;
+    std::vector<common::Buffer> views;
+    common::Buffer materials;
+    VkDeviceSize materialStride = 0;  // sizeof(vec4) rounded up to minUniformBufferOffsetAlignment
+    VkDescriptorSet projectionSet = VK_NULL_HANDLE;
+    std::vector<VkDescriptorSet> viewSets;
+    std::vector<VkDescriptorSet> textureSets;
+    VkDescriptorSet materialSet = VK_NULL_HANDLE;
+    VkSampler sampler = VK_NULL_HANDLE;
+
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                                const common::GpuScene& scene, uint32_t framesInFlight);
+// New attachments and framebuffer at the new size; the render pass and pipeline stay.
+void resizeGeometryPass(const common::Device& device, GeometryPass& pass, VkExtent2D extent);
+void setProjection(GeometryPass& pass, const glm::mat4& projection);
+void setView(GeometryPass& pass, uint32_t frame, const glm::mat4& view);
+void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const common::GpuScene& scene,
+                        uint32_t frame);
+void destroyGeometryPass(const common::Device& device, GeometryPass& pass);

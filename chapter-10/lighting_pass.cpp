@@ -1,0 +1,218 @@
+// chapter-10: the lighting pass.
+#include "lighting_pass.hpp"
+
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+#include "common/files.hpp"
+#include "common/pipeline.hpp"
+#include "common/texture.hpp"
+
+namespace {
+
+//> lighting-render-pass
+// One colour attachment, the target image; the same set-up as chapter-06's render pass.
+VkRenderPass createLightingRenderPass(const common::Device& device, const common::Target& target) {
+    VkAttachmentDescription color{
+        .format = target.format,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,  // the triangle covers every pixel
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+        .stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+        .stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+        .finalLayout = target.presentLayout,
+    };
+    VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{
+        .pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS,
+        .colorAttachmentCount = 1,
+        .pColorAttachments = &colorRef,
+    };
+    // The image may only be written once the target has handed it over (the acquire semaphore
+    // is waited at COLOR_ATTACHMENT_OUTPUT).
+    VkSubpassDependency acquire{
+        .srcSubpass = VK_SUBPASS_EXTERNAL,
+        .dstSubpass = 0,
+        .srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+        .dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+        .srcAccessMask = 0,
+        .dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+    };
+    VkRenderPassCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO,
+        .attachmentCount = 1,
+        .pAttachments = &color,
+        .subpassCount = 1,
+        .pSubpasses = &subpass,
+        .dependencyCount = 1,
+        .pDependencies = &acquire,
+    };
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateRenderPass(device.handle, &info, nullptr, &renderPass));
+    return renderPass;
+}
+//< lighting-render-pass
+
+std::vector<VkFramebuffer> createFramebuffers(const common::Device& device, VkRenderPass renderPass,
+                                              const common::Target& target) {
+    std::vector<VkFramebuffer> framebuffers(target.views.size());
+    for (size_t i = 0; i < target.views.size(); ++i) {
+        VkFramebufferCreateInfo info{
+            .sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO,
+            .renderPass = renderPass,
+            .attachmentCount = 1,
+            .pAttachments = &target.views[i],
+            .width = target.extent.width,
+            .height = target.extent.height,
+            .layers = 1,
+        };
+        VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
+    }
+    return framebuffers;
+}
+
+//> attachments-set
+// The G-buffer as sampled images: binding 0 albedo, binding 1 depth, in the layouts the
+// geometry pass left them in.
+void writeAttachments(const common::Device& device, LightingPass& pass, const GBuffer& gbuffer) {
+    common::writeImageDescriptor(device, pass.attachmentsSet, 0, pass.sampler, gbuffer.albedo.view,
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    common::writeImageDescriptor(device, pass.attachmentsSet, 1, pass.sampler, gbuffer.depth.view,
+                                 VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+}
+//< attachments-set
+
+void destroyFramebuffers(const common::Device& device, LightingPass& pass) {
+    for (VkFramebuffer framebuffer : pass.framebuffers)
+        vkDestroyFramebuffer(device.handle, framebuffer, nullptr);
+    pass.framebuffers.clear();
+}
+
+}  // namespace
+
+LightingPass createLightingPass(const common::Device& device, VkPipelineCache cache,
+                                const common::Target& target, const GBuffer& gbuffer) {
+    LightingPass pass;
+    pass.renderPass = createLightingRenderPass(device, target);
+    pass.framebuffers = createFramebuffers(device, pass.renderPass, target);
+
+    pass.attachmentsLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    // Attachments are read one texel per pixel: nearest filtering, which every depth format
+    // supports (linear filtering of D32_SFLOAT is optional).
+    VkSamplerCreateInfo samplerInfo{
+        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+        .magFilter = VK_FILTER_NEAREST,
+        .minFilter = VK_FILTER_NEAREST,
+        .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+    };
+    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    writeAttachments(device, pass, gbuffer);
+
+    VkPushConstantRange show{
+        .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = 0, .size = sizeof(LightingView)};
+    VkPipelineLayoutCreateInfo layoutInfo{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+        .setLayoutCount = 1,
+        .pSetLayouts = &pass.attachmentsLayout,
+        .pushConstantRangeCount = 1,
+        .pPushConstantRanges = &show,
+    };
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/lighting.vert");
+    VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/lighting.frag");
+    // No vertex input at all (the book's EmptyVertexBufferStructure): the vertex shader makes
+    // the triangle from gl_VertexIndex. No depth test either.
+    pass.pipeline = common::createGraphicsPipeline(
+        device, cache,
+        {
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+            .vertexInput = nullptr,
+            .colorAttachmentCount = 1,
+            .layout = pass.pipelineLayout,
+            .renderPass = pass.renderPass,
+        });
+    vkDestroyShaderModule(device.handle, fragment, nullptr);
+    vkDestroyShaderModule(device.handle, vertex, nullptr);
+
+    VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                     .queueFamilyIndex = device.queueFamily};
+    VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &pass.commandPool));
+    return pass;
+}
+
+void resizeLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
+                        const GBuffer& gbuffer) {
+    destroyFramebuffers(device, pass);
+    pass.framebuffers = createFramebuffers(device, pass.renderPass, target);
+    writeAttachments(device, pass, gbuffer);
+}
+
+//> record-lighting
+void recordLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
+                        const LightingView& view) {
+    // The number of target images can change with a resize: start from a fresh pool each time.
+    VK_CHECK(vkResetCommandPool(device.handle, pass.commandPool, 0));
+    if (pass.commandBuffers.size() != target.images.size()) {
+        if (!pass.commandBuffers.empty())
+            vkFreeCommandBuffers(device.handle, pass.commandPool, uint32_t(pass.commandBuffers.size()),
+                                 pass.commandBuffers.data());
+        pass.commandBuffers.resize(target.images.size());
+        VkCommandBufferAllocateInfo allocInfo{
+            .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+            .commandPool = pass.commandPool,
+            .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+            .commandBufferCount = uint32_t(pass.commandBuffers.size()),
+        };
+        VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, pass.commandBuffers.data()));
+    }
+
+    VkExtent2D extent = target.extent;
+    for (size_t i = 0; i < pass.commandBuffers.size(); ++i) {
+        VkCommandBuffer cmd = pass.commandBuffers[i];
+        VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
+        VkRenderPassBeginInfo begin{
+            .sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
+            .renderPass = pass.renderPass,
+            .framebuffer = pass.framebuffers[i],
+            .renderArea = {{0, 0}, extent},
+        };
+        vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+        VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f,
+                            1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        VkRect2D scissor{{0, 0}, extent};
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 1,
+                                &pass.attachmentsSet, 0, nullptr);
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightingView),
+                           &view);
+        vkCmdDraw(cmd, 3, 1, 0, 0);  // three vertices, no vertex buffer
+        vkCmdEndRenderPass(cmd);
+        VK_CHECK(vkEndCommandBuffer(cmd));
+    }
+}
+//< record-lighting
+
+void destroyLightingPass(const common::Device& device, LightingPass& pass) {
+    vkDestroyCommandPool(device.handle, pass.commandPool, nullptr);
+    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.attachmentsLayout, nullptr);
+    destroyFramebuffers(device, pass);
+    vkDestroyRenderPass(device.handle, pass.renderPass, nullptr);
+    pass = {};
+}

@@ -1,0 +1,292 @@
+// Scene files: strict JSON reading (nlohmann-json) and writing.
+#include "common/scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "common/check.hpp"
+#include "common/files.hpp"
+
+namespace common {
+namespace {
+
+using nlohmann::json;
+
+// Reads one JSON value with a path for messages ("models[2].transform.scale").
+class Reader {
+public:
+    Reader(std::string origin) : origin_(std::move(origin)) {}
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw InputError(origin_ + ": " + where + ": " + what);
+    }
+
+    void onlyKeys(const json& object, const std::string& where,
+                  std::initializer_list<const char*> allowed) const {
+        if (!object.is_object()) fail(where, "expected an object");
+        for (const auto& [key, value] : object.items()) {
+            bool known = false;
+            for (const char* name : allowed) known = known || key == name;
+            if (!known) fail(where, "unknown key '" + key + "'");
+        }
+    }
+
+    float number(const json& value, const std::string& where, float min, float max) const {
+        if (!value.is_number()) fail(where, "expected a number");
+        double d = value.get<double>();
+        if (!std::isfinite(d)) fail(where, "expected a finite number");
+        if (d < min || d > max)
+            fail(where, "must be between " + format(min) + " and " + format(max) + ", got " + format(d));
+        return static_cast<float>(d);
+    }
+
+    template <int N>
+    glm::vec<N, float> vector(const json& value, const std::string& where, float min, float max) const {
+        if (!value.is_array() || value.size() != N)
+            fail(where, "expected an array of " + std::to_string(N) + " numbers");
+        glm::vec<N, float> v;
+        for (int i = 0; i < N; ++i)
+            v[i] = number(value[size_t(i)], where + "[" + std::to_string(i) + "]", min, max);
+        return v;
+    }
+
+    std::string string(const json& value, const std::string& where) const {
+        if (!value.is_string() || value.get<std::string>().empty())
+            fail(where, "expected a non-empty string");
+        return value.get<std::string>();
+    }
+
+private:
+    static std::string format(double d) {
+        std::ostringstream out;
+        out << d;
+        return out.str();
+    }
+    std::string origin_;
+};
+
+constexpr float kHuge = 1e30f;  // finite, but nothing a scene can sensibly exceed
+
+Transform readTransform(const Reader& r, const json& model, const std::string& where) {
+    Transform t;
+    if (model.contains("position"))
+        t.position = r.vector<3>(model["position"], where + ".position", -kHuge, kHuge);
+    if (model.contains("rotation"))
+        t.rotation = r.vector<3>(model["rotation"], where + ".rotation", -360.0f, 360.0f);
+    if (model.contains("scale")) {
+        const json& s = model["scale"];
+        t.scale = s.is_number() ? glm::vec3(r.number(s, where + ".scale", -kHuge, kHuge))
+                                : r.vector<3>(s, where + ".scale", -kHuge, kHuge);
+        if (t.scale.x == 0.0f || t.scale.y == 0.0f || t.scale.z == 0.0f)
+            r.fail(where + ".scale", "must not be zero");
+    }
+    return t;
+}
+
+MaterialOverride readOverride(const Reader& r, const json& m, const std::string& where,
+                              const std::filesystem::path& baseDir) {
+    r.onlyKeys(m, where, {"diffuse", "roughness", "metallic", "diffuseTexture", "normalTexture"});
+    MaterialOverride o;
+    if (m.contains("diffuse")) o.diffuse = r.vector<4>(m["diffuse"], where + ".diffuse", 0.0f, 1.0f);
+    if (m.contains("roughness")) o.roughness = r.number(m["roughness"], where + ".roughness", 0.0f, 1.0f);
+    if (m.contains("metallic")) o.metallic = r.number(m["metallic"], where + ".metallic", 0.0f, 1.0f);
+    if (m.contains("diffuseTexture"))
+        o.diffuseTexture = baseDir / r.string(m["diffuseTexture"], where + ".diffuseTexture");
+    if (m.contains("normalTexture"))
+        o.normalTexture = baseDir / r.string(m["normalTexture"], where + ".normalTexture");
+    return o;
+}
+
+json vec(const glm::vec3& v) {
+    return json::array({v.x, v.y, v.z});
+}
+json vec(const glm::vec4& v) {
+    return json::array({v.x, v.y, v.z, v.w});
+}
+
+}  // namespace
+
+glm::mat4 Transform::matrix() const {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), position);
+    m = glm::rotate(m, glm::radians(rotation.z), glm::vec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(rotation.y), glm::vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(rotation.x), glm::vec3(1, 0, 0));
+    return glm::scale(m, scale);
+}
+
+Scene parseScene(const std::string& text, const std::string& origin, const std::filesystem::path& baseDir) {
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& error) {
+        std::string what = error.what();
+        size_t at = what.find("parse error");  // drop the "[json.exception.parse_error.101] " prefix
+        throw InputError(origin + ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at)));
+    }
+    Reader r(origin);
+    r.onlyKeys(root, "scene", {"models", "camera", "ambient", "lights"});
+    Scene scene;
+
+    if (!root.contains("models") || !root["models"].is_array() || root["models"].empty())
+        r.fail("models", "expected a non-empty array of models");
+    for (size_t i = 0; i < root["models"].size(); ++i) {
+        const json& m = root["models"][i];
+        std::string where = "models[" + std::to_string(i) + "]";
+        r.onlyKeys(m, where, {"file", "position", "rotation", "scale", "materials"});
+        if (!m.contains("file")) r.fail(where, "missing 'file'");
+        ModelInstance model;
+        model.file = baseDir / r.string(m["file"], where + ".file");
+        model.transform = readTransform(r, m, where);
+        if (m.contains("materials")) {
+            if (!m["materials"].is_object())
+                r.fail(where + ".materials", "expected an object keyed by material name");
+            for (const auto& [name, value] : m["materials"].items())
+                model.materials[name] = readOverride(r, value, where + ".materials." + name, baseDir);
+        }
+        scene.models.push_back(std::move(model));
+    }
+
+    if (root.contains("camera")) {
+        const json& c = root["camera"];
+        r.onlyKeys(c, "camera", {"position", "yaw", "pitch", "fov", "near", "far"});
+        CameraDesc& cam = scene.camera;
+        if (c.contains("position"))
+            cam.position = r.vector<3>(c["position"], "camera.position", -kHuge, kHuge);
+        if (c.contains("yaw")) cam.yaw = r.number(c["yaw"], "camera.yaw", -360.0f, 360.0f);
+        if (c.contains("pitch")) cam.pitch = r.number(c["pitch"], "camera.pitch", -89.0f, 89.0f);
+        if (c.contains("fov")) cam.fov = r.number(c["fov"], "camera.fov", 1.0f, 179.0f);
+        if (c.contains("near")) cam.near = r.number(c["near"], "camera.near", 1e-6f, kHuge);
+        if (c.contains("far")) cam.far = r.number(c["far"], "camera.far", 1e-6f, kHuge);
+        if (!(cam.far > cam.near)) r.fail("camera.far", "must be greater than camera.near");
+    }
+
+    if (root.contains("ambient")) {
+        const json& a = root["ambient"];
+        r.onlyKeys(a, "ambient", {"color", "intensity"});
+        if (a.contains("color")) scene.ambientColor = r.vector<3>(a["color"], "ambient.color", 0.0f, kHuge);
+        if (a.contains("intensity"))
+            scene.ambientIntensity = r.number(a["intensity"], "ambient.intensity", 0.0f, kHuge);
+    }
+
+    if (root.contains("lights")) {
+        if (!root["lights"].is_array()) r.fail("lights", "expected an array");
+        for (size_t i = 0; i < root["lights"].size(); ++i) {
+            const json& l = root["lights"][i];
+            std::string where = "lights[" + std::to_string(i) + "]";
+            r.onlyKeys(l, where, {"type", "position", "direction", "color", "intensity"});
+            Light light;
+            std::string type = l.contains("type") ? r.string(l["type"], where + ".type") : "";
+            if (type == "directional") {
+                light.type = Light::Type::Directional;
+                if (!l.contains("direction")) r.fail(where, "a directional light needs 'direction'");
+                light.direction = r.vector<3>(l["direction"], where + ".direction", -kHuge, kHuge);
+                if (glm::length(light.direction) < 1e-6f) r.fail(where + ".direction", "must not be zero");
+                if (l.contains("position"))
+                    r.fail(where + ".position", "a directional light has no position");
+            } else if (type == "point") {
+                light.type = Light::Type::Point;
+                if (!l.contains("position")) r.fail(where, "a point light needs 'position'");
+                light.position = r.vector<3>(l["position"], where + ".position", -kHuge, kHuge);
+                if (l.contains("direction")) r.fail(where + ".direction", "a point light has no direction");
+            } else {
+                r.fail(where + ".type", "expected \"directional\" or \"point\"");
+            }
+            if (l.contains("color")) light.color = r.vector<3>(l["color"], where + ".color", 0.0f, kHuge);
+            if (l.contains("intensity"))
+                light.intensity = r.number(l["intensity"], where + ".intensity", 0.0f, kHuge);
+            scene.lights.push_back(light);
+        }
+    }
+    return scene;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in) throw InputError(path.string() + ": cannot read");
+    return parseScene(text.str(), path.string(), path.parent_path());
+}
+
+std::string sceneToJson(const Scene& scene) {
+    json root;
+    root["models"] = json::array();
+    for (const ModelInstance& m : scene.models) {
+        json model{{"file", m.file.string()},
+                   {"position", vec(m.transform.position)},
+                   {"rotation", vec(m.transform.rotation)},
+                   {"scale", vec(m.transform.scale)}};
+        for (const auto& [name, o] : m.materials) {
+            json over = json::object();
+            if (o.diffuse) over["diffuse"] = vec(*o.diffuse);
+            if (o.roughness) over["roughness"] = *o.roughness;
+            if (o.metallic) over["metallic"] = *o.metallic;
+            if (o.diffuseTexture) over["diffuseTexture"] = o.diffuseTexture->string();
+            if (o.normalTexture) over["normalTexture"] = o.normalTexture->string();
+            model["materials"][name] = over;
+        }
+        root["models"].push_back(model);
+    }
+    const CameraDesc& c = scene.camera;
+    root["camera"] = {{"position", vec(c.position)},
+                      {"yaw", c.yaw},
+                      {"pitch", c.pitch},
+                      {"fov", c.fov},
+                      {"near", c.near},
+                      {"far", c.far}};
+    root["ambient"] = {{"color", vec(scene.ambientColor)}, {"intensity", scene.ambientIntensity}};
+    root["lights"] = json::array();
+    for (const Light& l : scene.lights) {
+        json light{{"color", vec(l.color)}, {"intensity", l.intensity}};
+        if (l.type == Light::Type::Directional) {
+            light["type"] = "directional";
+            light["direction"] = vec(l.direction);
+        } else {
+            light["type"] = "point";
+            light["position"] = vec(l.position);
+        }
+        root["lights"].push_back(light);
+    }
+    return root.dump(2) + "\n";
+}
+
+Scene sceneForModel(const std::filesystem::path& obj, glm::vec3 boundsMin, glm::vec3 boundsMax) {
+    Scene scene;
+    scene.models.push_back(ModelInstance{.file = obj});
+    // Frame the bounding sphere: back off along +Z until it fits the vertical field of view,
+    // looking slightly down on it.
+    glm::vec3 center = (boundsMin + boundsMax) * 0.5f;
+    float radius = std::max(glm::length(boundsMax - boundsMin) * 0.5f, 1e-3f);
+    CameraDesc& cam = scene.camera;
+    cam.fov = 60.0f;
+    cam.pitch = -15.0f;
+    float distance = radius / std::sin(glm::radians(cam.fov * 0.5f));
+    glm::vec3 back(0.0f, -std::sin(glm::radians(cam.pitch)), std::cos(glm::radians(cam.pitch)));
+    cam.position = center + back * distance;
+    cam.near = std::max(distance - radius, distance * 1e-3f) * 0.5f;
+    cam.far = (distance + radius) * 2.0f;
+    scene.lights.push_back(Light{.type = Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}});
+    return scene;
+}
+
+Scene sceneFromOptions(const Options& options, ModelCache& models) {
+    if (!options.model.empty()) {
+        const ModelData& model = loadObjModelCached(models, options.model);
+        return sceneForModel(options.model, model.boundsMin, model.boundsMax);
+    }
+    if (!options.scene.empty()) return loadSceneFile(options.scene);
+    std::filesystem::path defaultScene = executableDir() / "scenes" / "default" / "scene.json";
+    std::error_code ec;
+    if (!std::filesystem::exists(defaultScene, ec))
+        throw Failure("the default scene '" + defaultScene.string() +
+                      "' is missing (is the build complete?)");
+    return loadSceneFile(defaultScene);
+}
+
+}  // namespace common

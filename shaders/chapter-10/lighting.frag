@@ -1,0 +1,31 @@
+#version 450
+// chapter-10 lighting pass: no lighting yet (it arrives in chapter-15). The final image is the
+// albedo, as in the book; --view depth shows the depth attachment instead.
+
+//> lighting-frag
+layout(location = 0) in vec2 inUv;
+
+layout(location = 0) out vec4 outColor;
+
+layout(set = 0, binding = 0) uniform sampler2D albedoAttachment;
+layout(set = 0, binding = 1) uniform sampler2D depthAttachment;
+
+layout(push_constant) uniform Show {
+    int view;  // 0 final, 1 albedo, 2 depth (the order of kViews in main.cpp)
+    float near;
+    float far;
+} show;
+
+void main() {
+    if (show.view == 2) {
+        // Depth 0..1 back to eye distance (a perspective projection with depth 0..1), then a
+        // logarithmic grey scale: near is white, the far plane (the clear value) black.
+        float depth = texture(depthAttachment, inUv).r;
+        float distance = show.near * show.far / (show.far - depth * (show.far - show.near));
+        float grey = 1.0 - log(distance / show.near) / log(show.far / show.near);
+        outColor = vec4(vec3(grey), 1.0);
+    } else {
+        outColor = vec4(texture(albedoAttachment, inUv).rgb, 1.0);
+    }
+}
+//< lighting-frag
