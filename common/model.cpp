@@ -27,7 +27,26 @@ glm::vec3 anyOrthogonal(const glm::vec3& n) {
 }
 
 // tinyobjloader reads numbers with its own parser and turns text it cannot read into 0 without
-// a word. These are the MTL keys whose values we use; each must hold finite numbers.
+// a word, so a damaged file would load as a different model. We check the numbers we use:
+// `count` tokens after `key` must be finite numbers (`optional` more may follow).
+void checkNumbers(const std::filesystem::path& file, int lineNumber, std::istringstream& tokens,
+                  const std::string& key, int count, int optional) {
+    for (int i = 0; i < count + optional; ++i) {
+        std::string token;
+        if (!(tokens >> token)) {
+            if (i < count)
+                throw InputError(file.string() + ":" + std::to_string(lineNumber) + ": '" + key + "' needs " +
+                                 std::to_string(count) + " numbers");
+            return;
+        }
+        char* end = nullptr;
+        double value = std::strtod(token.c_str(), &end);
+        if (*end != '\0' || !std::isfinite(value))
+            throw InputError(file.string() + ":" + std::to_string(lineNumber) + ": '" + key + "' has '" +
+                             token + "', not a finite number");
+    }
+}
+
 void checkMtlNumbers(const std::filesystem::path& mtl) {
     std::ifstream in(mtl);
     std::string line;
@@ -35,18 +54,25 @@ void checkMtlNumbers(const std::filesystem::path& mtl) {
         std::istringstream tokens(line);
         std::string key;
         tokens >> key;
-        int expected = (key == "Kd" || key == "Ka" || key == "Ks")                                ? 3
-                       : (key == "d" || key == "Tr" || key == "Pr" || key == "Pm" || key == "Ns") ? 1
-                                                                                                  : 0;
-        for (int i = 0; i < expected; ++i) {
-            std::string token;
-            tokens >> token;
-            char* end = nullptr;
-            double value = token.empty() ? NAN : std::strtod(token.c_str(), &end);
-            if (token.empty() || *end != '\0' || !std::isfinite(value))
-                throw InputError(mtl.string() + ":" + std::to_string(number) + ": '" + key + "' needs " +
-                                 std::to_string(expected) + " finite number(s)");
-        }
+        if (key == "Kd" || key == "Ka" || key == "Ks") checkNumbers(mtl, number, tokens, key, 3, 0);
+        if (key == "d" || key == "Tr" || key == "Pr" || key == "Pm" || key == "Ns")
+            checkNumbers(mtl, number, tokens, key, 1, 0);
+    }
+}
+
+// One pass over the OBJ text: the numbers of v / vn / vt lines, and the MTL files it names.
+void checkObjText(const std::filesystem::path& obj) {
+    std::ifstream in(obj);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        std::istringstream tokens(line);
+        std::string key;
+        tokens >> key;
+        if (key == "v") checkNumbers(obj, number, tokens, key, 3, 4);  // x y z [w] or x y z r g b
+        if (key == "vn") checkNumbers(obj, number, tokens, key, 3, 0);
+        if (key == "vt") checkNumbers(obj, number, tokens, key, 1, 2);
+        if (key == "mtllib")
+            for (std::string file; tokens >> file;) checkMtlNumbers(obj.parent_path() / file);
     }
 }
 
@@ -100,18 +126,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         material.alphaTexture = texturePath(directory, m.alpha_texname);
         model.materials.push_back(material);
     }
-    // Check the MTL files' numbers ourselves (see checkMtlNumbers).
-    {
-        std::ifstream obj(path);
-        std::string line;
-        while (std::getline(obj, line)) {
-            std::istringstream tokens(line);
-            std::string key, file;
-            tokens >> key;
-            if (key != "mtllib") continue;
-            while (tokens >> file) checkMtlNumbers(directory / file);
-        }
-    }
+    checkObjText(path);
     uint32_t defaultMaterial = static_cast<uint32_t>(model.materials.size());
     model.materials.push_back(MaterialData{.name = "default"});  // faces without usemtl, or an unknown name
 

@@ -122,10 +122,11 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& error) {
+    } catch (const json::exception& error) {  // syntax errors, and numbers out of double's range
         std::string what = error.what();
-        size_t at = what.find("parse error");  // drop the "[json.exception.parse_error.101] " prefix
-        throw InputError(origin + ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at)));
+        size_t at = what.find("] ");  // drop the "[json.exception.parse_error.101] " prefix
+        throw InputError(origin +
+                         ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
     }
     Reader r(origin);
     r.onlyKeys(root, "scene", {"models", "camera", "ambient", "lights"});

@@ -168,10 +168,13 @@ void writeTextures(const fs::path& dir) {
             for (int x = 0; x < S; ++x) {
                 float n = fractalNoise(float(x), float(y), S, 41);
                 albedo.set(x, y, vec3(0.30f, 0.28f, 0.26f) * (0.7f + 0.6f * n));
-                float u = float(x) / S * 8.0f, v = float(y) / S * 8.0f;  // 8 x 8 diamonds
-                float a = std::abs(std::fmod(u + v, 1.0f) - 0.5f),
-                      b = std::abs(std::fmod(u - v + 8.0f, 1.0f) - 0.5f);
-                bool bar = a > 0.42f || b > 0.42f;
+                // 4 x 4 diamonds. The bars cover more than half of the area, so alpha averaged
+                // into any mip level stays above the 0.5 cut-off and the grille does not
+                // dissolve with distance (thin bars would).
+                float u = float(x) / S * 4.0f, v = float(y) / S * 4.0f;
+                float a = std::abs(std::fmod(u + v, 1.0f) - 0.5f);
+                float b = std::abs(std::fmod(u - v + 4.0f, 1.0f) - 0.5f);
+                bool bar = a > 0.33f || b > 0.33f;
                 bool frame = x < 16 || y < 16 || x >= S - 16 || y >= S - 16;
                 alpha.pixels[size_t(y) * S + size_t(x)] = (bar || frame) ? 255 : 0;
             }
@@ -350,8 +353,8 @@ int main(int argc, char** argv) {
         // The grille: two back-to-back quads, alpha-tested through map_d.
         Obj grille;
         grille.use("iron");
-        grille.grid({-2, 0, 0}, {4, 0, 0}, {0, 3, 0}, 1, 1, 1.5f);
-        grille.grid({2, 0, -0.01f}, {-4, 0, 0}, {0, 3, 0}, 1, 1, 1.5f);
+        grille.grid({-2, 0, 0}, {4, 0, 0}, {0, 3, 0}, 1, 1, 4.0f);
+        grille.grid({2, 0, -0.01f}, {-4, 0, 0}, {0, 3, 0}, 1, 1, 4.0f);
         grille.write(dir / "grille.obj", "grille.mtl");
         writeText(dir / "grille.mtl",
                   "newmtl iron\nKd 1 1 1\nPr 0.45\nPm 1\nmap_Kd grille_albedo.png\nmap_d grille_alpha.png\n");
