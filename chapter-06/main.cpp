@@ -23,8 +23,6 @@
 
 namespace {
 
-constexpr uint32_t kFramesInFlight = 2;
-
 //> mesh-data
 // The book's MeshData: what the application knows about a mesh before the GPU has it.
 struct MeshData {
@@ -251,7 +249,7 @@ void run(const common::Options& options) {
     common::createTargetSurface(target, instance);
     common::Device device = common::createDevice(instance, target.surface, options.device);
     common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, kFramesInFlight);
+    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
 
     std::vector<Mesh> meshes = loadMeshes(device, {MeshData{
                                                       .positions = {-0.5f, -0.5f, 0.0f,  //
@@ -279,9 +277,9 @@ void run(const common::Options& options) {
 
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::pollTarget(target, frame);
-        common::FrameSync& sync = frames[frame % kFramesInFlight];
+        common::FrameSync& sync = frames[frame % options.framesInFlight];
 
-        // Wait until the GPU is done with this frame's command buffer from kFramesInFlight ago.
+        // Wait until the GPU is done with this slot's command buffer, used options.framesInFlight frames ago.
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
 
         uint32_t imageIndex = 0;

@@ -28,7 +28,6 @@
 
 namespace {
 
-constexpr uint32_t kFramesInFlight = 2;
 const common::ChapterInfo kChapter{
     "chapter-10",
     "deferred shading with render passes (the book's chapter 10)",
@@ -55,8 +54,8 @@ void run(const common::Options& options) {
     common::createTargetSurface(target, instance);
     common::Device device = common::createDevice(instance, target.surface, options.device);
     common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, kFramesInFlight);
-    std::vector<GeometrySync> geometrySync(kFramesInFlight);
+    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
+    std::vector<GeometrySync> geometrySync(options.framesInFlight);
     for (GeometrySync& sync : geometrySync) {
         VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
                                          .flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT,
@@ -78,7 +77,7 @@ void run(const common::Options& options) {
 
     common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-10");
     GeometryPass geometryPass =
-        createGeometryPass(device, pipelineCache.handle, target.extent, gpuScene, kFramesInFlight);
+        createGeometryPass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
     LightingPass lightingPass =
         createLightingPass(device, pipelineCache.handle, target, geometryPass.gbuffer);
     LightingView lightingView{int(options.view), scene.camera.near, scene.camera.far};
@@ -112,7 +111,7 @@ void run(const common::Options& options) {
     bool viewKeyDown = false;
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::pollTarget(target, frame);
-        uint32_t slot = frame % kFramesInFlight;
+        uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
         GeometrySync& geometry = geometrySync[slot];
 

@@ -15,12 +15,13 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
-    "          [--device NAME] [--validation] [--resize WxH] [--help]%s\n"
+    "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH] [--help]%s\n"
     "\n"
     "  --headless         render offscreen, no window or display needed\n"
     "  --width W          image width, 1..16384 (default 1280)\n"
     "  --height H         image height, 1..16384 (default 720)\n"
     "  --frames N         frames to render, 1..10000000 (default: 1 headless, until closed in a window)\n"
+    "  --frames-in-flight N  frames recorded ahead of the GPU, 1..3 (default 2)\n"
     "  --screenshot FILE  write the last frame as a PNG\n"
     "  --device NAME      use the first Vulkan device whose name contains NAME (case-insensitive)\n"
     "  --validation       enable VK_LAYER_KHRONOS_validation with synchronization validation;\n"
@@ -79,6 +80,12 @@ void checkScreenshotPath(const std::filesystem::path& path) {
         throw InputError("cannot write screenshot '" + name + "': the file is not writable");
 }
 
+bool isSwitch(const ChapterInfo& chapter, std::string_view name) {
+    for (const auto& [switchName, help] : chapter.switches)
+        if (switchName == name) return true;
+    return false;
+}
+
 }  // namespace
 
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
@@ -99,6 +106,8 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         } else if (arg == "--frames") {
             options.frames = parseNumber(arg, value(), 1, 10'000'000);
             framesGiven = true;
+        } else if (arg == "--frames-in-flight") {
+            options.framesInFlight = parseNumber(arg, value(), 1, 3);
         } else if (arg == "--screenshot") {
             options.screenshot = value();
             checkScreenshotPath(options.screenshot);
@@ -125,6 +134,8 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             }
             if (!found)
                 throw InputError("--view must be one of " + names + ", got '" + std::string(name) + "'");
+        } else if (arg.starts_with("--") && isSwitch(chapter, arg.substr(2))) {
+            options.switches.insert(std::string(arg.substr(2)));
         } else if (arg == "--help" || arg == "-h") {
             options.help = true;
         } else if (arg.starts_with("-")) {
@@ -159,6 +170,8 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                 for (const std::string& view : info.views) names += (names.empty() ? "" : "|") + view;
                 std::printf(kSceneUsage, names.c_str());
             }
+            for (const auto& [switchName, help] : info.switches)
+                std::printf("  --%-17s%s\n", switchName.c_str(), help.c_str());
             std::printf("%s", kExitCodes);
             return 0;
         }

@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace common {
@@ -21,15 +23,17 @@ struct Options {
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 0;               // 0: the default, 1 frame headless, until closed in a window
+    uint32_t framesInFlight = 2;       // frames the CPU may record while the GPU works on earlier ones
     std::filesystem::path screenshot;  // empty: no screenshot
     std::string device;                // substring of the device name; empty: best device
     bool validation = false;
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
     bool help = false;
     // Chapters that render scenes (chapter-10 on):
-    std::filesystem::path scene;  // --scene FILE.json
-    std::filesystem::path model;  // --model FILE.obj
-    uint32_t view = 0;            // --view: index into ChapterInfo::views (0 = the final image)
+    std::filesystem::path scene;     // --scene FILE.json
+    std::filesystem::path model;     // --model FILE.obj
+    uint32_t view = 0;               // --view: index into ChapterInfo::views (0 = the final image)
+    std::set<std::string> switches;  // chapter-specific on/off options given, e.g. "fxaa" for --fxaa
 };
 
 // What a chapter is, for --help and for the options only some chapters take.
@@ -39,6 +43,8 @@ struct ChapterInfo {
     // The attachments --view can show, the final image first; empty for chapters without a
     // scene, which then refuse --scene, --model and --view.
     std::vector<std::string> views;
+    // Chapter-specific on/off options, each with its --help line: {"fxaa", "anti-alias with FXAA"}.
+    std::vector<std::pair<std::string, std::string>> switches = {};
 };
 
 // Parses argv; throws InputError with a one-line message on any bad argument.

@@ -43,13 +43,30 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
     return false;
 }
 
-Candidate inspect(VkPhysicalDevice physical, VkSurfaceKHR surface) {
+// The first feature in `wanted` the device lacks, or nullptr.
+const char* missingFeature(VkPhysicalDevice physical, const DeviceFeatures& wanted) {
+    VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                         .pNext = &v13};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &v12};
+    vkGetPhysicalDeviceFeatures2(physical, &features);
+    if (wanted.dynamicRendering && !v13.dynamicRendering) return "dynamicRendering";
+    if (wanted.synchronization2 && !v13.synchronization2) return "synchronization2";
+    if (wanted.scalarBlockLayout && !v12.scalarBlockLayout) return "scalarBlockLayout";
+    return nullptr;
+}
+
+Candidate inspect(VkPhysicalDevice physical, VkSurfaceKHR surface, const DeviceFeatures& wanted) {
     Candidate candidate{physical, {}, 0, {}};
     vkGetPhysicalDeviceProperties(physical, &candidate.properties);
     if (candidate.properties.apiVersion < VK_API_VERSION_1_3) {
         candidate.unsuitable = "it supports Vulkan 1." +
                                std::to_string(VK_API_VERSION_MINOR(candidate.properties.apiVersion)) +
                                ", not 1.3";
+        return candidate;
+    }
+    if (const char* missing = missingFeature(physical, wanted)) {
+        candidate.unsuitable = std::string("it lacks the ") + missing + " feature";
         return candidate;
     }
     if (surface != VK_NULL_HANDLE && !hasDeviceExtension(physical, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
@@ -82,7 +99,8 @@ std::string lowercase(std::string_view text) {
     return result;
 }
 
-Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter) {
+Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter,
+                 const DeviceFeatures& wanted) {
     uint32_t count = 0;
     VK_CHECK(vkEnumeratePhysicalDevices(instance.handle, &count, nullptr));
     std::vector<VkPhysicalDevice> physicals(count);
@@ -91,7 +109,7 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
         throw Failure("no Vulkan device found (Debian/Ubuntu: apt-get install mesa-vulkan-drivers)");
 
     std::vector<Candidate> candidates;
-    for (VkPhysicalDevice physical : physicals) candidates.push_back(inspect(physical, surface));
+    for (VkPhysicalDevice physical : physicals) candidates.push_back(inspect(physical, surface, wanted));
 
     std::string all;
     for (const Candidate& c : candidates)
@@ -118,8 +136,9 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
 
 }  // namespace
 
-Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter) {
-    Candidate chosen = choose(instance, surface, nameFilter);
+Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter,
+                    const DeviceFeatures& features) {
+    Candidate chosen = choose(instance, surface, nameFilter, features);
     Device device;
     device.physical = chosen.physical;
     device.properties = chosen.properties;
@@ -139,8 +158,16 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         .queueCount = 1,
         .pQueuePriorities = &priority,
     };
+    // Exactly the features asked for, no more: what a chapter uses is what it enables.
+    VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                         .synchronization2 = features.synchronization2,
+                                         .dynamicRendering = features.dynamicRendering};
+    VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                         .pNext = &v13,
+                                         .scalarBlockLayout = features.scalarBlockLayout};
     VkDeviceCreateInfo createInfo{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+        .pNext = &v12,
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queueInfo,
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),

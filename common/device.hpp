@@ -20,11 +20,19 @@ struct Device {
     VkCommandPool oneTimePool = VK_NULL_HANDLE;  // transient command buffers: beginOneTimeCommands()
 };
 
+// Optional features a chapter needs; a device without one of them is not chosen.
+struct DeviceFeatures {
+    bool dynamicRendering = false;   // chapter-14 on: vkCmdBeginRendering instead of render passes
+    bool synchronization2 = false;   // chapter-14 on: vkCmdPipelineBarrier2, vkQueueSubmit2
+    bool scalarBlockLayout = false;  // chapter-15: C-like struct layout in storage buffers
+};
+
 // Picks a device with Vulkan 1.3 and a graphics queue (that can also present to `surface`, when
 // there is one), preferring discrete > integrated > virtual > CPU. `nameFilter`, when not empty,
 // selects by case-insensitive substring of the device name; no match is an InputError that lists
 // the devices there are.
-Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter);
+Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter,
+                    const DeviceFeatures& features = {});
 void destroyDevice(Device& device);
 
 }  // namespace common

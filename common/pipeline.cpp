@@ -110,12 +110,14 @@ void destroyPipelineCache(const Device& device, PipelineCache& cache) {
     cache = {};
 }
 
-VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module) {
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module,
+                                            const VkSpecializationInfo* specialization) {
     return {
         .sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
         .stage = stage,
         .module = module,
         .pName = "main",
+        .pSpecializationInfo = specialization,
     };
 }
 

@@ -24,7 +24,9 @@ PipelineCache loadPipelineCache(const Device& device, std::string_view name);
 void savePipelineCache(const Device& device, const PipelineCache& cache);
 void destroyPipelineCache(const Device& device, PipelineCache& cache);
 
-VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module);
+// `specialization`, when given, sets the stage's constant_id constants (it must outlive pipeline creation).
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module,
+                                            const VkSpecializationInfo* specialization = nullptr);
 
 // Everything that differs between the pipelines of these chapters; the rest is fixed: one
 // sample, fill mode, no blending, and viewport + scissor set at record time (so a resize does

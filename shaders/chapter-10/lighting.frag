@@ -1,6 +1,8 @@
 #version 450
 // chapter-10 lighting pass: no lighting yet (it arrives in chapter-15). The final image is the
 // albedo, as in the book; --view depth shows the depth attachment instead.
+#extension GL_GOOGLE_include_directive : require
+#include "depth_view.glsl"
 
 //> lighting-frag
 layout(location = 0) in vec2 inUv;
@@ -18,12 +20,7 @@ layout(push_constant) uniform Show {
 
 void main() {
     if (show.view == 2) {
-        // Depth 0..1 back to eye distance (a perspective projection with depth 0..1), then a
-        // logarithmic grey scale: near is white, the far plane (the clear value) black.
-        float depth = texture(depthAttachment, inUv).r;
-        float distance = show.near * show.far / (show.far - depth * (show.far - show.near));
-        float grey = 1.0 - log(distance / show.near) / log(show.far / show.near);
-        outColor = vec4(vec3(grey), 1.0);
+        outColor = vec4(vec3(depthToGrey(texture(depthAttachment, inUv).r, show.near, show.far)), 1.0);
     } else {
         outColor = vec4(texture(albedoAttachment, inUv).rgb, 1.0);
     }

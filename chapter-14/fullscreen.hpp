@@ -1,0 +1,24 @@
+// chapter-14: a pipeline that draws the full-screen triangle into one colour attachment with
+// dynamic rendering -- what the light and post passes have in common.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "common/device.hpp"
+
+struct FullscreenPipeline {
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+// `fragment` names a shader under shaders/ (e.g. "chapter-14/light.frag"); one descriptor set,
+// `pushConstantSize` bytes of fragment push constants (0 for none).
+FullscreenPipeline createFullscreenPipeline(const common::Device& device, VkPipelineCache cache,
+                                            const char* fragment, VkFormat outputFormat,
+                                            VkDescriptorSetLayout setLayout, uint32_t pushConstantSize,
+                                            const VkSpecializationInfo* specialization = nullptr);
+void destroyFullscreenPipeline(const common::Device& device, FullscreenPipeline& pipeline);
+
+// Begins rendering into `view` (contents not loaded: the triangle covers every pixel) and sets
+// the flipped viewport and the scissor.
+void beginFullscreen(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent);

@@ -1,0 +1,99 @@
+// chapter-14: the light pass.
+#include "light_pass.hpp"
+
+#include "barriers.hpp"
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+
+namespace {
+
+common::Image createOutput(const common::Device& device, VkExtent2D extent) {
+    return common::createImage(device, extent, kLightOutputFormat,
+                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                               VK_IMAGE_ASPECT_COLOR_BIT);
+}
+
+// The G-buffer attachments, one binding each in attachment order, then depth.
+void writeAttachments(const common::Device& device, LightPass& pass, const GBuffer& gbuffer) {
+    uint32_t binding = 0;
+    for (const common::Image& color : gbuffer.colors)
+        common::writeImageDescriptor(device, pass.attachmentsSet, binding++, pass.sampler, color.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    common::writeImageDescriptor(device, pass.attachmentsSet, binding, pass.sampler, gbuffer.depth.view,
+                                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+}
+
+}  // namespace
+
+LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                          const GBuffer& gbuffer) {
+    LightPass pass;
+    pass.output = createOutput(device, extent);
+    static_assert(kGBufferColorFormats.size() == 1,
+                  "light.frag samples albedo (binding 0) and depth (binding 1)");
+    pass.attachmentsLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    // One texel per pixel: nearest filtering, which depth formats always support.
+    VkSamplerCreateInfo samplerInfo{
+        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+        .magFilter = VK_FILTER_NEAREST,
+        .minFilter = VK_FILTER_NEAREST,
+        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+    };
+    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    writeAttachments(device, pass, gbuffer);
+    pass.pipeline = createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,
+                                             pass.attachmentsLayout, sizeof(LightView));
+    return pass;
+}
+
+void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
+                     const GBuffer& gbuffer) {
+    common::destroyImage(device, pass.output);
+    pass.output = createOutput(device, extent);
+    writeAttachments(device, pass, gbuffer);
+}
+
+//> record-light
+void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView& view) {
+    // renderInit: the output to ATTACHMENT_OPTIMAL, once the previous frame's post pass has
+    // finished sampling it (write after read).
+    VkImageMemoryBarrier2 init = imageBarrier(
+        pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    pipelineBarrier(cmd, &init, 1);
+
+    beginFullscreen(cmd, pass.output.view, pass.output.extent);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 1,
+                            &pass.attachmentsSet, 0, nullptr);
+    vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+
+    // renderFinish: to READ_ONLY_OPTIMAL, the writes visible to the post pass's fragment shader.
+    VkImageMemoryBarrier2 finish =
+        imageBarrier(pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    pipelineBarrier(cmd, &finish, 1);
+}
+//< record-light
+
+void destroyLightPass(const common::Device& device, LightPass& pass) {
+    destroyFullscreenPipeline(device, pass.pipeline);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.attachmentsLayout, nullptr);
+    common::destroyImage(device, pass.output);
+    pass = {};
+}

@@ -1,0 +1,113 @@
+// chapter-14: the post pass.
+#include "post_pass.hpp"
+
+#include "barriers.hpp"
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+#include "light_pass.hpp"
+
+namespace {
+
+bool isSrgb(VkFormat format) {
+    return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB ||
+           format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+}
+
+}  // namespace
+
+PostPass createPostPass(const common::Device& device, VkPipelineCache cache, VkFormat targetFormat,
+                        const common::Image& lightOutput) {
+    PostPass pass;
+    pass.inputLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
+    pass.inputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
+
+    // FXAA's taps between texels need linear filtering, optional for 32-bit float formats.
+    // SHORTCUT: where it is missing, FXAA runs on nearest samples and smooths less.
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device.physical, kLightOutputFormat, &properties);
+    VkFilter filter = (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
+                          ? VK_FILTER_LINEAR
+                          : VK_FILTER_NEAREST;
+    VkSamplerCreateInfo samplerInfo{
+        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+        .magFilter = filter,
+        .minFilter = filter,
+        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+    };
+    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    resizePostPass(device, pass, lightOutput);
+
+    //> post-specialization
+    // Two variants of one shader: constant_id 0 switches FXAA, constant_id 1 the sRGB encoding
+    // (only needed when the target format is not _SRGB, i.e. the hardware does not encode).
+    struct Constants {
+        VkBool32 fxaa;
+        VkBool32 encodeSrgb;
+    };
+    std::array<VkSpecializationMapEntry, 2> entries{{
+        {0, offsetof(Constants, fxaa), sizeof(VkBool32)},
+        {1, offsetof(Constants, encodeSrgb), sizeof(VkBool32)},
+    }};
+    for (uint32_t fxaa = 0; fxaa < 2; ++fxaa) {
+        Constants constants{fxaa, isSrgb(targetFormat) ? VK_FALSE : VK_TRUE};
+        VkSpecializationInfo specialization{
+            .mapEntryCount = uint32_t(entries.size()),
+            .pMapEntries = entries.data(),
+            .dataSize = sizeof(constants),
+            .pData = &constants,
+        };
+        pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "chapter-14/post.frag", targetFormat,
+                                                        pass.inputLayout, 0, &specialization);
+    }
+    //< post-specialization
+    return pass;
+}
+
+void resizePostPass(const common::Device& device, PostPass& pass, const common::Image& lightOutput) {
+    common::writeImageDescriptor(device, pass.inputSet, 0, pass.sampler, lightOutput.view,
+                                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+}
+
+//> record-post
+void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const common::Target& target,
+                    uint32_t imageIndex, bool fxaa) {
+    VkImage image = target.images[imageIndex];
+    // renderInit: the target image to ATTACHMENT_OPTIMAL. The submission waits for the image at
+    // COLOR_ATTACHMENT_OUTPUT; starting the transition at that same stage chains it to the wait.
+    VkImageMemoryBarrier2 init = imageBarrier(
+        image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    pipelineBarrier(cmd, &init, 1);
+
+    const FullscreenPipeline& pipeline = pass.pipelines[fxaa ? 1 : 0];
+    beginFullscreen(cmd, target.views[imageIndex], target.extent);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout, 0, 1, &pass.inputSet, 0,
+                            nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+
+    // renderFinish: to the layout the target presents from. Nothing later in this command buffer
+    // touches it; the submission's signal covers the rest.
+    VkImageMemoryBarrier2 finish =
+        imageBarrier(image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                     target.presentLayout, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+    pipelineBarrier(cmd, &finish, 1);
+}
+//< record-post
+
+void destroyPostPass(const common::Device& device, PostPass& pass) {
+    for (FullscreenPipeline& pipeline : pass.pipelines) destroyFullscreenPipeline(device, pipeline);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.inputLayout, nullptr);
+    pass = {};
+}

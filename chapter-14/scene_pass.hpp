@@ -1,0 +1,51 @@
+// chapter-14: the scene pass -- the scene into the G-buffer with dynamic rendering: no render
+// pass and no framebuffer, layout transitions by barriers before and after. The book's RenderScn
+// (chapter 14).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/buffer.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/image.hpp"
+
+// The G-buffer's colour attachments, in attachment order (only albedo until chapter-15), and depth.
+inline constexpr std::array<VkFormat, 1> kGBufferColorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+// One G-buffer shared by all frames in flight: the barriers of renderInit order a frame's writes
+// after the previous frame's reads.
+struct GBuffer {
+    std::vector<common::Image> colors;  // kGBufferColorFormats
+    common::Image depth;
+};
+
+struct ScenePass {
+    GBuffer gbuffer;
+    VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
+    VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
+    VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;    // set 2: one per texture
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    std::vector<common::Buffer> cameras;
+    std::vector<VkDescriptorSet> cameraSets;
+    common::Buffer materials;
+    VkDescriptorSet materialsSet = VK_NULL_HANDLE;
+    std::vector<VkDescriptorSet> textureSets;
+    VkSampler sampler = VK_NULL_HANDLE;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                          const common::GpuScene& scene, uint32_t framesInFlight);
+void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
+void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
+void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
+                     uint32_t frame);
+void destroyScenePass(const common::Device& device, ScenePass& pass);
