@@ -1,7 +1,7 @@
 // chapter-14: the light pass.
 #include "light_pass.hpp"
 
-#include "barriers.hpp"
+#include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 
@@ -49,8 +49,9 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     };
     VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
     writeAttachments(device, pass, gbuffer);
-    pass.pipeline = createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,
-                                             pass.attachmentsLayout, sizeof(LightView));
+    pass.pipeline =
+        common::createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,
+                                         pass.attachmentsLayout, sizeof(LightView));
     return pass;
 }
 
@@ -65,13 +66,13 @@ void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D e
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView& view) {
     // renderInit: the output to ATTACHMENT_OPTIMAL, once the previous frame's post pass has
     // finished sampling it (write after read).
-    VkImageMemoryBarrier2 init = imageBarrier(
+    VkImageMemoryBarrier2 init = common::imageBarrier(
         pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
         VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    pipelineBarrier(cmd, &init, 1);
+    common::pipelineBarrier(cmd, &init, 1);
 
-    beginFullscreen(cmd, pass.output.view, pass.output.extent);
+    common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 1,
                             &pass.attachmentsSet, 0, nullptr);
@@ -80,17 +81,17 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView
     vkCmdEndRendering(cmd);
 
     // renderFinish: to READ_ONLY_OPTIMAL, the writes visible to the post pass's fragment shader.
-    VkImageMemoryBarrier2 finish =
-        imageBarrier(pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    pipelineBarrier(cmd, &finish, 1);
+    VkImageMemoryBarrier2 finish = common::imageBarrier(
+        pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    common::pipelineBarrier(cmd, &finish, 1);
 }
 //< record-light
 
 void destroyLightPass(const common::Device& device, LightPass& pass) {
-    destroyFullscreenPipeline(device, pass.pipeline);
+    common::destroyFullscreenPipeline(device, pass.pipeline);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.attachmentsLayout, nullptr);

@@ -6,8 +6,8 @@
 #include <vulkan/vulkan.h>
 
 #include "common/device.hpp"
+#include "common/fullscreen.hpp"
 #include "common/image.hpp"
-#include "fullscreen.hpp"
 #include "scene_pass.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -25,7 +25,7 @@ struct LightPass {
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkDescriptorSet attachmentsSet = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;
-    FullscreenPipeline pipeline;
+    common::FullscreenPipeline pipeline;
 };
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,

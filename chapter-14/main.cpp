@@ -22,11 +22,11 @@
 #include "common/gpu_scene.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
+#include "common/post_pass.hpp"
 #include "common/scene.hpp"
 #include "common/screenshot.hpp"
 #include "common/target.hpp"
 #include "light_pass.hpp"
-#include "post_pass.hpp"
 #include "scene_pass.hpp"
 
 namespace {
@@ -63,7 +63,8 @@ void run(const common::Options& options) {
     ScenePass scenePass =
         createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
     LightPass lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer);
-    PostPass postPass = createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
+    common::PostPass postPass =
+        common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 
     common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
     common::CameraInput cameraInput;
@@ -76,7 +77,7 @@ void run(const common::Options& options) {
         if (!common::recreateTargetImages(target, device)) return false;  // waits for the device
         resizeScenePass(device, scenePass, target.extent);
         resizeLightPass(device, lightPass, target.extent, scenePass.gbuffer);
-        resizePostPass(device, postPass, lightPass.output);
+        common::resizePostPass(device, postPass, lightPass.output);
         return true;
     };
     //< resize
@@ -121,7 +122,7 @@ void run(const common::Options& options) {
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
         recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
         recordLightPass(sync.commandBuffer, lightPass, lightView);
-        recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
@@ -165,7 +166,7 @@ void run(const common::Options& options) {
 
     //> teardown
     common::savePipelineCache(device, pipelineCache);
-    destroyPostPass(device, postPass);
+    common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);
     destroyScenePass(device, scenePass);
     common::destroyPipelineCache(device, pipelineCache);

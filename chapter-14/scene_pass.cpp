@@ -3,7 +3,7 @@
 
 #include <cstring>
 
-#include "barriers.hpp"
+#include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -137,16 +137,16 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
     for (const common::Image& color : gbuffer.colors)
-        barriers.push_back(imageBarrier(
+        barriers.push_back(common::imageBarrier(
             color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
-    barriers.push_back(imageBarrier(
+    barriers.push_back(common::imageBarrier(
         gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
         VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT));
-    pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
+    common::pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
 }
 
 // After drawing: every attachment to READ_ONLY_OPTIMAL, its writes made visible to the light
@@ -154,17 +154,17 @@ void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 void renderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
     for (const common::Image& color : gbuffer.colors)
-        barriers.push_back(
-            imageBarrier(color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
-    barriers.push_back(
-        imageBarrier(gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
-    pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
+        barriers.push_back(common::imageBarrier(
+            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    barriers.push_back(common::imageBarrier(
+        gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    common::pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
 }
 //< scene-render-init
 

@@ -1,8 +1,11 @@
-// chapter-14: one image layout transition as a VkImageMemoryBarrier2. Every call site names its
-// stages, accesses and layouts; this only fills in the rest of the struct.
+// One image layout transition as a VkImageMemoryBarrier2 (synchronization2, introduced in
+// chapter-14). Every call site names its stages, accesses and layouts; this only fills in the
+// rest of the struct.
 #pragma once
 
 #include <vulkan/vulkan.h>
+
+namespace common {
 
 //> barrier
 inline VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageAspectFlags aspect, VkImageLayout oldLayout,
@@ -33,3 +36,5 @@ inline void pipelineBarrier(VkCommandBuffer cmd, const VkImageMemoryBarrier2* ba
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 //< barrier
+
+}  // namespace common

@@ -1,5 +1,5 @@
 #version 450
-// chapter-14 light and post passes: the full-screen triangle.
+// The full-screen triangle of the light and post passes (chapters 14 and 15).
 #extension GL_GOOGLE_include_directive : require
 #include "fullscreen_triangle.glsl"
 

@@ -1,13 +1,15 @@
-// chapter-14: full-screen pipelines.
-#include "fullscreen.hpp"
+// Full-screen pipelines.
+#include "common/fullscreen.hpp"
 
 #include "common/check.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
 
-FullscreenPipeline createFullscreenPipeline(const common::Device& device, VkPipelineCache cache,
-                                            const char* fragment, VkFormat outputFormat,
-                                            VkDescriptorSetLayout setLayout, uint32_t pushConstantSize,
+namespace common {
+
+FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCache cache, const char* fragment,
+                                            VkFormat outputFormat, VkDescriptorSetLayout setLayout,
+                                            uint32_t pushConstantSize,
                                             const VkSpecializationInfo* specialization) {
     FullscreenPipeline result;
     VkPushConstantRange range{
@@ -26,13 +28,13 @@ FullscreenPipeline createFullscreenPipeline(const common::Device& device, VkPipe
         .colorAttachmentCount = 1,
         .pColorAttachmentFormats = &outputFormat,
     };
-    VkShaderModule vertexModule = common::loadShaderModule(device, "chapter-14/fullscreen.vert");
-    VkShaderModule fragmentModule = common::loadShaderModule(device, fragment);
-    result.pipeline = common::createGraphicsPipeline(
+    VkShaderModule vertexModule = loadShaderModule(device, "common/fullscreen.vert");
+    VkShaderModule fragmentModule = loadShaderModule(device, fragment);
+    result.pipeline = createGraphicsPipeline(
         device, cache,
         {
-            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertexModule),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragmentModule, specialization)},
+            .stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertexModule),
+                       shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragmentModule, specialization)},
             .vertexInput = nullptr,  // the triangle comes from gl_VertexIndex
             .colorAttachmentCount = 1,
             .layout = result.layout,
@@ -43,7 +45,7 @@ FullscreenPipeline createFullscreenPipeline(const common::Device& device, VkPipe
     return result;
 }
 
-void destroyFullscreenPipeline(const common::Device& device, FullscreenPipeline& pipeline) {
+void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline) {
     vkDestroyPipeline(device.handle, pipeline.pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pipeline.layout, nullptr);
     pipeline = {};
@@ -70,3 +72,5 @@ void beginFullscreen(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent) {
     VkRect2D scissor{{0, 0}, extent};
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
+
+}  // namespace common

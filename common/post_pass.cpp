@@ -1,11 +1,13 @@
-// chapter-14: the post pass.
-#include "post_pass.hpp"
+// The post pass.
+#include "common/post_pass.hpp"
 
-#include "barriers.hpp"
+#include <cstddef>
+
+#include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
-#include "light_pass.hpp"
 
+namespace common {
 namespace {
 
 bool isSrgb(VkFormat format) {
@@ -15,20 +17,18 @@ bool isSrgb(VkFormat format) {
 
 }  // namespace
 
-PostPass createPostPass(const common::Device& device, VkPipelineCache cache, VkFormat targetFormat,
-                        const common::Image& lightOutput) {
+PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
+                        const Image& lightOutput) {
     PostPass pass;
-    pass.inputLayout = common::createDescriptorSetLayout(
-        device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
-    pass.descriptorPool =
-        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
-    pass.inputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
+    pass.inputLayout = createDescriptorSetLayout(
+        device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.descriptorPool = createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
+    pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
 
     // FXAA's taps between texels need linear filtering, optional for 32-bit float formats.
     // SHORTCUT: where it is missing, FXAA runs on nearest samples and smooths less.
     VkFormatProperties properties;
-    vkGetPhysicalDeviceFormatProperties(device.physical, kLightOutputFormat, &properties);
+    vkGetPhysicalDeviceFormatProperties(device.physical, lightOutput.format, &properties);
     VkFilter filter = (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
                           ? VK_FILTER_LINEAR
                           : VK_FILTER_NEAREST;
@@ -62,21 +62,21 @@ PostPass createPostPass(const common::Device& device, VkPipelineCache cache, VkF
             .dataSize = sizeof(constants),
             .pData = &constants,
         };
-        pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "chapter-14/post.frag", targetFormat,
+        pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "common/post.frag", targetFormat,
                                                         pass.inputLayout, 0, &specialization);
     }
     //< post-specialization
     return pass;
 }
 
-void resizePostPass(const common::Device& device, PostPass& pass, const common::Image& lightOutput) {
-    common::writeImageDescriptor(device, pass.inputSet, 0, pass.sampler, lightOutput.view,
-                                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutput) {
+    writeImageDescriptor(device, pass.inputSet, 0, pass.sampler, lightOutput.view,
+                         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
 }
 
 //> record-post
-void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const common::Target& target,
-                    uint32_t imageIndex, bool fxaa) {
+void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
+                    bool fxaa) {
     VkImage image = target.images[imageIndex];
     // renderInit: the target image to ATTACHMENT_OPTIMAL. The submission waits for the image at
     // COLOR_ATTACHMENT_OUTPUT; starting the transition at that same stage chains it to the wait.
@@ -104,10 +104,12 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const common::Tar
 }
 //< record-post
 
-void destroyPostPass(const common::Device& device, PostPass& pass) {
+void destroyPostPass(const Device& device, PostPass& pass) {
     for (FullscreenPipeline& pipeline : pass.pipelines) destroyFullscreenPipeline(device, pipeline);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.inputLayout, nullptr);
     pass = {};
 }
+
+}  // namespace common

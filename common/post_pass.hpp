@@ -1,0 +1,32 @@
+// The post pass: a light pass's output into the presentation image -- optional FXAA, clamped,
+// sRGB-correct. Introduced by chapter-14 (the book's RenderPost) and used unchanged by chapter-15.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+
+#include "common/device.hpp"
+#include "common/fullscreen.hpp"
+#include "common/image.hpp"
+#include "common/target.hpp"
+
+namespace common {
+
+struct PostPass {
+    VkDescriptorSetLayout inputLayout = VK_NULL_HANDLE;
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkDescriptorSet inputSet = VK_NULL_HANDLE;
+    VkSampler sampler = VK_NULL_HANDLE;
+    std::array<FullscreenPipeline, 2> pipelines;  // [0] without FXAA, [1] with (specialization constants)
+};
+
+// `lightOutput` is sampled in READ_ONLY_OPTIMAL; it must be filterable linearly for the best FXAA.
+PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
+                        const Image& lightOutput);
+void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutput);
+void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
+                    bool fxaa);
+void destroyPostPass(const Device& device, PostPass& pass);
+
+}  // namespace common
