@@ -14,7 +14,7 @@ common::Image createOutput(const common::Device& device, VkExtent2D extent) {
 }
 
 // The G-buffer attachments, one binding each in attachment order, then depth.
-void writeAttachments(const common::Device& device, LightPass& pass, const GBuffer& gbuffer) {
+void writeAttachments(const common::Device& device, LightPass& pass, const common::GBuffer& gbuffer) {
     uint32_t binding = 0;
     for (const common::Image& color : gbuffer.colors)
         common::writeImageDescriptor(device, pass.attachmentsSet, binding++, pass.sampler, color.view,
@@ -26,7 +26,7 @@ void writeAttachments(const common::Device& device, LightPass& pass, const GBuff
 }  // namespace
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const GBuffer& gbuffer) {
+                          const common::GBuffer& gbuffer) {
     LightPass pass;
     pass.output = createOutput(device, extent);
     static_assert(kGBufferColorFormats.size() == 1,
@@ -51,12 +51,12 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     writeAttachments(device, pass, gbuffer);
     pass.pipeline =
         common::createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,
-                                         pass.attachmentsLayout, sizeof(LightView));
+                                         {pass.attachmentsLayout}, sizeof(LightView));
     return pass;
 }
 
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
-                     const GBuffer& gbuffer) {
+                     const common::GBuffer& gbuffer) {
     common::destroyImage(device, pass.output);
     pass.output = createOutput(device, extent);
     writeAttachments(device, pass, gbuffer);

@@ -17,24 +17,6 @@ struct CameraUniform {
     glm::mat4 view;
 };
 
-GBuffer createGBuffer(const common::Device& device, VkExtent2D extent) {
-    GBuffer gbuffer;
-    for (VkFormat format : kGBufferColorFormats)
-        gbuffer.colors.push_back(common::createImage(
-            device, extent, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-            VK_IMAGE_ASPECT_COLOR_BIT));
-    gbuffer.depth = common::createImage(
-        device, extent, kDepthFormat,
-        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
-    return gbuffer;
-}
-
-void destroyGBuffer(const common::Device& device, GBuffer& gbuffer) {
-    for (common::Image& image : gbuffer.colors) common::destroyImage(device, image);
-    common::destroyImage(device, gbuffer.depth);
-    gbuffer = {};
-}
-
 void createDescriptors(const common::Device& device, ScenePass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createDescriptorSetLayout(
@@ -129,59 +111,20 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 }
 //< scene-pipeline
 
-//> scene-render-init
-// Before drawing: every attachment to ATTACHMENT_OPTIMAL. The old contents are cleared, so the
-// old layout is UNDEFINED; but the previous frame's light pass may still be sampling them in its
-// fragment shader, so the transition waits for that stage (a write-after-read hazard needs only
-// this execution dependency).
-void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
-    std::vector<VkImageMemoryBarrier2> barriers;
-    for (const common::Image& color : gbuffer.colors)
-        barriers.push_back(common::imageBarrier(
-            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
-    barriers.push_back(common::imageBarrier(
-        gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT));
-    common::pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
-}
-
-// After drawing: every attachment to READ_ONLY_OPTIMAL, its writes made visible to the light
-// pass's fragment shader (read after write).
-void renderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
-    std::vector<VkImageMemoryBarrier2> barriers;
-    for (const common::Image& color : gbuffer.colors)
-        barriers.push_back(common::imageBarrier(
-            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
-    barriers.push_back(common::imageBarrier(
-        gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
-    common::pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
-}
-//< scene-render-init
-
 }  // namespace
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight) {
     ScenePass pass;
-    pass.gbuffer = createGBuffer(device, extent);
+    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
     return pass;
 }
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
-    destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = createGBuffer(device, extent);
+    common::destroyGBuffer(device, pass.gbuffer);
+    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
@@ -192,38 +135,10 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 //> record-scene
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame) {
-    renderInit(cmd, pass.gbuffer);
-
-    // What a framebuffer and the render pass's attachment descriptions used to say, now given
-    // at record time: one VkRenderingAttachmentInfo per colour attachment, and the depth one.
-    std::vector<VkRenderingAttachmentInfo> colors;
-    for (const common::Image& color : pass.gbuffer.colors)
-        colors.push_back({
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = color.view,
-            .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}},
-        });
-    VkRenderingAttachmentInfo depth{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-        .imageView = pass.gbuffer.depth.view,
-        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the light pass reads it (--view depth, lighting)
-        .clearValue = {.depthStencil = {1.0f, 0}},
-    };
+    // renderInit: the attachments to ATTACHMENT_OPTIMAL, then rendering begins on them.
+    common::gbufferRenderInit(cmd, pass.gbuffer);
+    common::beginGBufferRendering(cmd, pass.gbuffer);
     VkExtent2D extent = pass.gbuffer.depth.extent;
-    VkRenderingInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-        .renderArea = {{0, 0}, extent},
-        .layerCount = 1,
-        .colorAttachmentCount = uint32_t(colors.size()),
-        .pColorAttachments = colors.data(),
-        .pDepthAttachment = &depth,
-    };
-    vkCmdBeginRendering(cmd, &rendering);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
@@ -248,7 +163,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     }
 
     vkCmdEndRendering(cmd);
-    renderFinish(cmd, pass.gbuffer);
+    common::gbufferRenderFinish(cmd, pass.gbuffer);  // renderFinish: to READ_ONLY_OPTIMAL for the light pass
 }
 //< record-scene
 
@@ -262,6 +177,6 @@ void destroyScenePass(const common::Device& device, ScenePass& pass) {
     vkDestroyDescriptorSetLayout(device.handle, pass.textureLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.materialsLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.cameraLayout, nullptr);
-    destroyGBuffer(device, pass.gbuffer);
+    common::destroyGBuffer(device, pass.gbuffer);
     pass = {};
 }

@@ -12,6 +12,7 @@
 
 #include "common/buffer.hpp"
 #include "common/device.hpp"
+#include "common/gbuffer.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/image.hpp"
 
@@ -19,15 +20,8 @@
 inline constexpr std::array<VkFormat, 1> kGBufferColorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-// One G-buffer shared by all frames in flight: the barriers of renderInit order a frame's writes
-// after the previous frame's reads.
-struct GBuffer {
-    std::vector<common::Image> colors;  // kGBufferColorFormats
-    common::Image depth;
-};
-
 struct ScenePass {
-    GBuffer gbuffer;
+    common::GBuffer gbuffer;  // one, shared by all frames in flight (see common/gbuffer.hpp)
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
     VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;    // set 2: one per texture

@@ -8,7 +8,8 @@
 namespace common {
 
 FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCache cache, const char* fragment,
-                                            VkFormat outputFormat, VkDescriptorSetLayout setLayout,
+                                            VkFormat outputFormat,
+                                            const std::vector<VkDescriptorSetLayout>& setLayouts,
                                             uint32_t pushConstantSize,
                                             const VkSpecializationInfo* specialization) {
     FullscreenPipeline result;
@@ -16,8 +17,8 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
         .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = 0, .size = pushConstantSize};
     VkPipelineLayoutCreateInfo layoutInfo{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-        .setLayoutCount = 1,
-        .pSetLayouts = &setLayout,
+        .setLayoutCount = uint32_t(setLayouts.size()),
+        .pSetLayouts = setLayouts.data(),
         .pushConstantRangeCount = pushConstantSize ? 1u : 0u,
         .pPushConstantRanges = &range,
     };

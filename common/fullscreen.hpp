@@ -4,6 +4,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <vector>
+
 #include "common/device.hpp"
 
 namespace common {
@@ -14,13 +16,14 @@ struct FullscreenPipeline {
 };
 
 // `fragment` names a shader under shaders/ (e.g. "chapter-14/light.frag"); the vertex shader is
-// shaders/common/fullscreen.vert. One descriptor set,
+// shaders/common/fullscreen.vert. `setLayouts` are sets 0, 1, ...;
 // `pushConstantSize` bytes of fragment push constants (0 for none).
-FullscreenPipeline createFullscreenPipeline(const common::Device& device, VkPipelineCache cache,
-                                            const char* fragment, VkFormat outputFormat,
-                                            VkDescriptorSetLayout setLayout, uint32_t pushConstantSize,
+FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCache cache, const char* fragment,
+                                            VkFormat outputFormat,
+                                            const std::vector<VkDescriptorSetLayout>& setLayouts,
+                                            uint32_t pushConstantSize,
                                             const VkSpecializationInfo* specialization = nullptr);
-void destroyFullscreenPipeline(const common::Device& device, FullscreenPipeline& pipeline);
+void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline);
 
 // Begins rendering into `view` (contents not loaded: the triangle covers every pixel) and sets
 // the flipped viewport and the scissor.

@@ -125,7 +125,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
     std::map<std::filesystem::path, uint32_t> plainMaterials;  // per OBJ without overrides: its materials
     bool firstBounds = true;
 
-    for (const ModelInstance& instance : scene.models) {
+    for (uint32_t instanceIndex = 0; instanceIndex < scene.models.size(); ++instanceIndex) {
+        const ModelInstance& instance = scene.models[instanceIndex];
         const ModelData& model = loadObjModelCached(models, instance.file);
         if (!firstMesh.count(instance.file)) {
             firstMesh[instance.file] = uint32_t(gpu.meshes.size());
@@ -174,7 +175,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
         glm::mat4 matrix = instance.transform.matrix();
         for (size_t i = 0; i < model.meshes.size(); ++i) {
             gpu.draws.push_back(Draw{firstMesh[instance.file] + uint32_t(i),
-                                     materialBase + model.meshes[i].material, matrix});
+                                     materialBase + model.meshes[i].material, matrix, instanceIndex});
             gpu.triangles += model.meshes[i].indices.size() / 3;
         }
         for (int corner = 0; corner < 8; ++corner) {

@@ -39,6 +39,7 @@ struct Draw {
     uint32_t mesh = 0;
     uint32_t material = 0;
     glm::mat4 model{1.0f};
+    uint32_t instance = 0;  // index of the scene's ModelInstance it draws (to move it later)
 };
 
 struct GpuScene {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -47,13 +49,19 @@ void checkNumbers(const std::filesystem::path& file, int lineNumber, std::istrin
     }
 }
 
-void checkMtlNumbers(const std::filesystem::path& mtl) {
+// The keys each material of an MTL file states (tinyobjloader cannot tell a missing Pr from Pr 0),
+// after checking their numbers.
+using MaterialKeys = std::map<std::string, std::set<std::string>>;
+
+void checkMtl(const std::filesystem::path& mtl, MaterialKeys& keys) {
     std::ifstream in(mtl);
-    std::string line;
+    std::string line, material;
     for (int number = 1; std::getline(in, line); ++number) {
         std::istringstream tokens(line);
         std::string key;
         tokens >> key;
+        if (key == "newmtl") tokens >> material;
+        keys[material].insert(key);
         if (key == "Kd" || key == "Ka" || key == "Ks") checkNumbers(mtl, number, tokens, key, 3, 0);
         if (key == "d" || key == "Tr" || key == "Pr" || key == "Pm" || key == "Ns")
             checkNumbers(mtl, number, tokens, key, 1, 0);
@@ -61,7 +69,8 @@ void checkMtlNumbers(const std::filesystem::path& mtl) {
 }
 
 // One pass over the OBJ text: the numbers of v / vn / vt lines, and the MTL files it names.
-void checkObjText(const std::filesystem::path& obj) {
+MaterialKeys checkObjText(const std::filesystem::path& obj) {
+    MaterialKeys keys;
     std::ifstream in(obj);
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
@@ -72,8 +81,9 @@ void checkObjText(const std::filesystem::path& obj) {
         if (key == "vn") checkNumbers(obj, number, tokens, key, 3, 0);
         if (key == "vt") checkNumbers(obj, number, tokens, key, 1, 2);
         if (key == "mtllib")
-            for (std::string file; tokens >> file;) checkMtlNumbers(obj.parent_path() / file);
+            for (std::string file; tokens >> file;) checkMtl(obj.parent_path() / file, keys);
     }
+    return keys;
 }
 
 std::filesystem::path texturePath(const std::filesystem::path& directory, const std::string& name) {
@@ -110,14 +120,16 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         throw InputError(path.string() + ": a material library it names cannot be read (" +
                          reader.Warning().substr(0, reader.Warning().find('\n')) + ")");
 
+    MaterialKeys stated = checkObjText(path);
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     ModelData model;
     for (const tinyobj::material_t& m : reader.GetMaterials()) {
         MaterialData material;
         material.name = m.name;
         material.diffuse = glm::vec4(m.diffuse[0], m.diffuse[1], m.diffuse[2], m.dissolve);
-        material.roughness = m.roughness;
-        material.metallic = m.metallic;
+        // Without Pr the book's default: fully rough (tinyobjloader would say 0, a mirror).
+        material.roughness = stated[m.name].count("Pr") ? m.roughness : 1.0f;
+        material.metallic = stated[m.name].count("Pm") ? m.metallic : 0.0f;
         material.diffuseTexture = texturePath(directory, m.diffuse_texname);
         material.normalTexture =
             texturePath(directory, m.normal_texname.empty() ? m.bump_texname : m.normal_texname);
@@ -126,7 +138,6 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         material.alphaTexture = texturePath(directory, m.alpha_texname);
         model.materials.push_back(material);
     }
-    checkObjText(path);
     uint32_t defaultMaterial = static_cast<uint32_t>(model.materials.size());
     model.materials.push_back(MaterialData{.name = "default"});  // faces without usemtl, or an unknown name
 

@@ -63,7 +63,7 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
             .pData = &constants,
         };
         pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "common/post.frag", targetFormat,
-                                                        pass.inputLayout, 0, &specialization);
+                                                        {pass.inputLayout}, 0, &specialization);
     }
     //< post-specialization
     return pass;

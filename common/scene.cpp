@@ -178,7 +178,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         for (size_t i = 0; i < root["lights"].size(); ++i) {
             const json& l = root["lights"][i];
             std::string where = "lights[" + std::to_string(i) + "]";
-            r.onlyKeys(l, where, {"type", "position", "direction", "color", "intensity"});
+            r.onlyKeys(l, where, {"type", "position", "direction", "color", "intensity", "marker"});
             Light light;
             std::string type = l.contains("type") ? r.string(l["type"], where + ".type") : "";
             if (type == "directional") {
@@ -199,6 +199,13 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (l.contains("color")) light.color = r.vector<3>(l["color"], where + ".color", 0.0f, kHuge);
             if (l.contains("intensity"))
                 light.intensity = r.number(l["intensity"], where + ".intensity", 0.0f, kHuge);
+            if (l.contains("marker")) {
+                if (light.type != Light::Type::Point)
+                    r.fail(where + ".marker", "only a point light has a marker");
+                float index = r.number(l["marker"], where + ".marker", 0.0f, float(scene.models.size() - 1));
+                if (index != std::floor(index)) r.fail(where + ".marker", "expected the index of a model");
+                light.marker = int(index);
+            }
             scene.lights.push_back(light);
         }
     }
@@ -251,6 +258,7 @@ std::string sceneToJson(const Scene& scene) {
         } else {
             light["type"] = "point";
             light["position"] = vec(l.position);
+            if (l.marker >= 0) light["marker"] = l.marker;
         }
         root["lights"].push_back(light);
     }

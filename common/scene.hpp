@@ -59,6 +59,7 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction the light travels
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
+    int marker = -1;  // point lights: index of the model that marks the light and moves with it
     bool operator==(const Light&) const = default;
 };
 

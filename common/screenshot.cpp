@@ -5,12 +5,15 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "common/buffer.hpp"
 #include "common/check.hpp"
 #include "common/commands.hpp"
+
+#include <glm/gtc/packing.hpp>
 
 namespace common {
 namespace {
@@ -50,13 +53,9 @@ VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLay
 
 }  // namespace
 
-void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
-                    VkImageLayout layout, const std::filesystem::path& path) {
-    int offsets[3];
-    if (!channelOffsets(format, offsets))
-        throw Failure("cannot take a screenshot of an image in format " + std::to_string(format));
-
-    VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * 4;
+std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D extent, VkImageLayout layout,
+                               uint32_t bytesPerTexel) {
+    VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * bytesPerTexel;
     Buffer readback =
         createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
@@ -90,11 +89,42 @@ void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExte
                          &toHost, 1, &back);
     submitOneTimeCommands(device, cmd);
 
-    const auto* texels = static_cast<const uint8_t*>(readback.mapped);
+    const auto* bytes = static_cast<const uint8_t*>(readback.mapped);
+    std::vector<uint8_t> texels(bytes, bytes + size);
+    destroyBuffer(device, readback);
+    return texels;
+}
+
+std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
+                                  VkImageLayout layout) {
+    size_t count = size_t{extent.width} * extent.height * 4;
+    std::vector<float> values(count);
+    if (format == VK_FORMAT_R32G32B32A32_SFLOAT) {
+        std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 16);
+        std::memcpy(values.data(), bytes.data(), bytes.size());
+    } else if (format == VK_FORMAT_R16G16B16A16_SFLOAT) {
+        std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 8);
+        for (size_t i = 0; i < count; ++i) {
+            uint16_t half;
+            std::memcpy(&half, bytes.data() + i * 2, 2);
+            values[i] = glm::unpackHalf1x16(half);
+        }
+    } else {
+        throw Failure("readFloatImage: unsupported format " + std::to_string(format));
+    }
+    return values;
+}
+
+void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
+                    VkImageLayout layout, const std::filesystem::path& path) {
+    int offsets[3];
+    if (!channelOffsets(format, offsets))
+        throw Failure("cannot take a screenshot of an image in format " + std::to_string(format));
+
+    std::vector<uint8_t> texels = readImage(device, image, extent, layout, 4);
     std::vector<uint8_t> rgb(size_t{extent.width} * extent.height * 3);
     for (size_t i = 0, n = size_t{extent.width} * extent.height; i < n; ++i)
-        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = texels[i * 4 + offsets[c]];
-    destroyBuffer(device, readback);
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = texels[i * 4 + size_t(offsets[c])];
 
     std::filesystem::path temporary = path;
     temporary += ".tmp" + std::to_string(getpid());

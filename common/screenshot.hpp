@@ -1,9 +1,12 @@
-// Reads a colour image back from the GPU and writes it as an 8-bit RGB PNG.
+// Reads colour images back from the GPU: as an 8-bit RGB PNG (--screenshot), or as floats (to
+// check a light pass's output for NaN, infinities and negative values).
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "common/device.hpp"
 
@@ -15,5 +18,14 @@ namespace common {
 // temporary file first and is renamed over `path`, so a failure never leaves half a file.
 void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
                     VkImageLayout layout, const std::filesystem::path& path);
+
+// The texels of a 2D colour image, tightly packed, after all earlier work on the queue. `image`
+// is in `layout` and stays in it.
+std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D extent, VkImageLayout layout,
+                               uint32_t bytesPerTexel);
+
+// An R32G32B32A32_SFLOAT or R16G16B16A16_SFLOAT image as 4 floats per texel.
+std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
+                                  VkImageLayout layout);
 
 }  // namespace common

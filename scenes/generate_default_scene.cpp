@@ -404,7 +404,8 @@ int main(int argc, char** argv) {
         scene.lights.push_back({.type = common::Light::Type::Point,
                                 .position = pointLight,
                                 .color = {0.0f, 1.0f, 0.0f},
-                                .intensity = 6.0f});
+                                .intensity = 6.0f,
+                                .marker = int(scene.models.size()) - 1});  // the cube, added last
         writeText(dir / "scene.json", common::sceneToJson(scene));
 
         size_t triangles =

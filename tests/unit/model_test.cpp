@@ -68,6 +68,20 @@ TEST(ObjLoader, ComputesNormalsWhenTheFileHasNone) {
     for (const common::Vertex& v : model.meshes[0].vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
 }
 
+TEST(ObjLoader, ReadsPbrKeysAndDefaultsWhatIsMissing) {
+    writeTemp("pbr.mtl", "newmtl stated\nKd 0.5 0.25 1\nd 0.75\nPr 0.3\nPm 1\nnewmtl bare\nKd 1 1 1\n");
+    auto path = writeTemp(
+        "pbr.obj",
+        "mtllib pbr.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl stated\nf 1 2 3\nusemtl bare\nf 1 3 2\n");
+    common::ModelData model = common::loadObjModel(path);
+    ASSERT_GE(model.materials.size(), 2u);
+    EXPECT_EQ(model.materials[0].diffuse, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+    EXPECT_FLOAT_EQ(model.materials[0].roughness, 0.3f);
+    EXPECT_FLOAT_EQ(model.materials[0].metallic, 1.0f);
+    EXPECT_FLOAT_EQ(model.materials[1].roughness, 1.0f);  // no Pr: fully rough, as the book
+    EXPECT_FLOAT_EQ(model.materials[1].metallic, 0.0f);
+}
+
 TEST(ObjLoader, RejectsBadInput) {
     EXPECT_THROW(common::loadObjModel(writeTemp("empty.obj", "")), common::InputError);
     EXPECT_THROW(common::loadObjModel(writeTemp("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")),

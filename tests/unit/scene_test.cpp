@@ -33,7 +33,8 @@ common::Scene everyField() {
     scene.lights.push_back({.type = common::Light::Type::Point,
                             .position = {5, 3.4f, 1.2f},
                             .color = {0, 1, 0},
-                            .intensity = 10.0f});
+                            .intensity = 10.0f,
+                            .marker = 1});
     return scene;
 }
 
@@ -95,6 +96,12 @@ TEST(SceneJson, RefusesBadFiles) {
         "lights[0].intensity");
     expectRefused(R"({"models": [{"file": "m.obj"}], "ambient": {"colour": [1, 1, 1]}})",
                   "unknown key 'colour'");
+    expectRefused(
+        R"({"models": [{"file": "m.obj"}], "lights": [{"type": "point", "position": [0, 0, 0], "marker": 1}]})",
+        "lights[0].marker: must be between 0 and 0");
+    expectRefused(
+        R"({"models": [{"file": "m.obj"}], "lights": [{"type": "directional", "direction": [0, -1, 0], "marker": 0}]})",
+        "lights[0].marker: only a point light has a marker");
     expectRefused(R"({"models": [{"file": "m.obj"}], "camera": {"position": [0, 0, 1e999]}})",
                   "number overflow");
 }

@@ -1,0 +1,100 @@
+// G-buffer attachments, their barriers and vkCmdBeginRendering.
+#include "common/gbuffer.hpp"
+
+#include "common/barriers.hpp"
+
+namespace common {
+
+GBuffer createGBuffer(const Device& device, VkExtent2D extent, std::span<const VkFormat> colorFormats,
+                      VkFormat depthFormat) {
+    GBuffer gbuffer;
+    for (VkFormat format : colorFormats)
+        gbuffer.colors.push_back(createImage(device, extent, format,
+                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                             VK_IMAGE_ASPECT_COLOR_BIT));
+    gbuffer.depth = createImage(device, extent, depthFormat,
+                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                VK_IMAGE_ASPECT_DEPTH_BIT);
+    return gbuffer;
+}
+
+void destroyGBuffer(const Device& device, GBuffer& gbuffer) {
+    for (Image& image : gbuffer.colors) destroyImage(device, image);
+    destroyImage(device, gbuffer.depth);
+    gbuffer = {};
+}
+
+//> gbuffer-render-init
+// Before drawing: every attachment to ATTACHMENT_OPTIMAL. The old contents are cleared, so the
+// old layout is UNDEFINED; but the previous frame's light pass may still be sampling them in its
+// fragment shader, so the transition waits for that stage (a write-after-read hazard needs only
+// this execution dependency).
+void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    std::vector<VkImageMemoryBarrier2> barriers;
+    for (const Image& color : gbuffer.colors)
+        barriers.push_back(imageBarrier(
+            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
+    barriers.push_back(imageBarrier(
+        gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT));
+    pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
+}
+
+// After drawing: every attachment to READ_ONLY_OPTIMAL, its writes made visible to the light
+// pass's fragment shader (read after write).
+void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    std::vector<VkImageMemoryBarrier2> barriers;
+    for (const Image& color : gbuffer.colors)
+        barriers.push_back(
+            imageBarrier(color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    barriers.push_back(
+        imageBarrier(gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
+}
+//< gbuffer-render-init
+
+//> gbuffer-begin-rendering
+void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    // What a framebuffer and the render pass's attachment descriptions used to say, now given
+    // at record time: one VkRenderingAttachmentInfo per colour attachment, and the depth one.
+    std::vector<VkRenderingAttachmentInfo> colors;
+    for (const Image& color : gbuffer.colors)
+        colors.push_back({
+            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+            .imageView = color.view,
+            .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}},
+        });
+    VkRenderingAttachmentInfo depth{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = gbuffer.depth.view,
+        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the light pass reads it (--view depth, lighting)
+        .clearValue = {.depthStencil = {1.0f, 0}},
+    };
+    VkRenderingInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+        .renderArea = {{0, 0}, gbuffer.depth.extent},
+        .layerCount = 1,
+        .colorAttachmentCount = uint32_t(colors.size()),
+        .pColorAttachments = colors.data(),
+        .pDepthAttachment = &depth,
+    };
+    vkCmdBeginRendering(cmd, &rendering);
+}
+//< gbuffer-begin-rendering
+
+}  // namespace common

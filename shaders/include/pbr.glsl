@@ -1,0 +1,95 @@
+// Cook-Torrance shading with the GGX distribution, the Smith-Schlick geometry term and
+// Fresnel-Schlick, for directional and point lights: the one source of truth for the shading
+// math. chapter-15's light pass includes it, and so do the numeric tests (a compute shader
+// compared against an fp64 CPU version of the same formulas).
+//
+// The formulas are the book's (chapter 15, after LearnOpenGL's "PBR: Lighting"), made robust so
+// that no input gives NaN, infinity or a negative value; docs/chapter-15.md states each change
+// and its reason:
+//   - perceptual roughness is clamped to 0.045 (Filament's MIN_PERCEPTUAL_ROUGHNESS): at 0 the
+//     GGX peak is infinite (0/0 at N = H);
+//   - 1 - NdotH^2 is computed as |N x H|^2 (Filament), which keeps its precision near NdotH = 1;
+//   - the Smith-Schlick G is divided by 4 NdotV NdotL in closed form, so no epsilon is needed
+//     (the book adds 0.0001 to the denominator, which biases grazing angles);
+//   - a light behind the surface (NdotL <= 0) contributes nothing and is skipped, as is a point
+//     light exactly at the shaded point; H falls back to N when V = -L;
+//   - the point-light falloff 1/d^2 is bounded by d >= 1 cm (Filament): 1/max(d^2, 1e-4);
+//   - the point light's direction is normalize(light - P). The book subtracts P twice.
+#ifndef PBR_GLSL
+#define PBR_GLSL
+
+//> pbr
+const float PI = 3.14159265358979;
+const float MIN_PERCEPTUAL_ROUGHNESS = 0.045;
+const float MIN_LIGHT_DISTANCE_SQUARED = 1.0e-4;
+
+// v / |v|, or `fallback` when v has no usable length (zero, or NaN).
+vec3 safeNormalize(vec3 v, vec3 fallback) {
+    float lengthSquared = dot(v, v);
+    return lengthSquared > 1.0e-24 ? v * inversesqrt(lengthSquared) : fallback;
+}
+
+// GGX / Trowbridge-Reitz normal distribution. roughness: perceptual (as stored), alpha = roughness^2.
+float distributionGGX(vec3 N, vec3 H, float NdotH, float roughness) {
+    vec3 NxH = cross(N, H);
+    float oneMinusNdotHSquared = dot(NxH, NxH);
+    float alpha = roughness * roughness;
+    float a = NdotH * alpha;
+    float k = alpha / (oneMinusNdotHSquared + a * a);
+    return k * k * (1.0 / PI);
+}
+
+// Smith's geometry term with Schlick-GGX for direct light, k = (roughness + 1)^2 / 8, divided by
+// the Cook-Torrance denominator 4 NdotV NdotL: G1(V) G1(L) / (4 NdotV NdotL) =
+// 1 / (4 (NdotV (1 - k) + k) (NdotL (1 - k) + k)), finite for all NdotV, NdotL >= 0.
+float visibilitySmithSchlick(float NdotV, float NdotL, float roughness) {
+    float r = roughness + 1.0;
+    float k = r * r / 8.0;
+    return 1.0 / (4.0 * (NdotV * (1.0 - k) + k) * (NdotL * (1.0 - k) + k));
+}
+
+vec3 fresnelSchlick(float cosTheta, vec3 F0) {
+    return F0 + (1.0 - F0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
+}
+
+// Light reflected towards V from light arriving along L (unit, towards the light) with
+// `radiance` (colour x intensity x attenuation): Cook-Torrance specular plus Lambert diffuse,
+// times NdotL. N and V are unit vectors.
+vec3 cookTorrance(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 albedo, float metallic, float roughness) {
+    float NdotL = dot(N, L);
+    if (!(NdotL > 0.0)) return vec3(0.0);  // behind the surface (also catches NaN)
+    NdotL = min(NdotL, 1.0);
+    vec3 H = safeNormalize(V + L, N);  // V = -L has no half vector
+    float NdotV = clamp(dot(N, V), 0.0, 1.0);
+    float NdotH = clamp(dot(N, H), 0.0, 1.0);
+    float HdotV = clamp(dot(H, V), 0.0, 1.0);
+    float r = clamp(roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+    float m = clamp(metallic, 0.0, 1.0);
+
+    vec3 F0 = mix(vec3(0.04), albedo, m);
+    vec3 F = fresnelSchlick(HdotV, F0);
+    vec3 specular = distributionGGX(N, H, NdotH, r) * visibilitySmithSchlick(NdotV, NdotL, r) * F;
+    vec3 kD = (vec3(1.0) - F) * (1.0 - m);  // what is not reflected is refracted; metals absorb it
+    return (kD * albedo / PI + specular) * radiance * NdotL;
+}
+
+// One light's contribution at worldPos. A directional light's `positionOrDirection` is the
+// direction the light travels; a point light's is its position.
+vec3 evaluateLight(bool directional, vec3 positionOrDirection, vec3 color, float intensity, vec3 worldPos, vec3 N,
+                   vec3 V, vec3 albedo, float metallic, float roughness) {
+    vec3 L;
+    float attenuation = 1.0;
+    if (directional) {
+        L = safeNormalize(-positionOrDirection, vec3(0.0));
+    } else {
+        vec3 toLight = positionOrDirection - worldPos;
+        float distanceSquared = dot(toLight, toLight);
+        if (!(distanceSquared > 0.0)) return vec3(0.0);  // the light is at the point: no direction
+        L = toLight * inversesqrt(distanceSquared);
+        attenuation = 1.0 / max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED);
+    }
+    return cookTorrance(N, V, L, color * intensity * attenuation, albedo, metallic, roughness);
+}
+//< pbr
+
+#endif
