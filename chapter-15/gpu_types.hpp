@@ -1,0 +1,43 @@
+// chapter-15: the structs C++ writes and the shaders read, the twins of
+// shaders/include/gpu_types.glsl. The static_asserts pin the layout this side; the layout test
+// (tests/layout_test.cpp) checks on the GPU that the shader reads every field where C++ put it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+//> gpu-types
+// Light in a scalar-layout storage buffer: 32 bytes, vec3 on 4-byte alignment.
+struct ShaderLight {
+    glm::vec3 position;  // a point light's position; a directional light's travel direction
+    uint32_t directional;
+    float intensity;
+    glm::vec3 color;
+};
+static_assert(sizeof(ShaderLight) == 32);
+static_assert(offsetof(ShaderLight, directional) == 12 && offsetof(ShaderLight, intensity) == 16 &&
+              offsetof(ShaderLight, color) == 20);
+
+// SceneInfo in a scalar-layout uniform buffer: 32 bytes.
+struct ShaderSceneInfo {
+    glm::vec3 cameraPosition;
+    float ambientIntensity;
+    glm::vec3 ambientColor;
+    uint32_t lightCount;
+};
+static_assert(sizeof(ShaderSceneInfo) == 32);
+static_assert(offsetof(ShaderSceneInfo, ambientIntensity) == 12 &&
+              offsetof(ShaderSceneInfo, ambientColor) == 16 && offsetof(ShaderSceneInfo, lightCount) == 28);
+
+// Material in a std430 storage buffer: 32 bytes.
+struct ShaderMaterial {
+    glm::vec4 diffuse;
+    float roughness;
+    float metallic;
+    float padding[2];
+};
+static_assert(sizeof(ShaderMaterial) == 32);
+static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20);
+//< gpu-types

@@ -1,0 +1,148 @@
+// chapter-15: the light pass.
+#include "light_pass.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "common/barriers.hpp"
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+#include "scene_pass.hpp"
+
+namespace {
+
+common::Image createOutput(const common::Device& device, VkExtent2D extent) {
+    // TRANSFER_SRC: --check-output copies it back to the CPU.
+    return common::createImage(
+        device, extent, kLightOutputFormat,
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+        VK_IMAGE_ASPECT_COLOR_BIT);
+}
+
+// Bindings 0-3: position, albedo, normal, PBR; binding 4: depth.
+void writeAttachments(const common::Device& device, LightPass& pass, const common::GBuffer& gbuffer) {
+    uint32_t binding = 0;
+    for (const common::Image& color : gbuffer.colors)
+        common::writeImageDescriptor(device, pass.attachmentsSet, binding++, pass.sampler, color.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    common::writeImageDescriptor(device, pass.attachmentsSet, binding, pass.sampler, gbuffer.depth.view,
+                                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+}
+
+}  // namespace
+
+LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity) {
+    LightPass pass;
+    pass.output = createOutput(device, extent);
+    static_assert(kGBufferColorFormats.size() == 4, "light.frag samples bindings 0-3 and depth at 4");
+    VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    pass.attachmentsLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+                 common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+                 common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+                 common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+                 common::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment)});
+    pass.lightsLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment)});
+    pass.sceneLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment)});
+    pass.descriptorPool = common::createDescriptorPool(device, 1 + 2 * framesInFlight,
+                                                       {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5},
+                                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
+                                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    VkSamplerCreateInfo samplerInfo{
+        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+        .magFilter = VK_FILTER_NEAREST,  // one texel per pixel; depth formats need not filter linearly
+        .minFilter = VK_FILTER_NEAREST,
+        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+    };
+    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    writeAttachments(device, pass, gbuffer);
+
+    //> light-buffers
+    // Lights and scene info change every frame (the keys move the lights, the camera moves):
+    // one host-visible buffer of each per frame in flight. The lights buffer holds exactly the
+    // scene's lights (one unused element when there are none: a buffer cannot be empty).
+    pass.lightCapacity = lightCapacity;
+    VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        pass.lights.push_back(common::createBuffer(device, std::max(lightCapacity, 1u) * sizeof(ShaderLight),
+                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hostVisible));
+        pass.scenes.push_back(common::createBuffer(device, sizeof(ShaderSceneInfo),
+                                                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible));
+        pass.lightSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.lightsLayout));
+        pass.sceneSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.sceneLayout));
+        common::writeBufferDescriptor(device, pass.lightSets.back(), 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                      pass.lights.back().handle, VK_WHOLE_SIZE);
+        common::writeBufferDescriptor(device, pass.sceneSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      pass.scenes.back().handle, sizeof(ShaderSceneInfo));
+    }
+    //< light-buffers
+
+    pass.pipeline = common::createFullscreenPipeline(
+        device, cache, "chapter-15/light.frag", kLightOutputFormat,
+        {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout}, sizeof(LightView));
+    return pass;
+}
+
+void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
+                     const common::GBuffer& gbuffer) {
+    common::destroyImage(device, pass.output);
+    pass.output = createOutput(device, extent);
+    writeAttachments(device, pass, gbuffer);
+}
+
+void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
+                  const ShaderSceneInfo& scene) {
+    std::memcpy(pass.lights[frame].mapped, lights.data(),
+                std::min<size_t>(lights.size(), pass.lightCapacity) * sizeof(ShaderLight));
+    ShaderSceneInfo info = scene;
+    info.lightCount = std::min<uint32_t>(uint32_t(lights.size()), pass.lightCapacity);
+    std::memcpy(pass.scenes[frame].mapped, &info, sizeof(info));
+}
+
+//> record-light
+void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view) {
+    VkImageMemoryBarrier2 init = common::imageBarrier(
+        pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    common::pipelineBarrier(cmd, &init, 1);
+
+    common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
+    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.lightSets[frame], pass.sceneSets[frame]};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0,
+                            nullptr);
+    vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+
+    VkImageMemoryBarrier2 finish = common::imageBarrier(
+        pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    common::pipelineBarrier(cmd, &finish, 1);
+}
+//< record-light
+
+void destroyLightPass(const common::Device& device, LightPass& pass) {
+    common::destroyFullscreenPipeline(device, pass.pipeline);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    for (common::Buffer& buffer : pass.scenes) common::destroyBuffer(device, buffer);
+    for (common::Buffer& buffer : pass.lights) common::destroyBuffer(device, buffer);
+    vkDestroyDescriptorSetLayout(device.handle, pass.sceneLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.lightsLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.attachmentsLayout, nullptr);
+    common::destroyImage(device, pass.output);
+    pass = {};
+}

@@ -1,0 +1,54 @@
+// chapter-15: the light pass -- Cook-Torrance lighting of the G-buffer by the scene's lights into
+// an R32G32B32A32_SFLOAT image; the post pass (common/post_pass.cpp) presents it. The book's
+// LightRender (chapter 15).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/buffer.hpp"
+#include "common/device.hpp"
+#include "common/fullscreen.hpp"
+#include "common/gbuffer.hpp"
+#include "common/image.hpp"
+#include "gpu_types.hpp"
+
+inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+// The fragment push constants: what to show.
+struct LightView {
+    glm::vec4 boundsMin;  // the scene's bounds, to show world positions as colours
+    glm::vec4 boundsMax;
+    int view = 0;  // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
+    float near = 0.1f;
+    float far = 100.0f;
+};
+
+struct LightPass {
+    common::Image output;
+    VkDescriptorSetLayout attachmentsLayout = VK_NULL_HANDLE;  // set 0: the G-buffer
+    VkDescriptorSetLayout lightsLayout = VK_NULL_HANDLE;       // set 1: lights, per frame
+    VkDescriptorSetLayout sceneLayout = VK_NULL_HANDLE;        // set 2: scene info, per frame
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkDescriptorSet attachmentsSet = VK_NULL_HANDLE;
+    std::vector<common::Buffer> lights;  // scalar layout, ShaderLight[lightCapacity]
+    std::vector<common::Buffer> scenes;  // scalar layout, ShaderSceneInfo
+    std::vector<VkDescriptorSet> lightSets, sceneSets;
+    uint32_t lightCapacity = 0;
+    VkSampler sampler = VK_NULL_HANDLE;
+    common::FullscreenPipeline pipeline;
+};
+
+// `lightCapacity`: the scene's number of lights (the buffers are sized from it).
+LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity);
+void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
+                     const common::GBuffer& gbuffer);
+// Writes this frame's lights and scene info (lights.size() <= lightCapacity).
+void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
+                  const ShaderSceneInfo& scene);
+void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view);
+void destroyLightPass(const common::Device& device, LightPass& pass);

@@ -1,0 +1,281 @@
+// chapter-15: deferred rendering II, PBR -- the book's chapter 15 in C++.
+//
+// chapter-14's frame with a full PBR G-buffer and real lighting:
+//   scene pass (scene_pass.cpp): world position, albedo, normal (normal maps through the TBN
+//     matrix) and AO/roughness/metallic into four R16G16B16A16_SFLOAT attachments, plus depth;
+//   light pass (light_pass.cpp): Cook-Torrance shading (shaders/include/pbr.glsl) of every pixel
+//     by the scene's directional and point lights, from a scalar-layout storage buffer, plus
+//     ambient light, into an R32G32B32A32_SFLOAT image;
+//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional.
+#include <vulkan/vulkan.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#include "common/camera.hpp"
+#include "common/check.hpp"
+#include "common/cli.hpp"
+#include "common/commands.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/instance.hpp"
+#include "common/pipeline.hpp"
+#include "common/post_pass.hpp"
+#include "common/scene.hpp"
+#include "common/screenshot.hpp"
+#include "common/target.hpp"
+#include "gpu_types.hpp"
+#include "light_pass.hpp"
+#include "scene_pass.hpp"
+
+namespace {
+
+const common::ChapterInfo kChapter{
+    "chapter-15",
+    "deferred rendering II: PBR G-buffer, normal maps, lights (the book's chapter 15)",
+    {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of light.frag's `view`
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
+     {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"}},
+};
+
+//> light-controls
+// The book's controls: Left/Right turn the directional light about the x axis, its angle kept
+// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
+// The point light's marker model follows it.
+struct LightControls {
+    int sun = -1;    // index of the first directional light, if any
+    int point = -1;  // index of the first point light, if any
+    float sunAngle = 270.0f;
+    bool moved = false;
+};
+
+LightControls findControlledLights(const common::Scene& scene) {
+    LightControls controls;
+    for (int i = 0; i < int(scene.lights.size()); ++i) {
+        const common::Light& light = scene.lights[size_t(i)];
+        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
+            controls.sun = i;
+            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
+            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
+        }
+        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
+    }
+    return controls;
+}
+
+void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                float seconds, float speed) {
+    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT))) {
+        controls.sunAngle += (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds;
+        controls.sunAngle = glm::clamp(controls.sunAngle, 180.0f, 360.0f);
+        float radians = glm::radians(controls.sunAngle);
+        scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
+        controls.moved = true;
+    }
+    if (controls.point < 0) return;
+    common::Light& light = scene.lights[size_t(controls.point)];
+    glm::vec3 step(0.0f);
+    if (held(GLFW_KEY_1)) step.y += 1.0f;
+    if (held(GLFW_KEY_2)) step.y -= 1.0f;
+    if (held(GLFW_KEY_3)) step.z -= 1.0f;
+    if (held(GLFW_KEY_4)) step.z += 1.0f;
+    if (step == glm::vec3(0.0f)) return;
+    light.position += step * speed * seconds;
+    controls.moved = true;
+    if (light.marker < 0) return;
+    common::Transform transform = scene.models[size_t(light.marker)].transform;
+    transform.position = light.position;
+    for (common::Draw& draw : gpuScene.draws)
+        if (draw.instance == uint32_t(light.marker)) draw.model = transform.matrix();
+}
+//< light-controls
+
+//> shader-lights
+std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
+    std::vector<ShaderLight> lights;
+    for (const common::Light& light : scene.lights) {
+        bool directional = light.type == common::Light::Type::Directional;
+        lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
+                          light.intensity, light.color});
+    }
+    return lights;
+}
+//< shader-lights
+
+// --check-output: every value of the light output must be a finite, non-negative number.
+void checkLightOutput(const common::Device& device, const LightPass& lightPass) {
+    std::vector<float> values =
+        common::readFloatImage(device, lightPass.output.handle, kLightOutputFormat, lightPass.output.extent,
+                               VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    size_t nan = 0, infinite = 0, negative = 0;
+    float largest = 0.0f;
+    for (size_t i = 0; i < values.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) {
+            float v = values[i + c];
+            nan += std::isnan(v);
+            infinite += std::isinf(v);
+            negative += v < 0.0f;
+            if (std::isfinite(v)) largest = std::max(largest, v);
+        }
+    std::printf("chapter-15: light output %ux%u: %zu NaN, %zu infinite, %zu negative; largest value %g\n",
+                lightPass.output.extent.width, lightPass.output.extent.height, nan, infinite, negative,
+                largest);
+    if (nan + infinite + negative != 0)
+        throw common::Failure("the light output has NaN, infinite or negative values");
+}
+
+void run(const common::Options& options) {
+    //> setup
+    common::ModelCache models;
+    common::Scene scene = common::sceneFromOptions(options, models);
+
+    common::Target target = common::openTarget(options, "chapter-15: deferred rendering II, PBR");
+    common::Instance instance =
+        common::createInstance("chapter-15", options.validation, common::targetInstanceExtensions(target));
+    common::createTargetSurface(target, instance);
+    // scalarBlockLayout: the lights and scene info are read with the C-like scalar layout.
+    common::Device device =
+        common::createDevice(instance, target.surface, options.device,
+                             {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+    common::createTargetImages(target, device);
+    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
+
+    common::GpuScene gpuScene =
+        common::loadGpuScene(device, scene, models, {.normalMaps = true, .metalRoughMaps = true});
+    models.clear();
+    std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
+                gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),
+                gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());
+
+    common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-15");
+    ScenePass scenePass =
+        createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
+    LightPass lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
+                                          options.framesInFlight, uint32_t(scene.lights.size()));
+    common::PostPass postPass =
+        common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
+
+    common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
+    common::CameraInput cameraInput;
+    LightControls lightControls = findControlledLights(scene);
+    LightView lightView{glm::vec4(gpuScene.boundsMin, 0.0f), glm::vec4(gpuScene.boundsMax, 0.0f),
+                        int(options.view), scene.camera.near, scene.camera.far};
+    bool fxaa = options.switches.count("fxaa") != 0;
+    //< setup
+
+    auto recreateTarget = [&] {
+        if (!common::recreateTargetImages(target, device)) return false;
+        resizeScenePass(device, scenePass, target.extent);
+        resizeLightPass(device, lightPass, target.extent, scenePass.gbuffer);
+        common::resizePostPass(device, postPass, lightPass.output);
+        return true;
+    };
+
+    //> frame-loop
+    double lastTime = glfwGetTime();
+    bool viewKeyDown = false, fxaaKeyDown = false;
+    float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
+    for (uint32_t frame = 0;;) {
+        bool lastFrame = common::pollTarget(target, frame);
+        uint32_t slot = frame % options.framesInFlight;
+        common::FrameSync& sync = frames[slot];
+
+        if (target.window) {  // camera, lights; V cycles the views, F toggles FXAA
+            double now = glfwGetTime();
+            float seconds = float(now - lastTime);
+            lastTime = now;
+            common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f);
+            moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
+            bool viewKey = glfwGetKey(target.window, GLFW_KEY_V) == GLFW_PRESS;
+            if (viewKey && !viewKeyDown) lightView.view = (lightView.view + 1) % int(kChapter.views.size());
+            viewKeyDown = viewKey;
+            bool fxaaKey = glfwGetKey(target.window, GLFW_KEY_F) == GLFW_PRESS;
+            if (fxaaKey && !fxaaKeyDown) fxaa = !fxaa;
+            fxaaKeyDown = fxaaKey;
+        }
+
+        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        uint32_t imageIndex = 0;
+        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget()) break;
+            continue;
+        }
+        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+
+        // This frame's uniforms: camera, lights (they may have moved), scene info.
+        setCamera(
+            scenePass, slot,
+            common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near, scene.camera.far),
+            common::viewMatrix(camera));
+        updateLights(lightPass, slot, shaderLights(scene),
+                     {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
+
+        VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
+        VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                           .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+        VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+        recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
+        recordLightPass(sync.commandBuffer, lightPass, slot, lightView);
+        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+
+        VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                   .semaphore = sync.imageAvailable,
+                                   .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+        VkSemaphoreSubmitInfo signal{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                     .semaphore = target.renderFinished[imageIndex],
+                                     .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
+        VkCommandBufferSubmitInfo commands{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                           .commandBuffer = sync.commandBuffer};
+        VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                             .waitSemaphoreInfoCount = 1,
+                             .pWaitSemaphoreInfos = &wait,
+                             .commandBufferInfoCount = 1,
+                             .pCommandBufferInfos = &commands,
+                             .signalSemaphoreInfoCount = 1,
+                             .pSignalSemaphoreInfos = &signal};
+        VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
+
+        if (lastFrame && !options.screenshot.empty())
+            common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
+                                   target.presentLayout, options.screenshot);
+        bool current = common::presentTargetImage(target, device, imageIndex);
+        if (lastFrame) break;
+        if (!current && !recreateTarget()) break;
+        ++frame;
+    }
+    VK_CHECK(vkDeviceWaitIdle(device.handle));
+    //< frame-loop
+
+    if (lightControls.moved) {
+        glm::vec3 p =
+            lightControls.point >= 0 ? scene.lights[size_t(lightControls.point)].position : glm::vec3(0.0f);
+        std::printf("chapter-15: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
+                    lightControls.sunAngle, p.x, p.y, p.z);
+    }
+    if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
+
+    //> teardown
+    common::savePipelineCache(device, pipelineCache);
+    common::destroyPostPass(device, postPass);
+    destroyLightPass(device, lightPass);
+    destroyScenePass(device, scenePass);
+    common::destroyPipelineCache(device, pipelineCache);
+    common::destroyGpuScene(device, gpuScene);
+    common::destroyFrameSync(device, frames);
+    common::destroyTargetImages(target, device);
+    common::destroyDevice(device);
+    common::destroyTargetSurface(target, instance);
+    common::destroyInstance(instance);
+    common::closeTarget(target);
+    //< teardown
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return common::runChapter(argc, argv, kChapter, run);
+}

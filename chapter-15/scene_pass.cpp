@@ -1,0 +1,204 @@
+// chapter-15: the scene pass.
+#include "scene_pass.hpp"
+
+#include <cstring>
+
+#include "common/check.hpp"
+#include "common/descriptors.hpp"
+#include "common/files.hpp"
+#include "common/pipeline.hpp"
+#include "common/texture.hpp"
+#include "gpu_types.hpp"
+
+namespace {
+
+struct CameraUniform {
+    glm::mat4 projection;
+    glm::mat4 view;
+};
+
+// The vertex stage's push constants: the model matrix and its inverse-transpose (a mat3 is
+// three 16-byte columns in a push constant block). The material index follows at byte 112.
+struct DrawConstants {
+    glm::mat4 model;
+    glm::vec4 normalMatrix[3];
+};
+static_assert(sizeof(DrawConstants) == 112);
+
+void createDescriptors(const common::Device& device, ScenePass& pass, const common::GpuScene& scene,
+                       uint32_t framesInFlight) {
+    pass.cameraLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+    pass.materialsLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+    pass.texturesLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+
+    //> material-sets
+    // Sized from the scene: a camera set per frame in flight, the materials buffer, and one set
+    // of three textures per material, every binding written (unused ones get the defaults).
+    uint32_t materials = uint32_t(scene.materials.size());
+    pass.descriptorPool =
+        common::createDescriptorPool(device, framesInFlight + 1 + materials,
+                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
+                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * materials}});
+    pass.sampler = common::createSampler(device, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    for (const common::GpuMaterial& material : scene.materials) {
+        VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
+        uint32_t textures[3] = {material.albedoTexture, material.normalTexture, material.metalRoughTexture};
+        for (uint32_t binding = 0; binding < 3; ++binding)
+            common::writeImageDescriptor(device, set, binding, pass.sampler,
+                                         scene.textures[textures[binding]].view,
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        pass.materialTextureSets.push_back(set);
+    }
+    //< material-sets
+
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        pass.cameras.push_back(
+            common::createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT));
+        pass.cameraSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.cameraLayout));
+        common::writeBufferDescriptor(device, pass.cameraSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      pass.cameras.back().handle, sizeof(CameraUniform));
+    }
+
+    std::vector<ShaderMaterial> shaderMaterials;
+    for (const common::GpuMaterial& m : scene.materials)
+        shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic, {0.0f, 0.0f}});
+    common::StagingBatch batch = common::beginStaging(device);
+    pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
+                                          shaderMaterials.size() * sizeof(ShaderMaterial),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    common::endStaging(device, batch);
+    pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
+    common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                  pass.materials.handle, VK_WHOLE_SIZE);
+}
+
+void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass) {
+    std::array<VkDescriptorSetLayout, 3> layouts{pass.cameraLayout, pass.materialsLayout,
+                                                 pass.texturesLayout};
+    std::array<VkPushConstantRange, 2> pushConstants{{
+        {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(DrawConstants)},
+        {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT,
+         .offset = sizeof(DrawConstants),
+         .size = sizeof(uint32_t)},
+    }};
+    VkPipelineLayoutCreateInfo layoutInfo{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+        .setLayoutCount = uint32_t(layouts.size()),
+        .pSetLayouts = layouts.data(),
+        .pushConstantRangeCount = uint32_t(pushConstants.size()),
+        .pPushConstantRanges = pushConstants.data(),
+    };
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+
+    //> scene-pipeline
+    // Four colour attachments: four formats, four blend states.
+    VkPipelineRenderingCreateInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+        .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
+        .pColorAttachmentFormats = kGBufferColorFormats.data(),
+        .depthAttachmentFormat = kDepthFormat,
+    };
+    common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
+    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
+                                                      common::kBitangent | common::kUv);
+    //< scene-pipeline
+    VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
+    VkShaderModule fragment = common::loadShaderModule(device, "chapter-15/scene.frag");
+    pass.pipeline = common::createGraphicsPipeline(
+        device, cache,
+        {
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+            .vertexInput = &vertexInput.state,
+            .depthTest = true,
+            .depthWrite = true,
+            .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
+            .layout = pass.pipelineLayout,
+            .pNext = &rendering,
+        });
+    vkDestroyShaderModule(device.handle, fragment, nullptr);
+    vkDestroyShaderModule(device.handle, vertex, nullptr);
+}
+
+}  // namespace
+
+ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                          const common::GpuScene& scene, uint32_t framesInFlight) {
+    ScenePass pass;
+    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+    createDescriptors(device, pass, scene, framesInFlight);
+    createPipeline(device, cache, pass);
+    return pass;
+}
+
+void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
+    common::destroyGBuffer(device, pass.gbuffer);
+    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+}
+
+void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
+    CameraUniform camera{projection, view};
+    std::memcpy(pass.cameras[frame].mapped, &camera, sizeof(camera));
+}
+
+//> record-scene
+void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
+                     uint32_t frame) {
+    common::gbufferRenderInit(cmd, pass.gbuffer);
+    common::beginGBufferRendering(cmd, pass.gbuffer);
+    VkExtent2D extent = pass.gbuffer.depth.extent;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+    VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    std::array<VkDescriptorSet, 2> shared{pass.cameraSets[frame], pass.materialsSet};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
+                            nullptr);
+
+    for (const common::Draw& draw : scene.draws) {
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 1,
+                                &pass.materialTextureSets[draw.material], 0, nullptr);
+        // Normals need the inverse-transpose of the model matrix; computed once per draw here
+        // rather than once per vertex in the shader, as the book does.
+        glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(draw.model)));
+        DrawConstants constants{draw.model,
+                                {glm::vec4(normalMatrix[0], 0.0f), glm::vec4(normalMatrix[1], 0.0f),
+                                 glm::vec4(normalMatrix[2], 0.0f)}};
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
+                           &constants);
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
+                           sizeof(uint32_t), &draw.material);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+    }
+    vkCmdEndRendering(cmd);
+    common::gbufferRenderFinish(cmd, pass.gbuffer);
+}
+//< record-scene
+
+void destroyScenePass(const common::Device& device, ScenePass& pass) {
+    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    common::destroyBuffer(device, pass.materials);
+    for (common::Buffer& camera : pass.cameras) common::destroyBuffer(device, camera);
+    vkDestroyDescriptorSetLayout(device.handle, pass.texturesLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.materialsLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.cameraLayout, nullptr);
+    common::destroyGBuffer(device, pass.gbuffer);
+    pass = {};
+}
