@@ -53,6 +53,7 @@ const char* missingFeature(VkPhysicalDevice physical, const DeviceFeatures& want
     if (wanted.dynamicRendering && !v13.dynamicRendering) return "dynamicRendering";
     if (wanted.synchronization2 && !v13.synchronization2) return "synchronization2";
     if (wanted.scalarBlockLayout && !v12.scalarBlockLayout) return "scalarBlockLayout";
+    if (wanted.maintenance4 && !v13.maintenance4) return "maintenance4";
     return nullptr;
 }
 
@@ -161,7 +162,8 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     // Exactly the features asked for, no more: what a chapter uses is what it enables.
     VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                          .synchronization2 = features.synchronization2,
-                                         .dynamicRendering = features.dynamicRendering};
+                                         .dynamicRendering = features.dynamicRendering,
+                                         .maintenance4 = features.maintenance4};
     VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                          .pNext = &v13,
                                          .scalarBlockLayout = features.scalarBlockLayout};

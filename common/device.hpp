@@ -25,6 +25,7 @@ struct DeviceFeatures {
     bool dynamicRendering = false;   // chapter-14 on: vkCmdBeginRendering instead of render passes
     bool synchronization2 = false;   // chapter-14 on: vkCmdPipelineBarrier2, vkQueueSubmit2
     bool scalarBlockLayout = false;  // chapter-15: C-like struct layout in storage buffers
+    bool maintenance4 = false;       // compute shaders: glslang's SPIR-V 1.6 declares LocalSizeId
 };
 
 // Picks a device with Vulkan 1.3 and a graphics queue (that can also present to `surface`, when

@@ -11,14 +11,14 @@ set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="$root/build"
-default_chapter=chapter-06
+default_chapter=chapter-15
 
 packages=(
     build-essential cmake pkg-config            # compiler and build
     libvulkan-dev mesa-vulkan-drivers           # Vulkan loader + headers, lavapipe (CPU device)
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
     libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev nlohmann-json3-dev libgtest-dev
-    xvfb xauth clang-format                     # tests: windowed runs, formatting check
+    xvfb xauth xdotool clang-format             # tests: windowed runs, key presses, formatting
 )
 
 install_missing() {

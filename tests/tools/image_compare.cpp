@@ -4,10 +4,13 @@
 //
 //   image_compare IMAGE [--size W H] [--pixel-linear X Y R G B]... [--pixel X Y R G B]...
 //                       [--pixel-tolerance N] [--golden FILE --max-diff N --max-fraction F]
+//                       [--expect-scaled REFERENCE FACTOR --max-diff N --max-fraction F]
 //
 // --pixel-linear takes a linear colour (what a shader writes or a clear colour holds) and
-// expects its sRGB encoding in the PNG; --pixel takes 8-bit values as stored. On a golden
-// mismatch an image of the differing pixels is written to IMAGE.diff.png.
+// expects its sRGB encoding in the PNG; --pixel takes 8-bit values as stored. --expect-scaled
+// checks IMAGE = FACTOR x REFERENCE in linear colour (both PNGs sRGB-encoded), with the same
+// per-channel tolerance. On a golden mismatch an image of the differing pixels is written to
+// IMAGE.diff.png.
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -37,6 +40,11 @@ bool load(const char* path, Png& png) {
     return true;
 }
 
+double decodeSrgb(int encoded) {
+    double c = encoded / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 // The sRGB transfer function (IEC 61966-2-1), rounded to 8 bits.
 int encodeSrgb(double linear) {
     double c = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
@@ -58,6 +66,8 @@ int main(int argc, char** argv) {
     int wantWidth = -1, wantHeight = -1, pixelTolerance = 2, maxDiff = 5;
     double maxFraction = 0.001;
     const char* golden = nullptr;
+    const char* scaledReference = nullptr;
+    double scale = 1.0;
     std::vector<PixelCheck> pixels;
     for (int i = 2; i < argc; ++i) {
         std::string_view arg = argv[i];
@@ -85,6 +95,10 @@ int main(int argc, char** argv) {
         } else if (arg == "--golden") {
             need(1);
             golden = argv[++i];
+        } else if (arg == "--expect-scaled") {
+            need(2);
+            scaledReference = argv[++i];
+            scale = std::atof(argv[++i]);
         } else if (arg == "--max-diff") {
             need(1);
             maxDiff = std::atoi(argv[++i]);
@@ -159,6 +173,31 @@ int main(int argc, char** argv) {
                         diffPath.c_str());
             ++failures;
         }
+    }
+    if (scaledReference) {
+        Png reference;
+        if (!load(scaledReference, reference)) return 1;
+        if (reference.width != image.width || reference.height != image.height) {
+            std::printf("FAIL %s is %dx%d, image is %dx%d\n", scaledReference, reference.width,
+                        reference.height, image.width, image.height);
+            return 1;
+        }
+        size_t over = 0, count = reference.rgb.size();
+        int worst = 0;
+        for (size_t i = 0; i < count; ++i) {
+            int expected = encodeSrgb(scale * decodeSrgb(reference.rgb[i]));
+            int d = std::abs(int(image.rgb[i]) - expected);
+            worst = std::max(worst, d);
+            over += d > maxDiff;
+        }
+        double fraction = double(over) / double(count);
+        bool ok = fraction <= maxFraction;
+        std::printf(
+            "%s image = %g x %s (linear): max abs diff %d/255, %zu channels (%.5f%%) over %d/255, "
+            "allowed %.5f%%\n",
+            ok ? "ok  " : "FAIL", scale, scaledReference, worst, over, fraction * 100.0, maxDiff,
+            maxFraction * 100.0);
+        failures += !ok;
     }
     return failures == 0 ? 0 : 1;
 }

@@ -1,0 +1,44 @@
+#version 450
+// The layout test: reads the structs of gpu_types.glsl from buffers C++ filled and writes every
+// field, in declaration order, as a float. tests/layout_test.cpp compares them with the values it
+// wrote through the C++ twins (chapter-15/gpu_types.hpp).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#include "gpu_types.glsl"
+
+layout(local_size_x = 1) in;
+
+layout(scalar, set = 0, binding = 0) readonly buffer Lights { Light lights[2]; };
+layout(scalar, set = 0, binding = 1) uniform Scene { SceneInfo scene; };
+layout(std430, set = 0, binding = 2) readonly buffer Materials { Material materials[2]; };
+layout(std430, set = 0, binding = 3) writeonly buffer Fields { float fields[]; };
+
+void main() {
+    int i = 0;
+    for (int l = 0; l < 2; ++l) {
+        fields[i++] = lights[l].position.x;
+        fields[i++] = lights[l].position.y;
+        fields[i++] = lights[l].position.z;
+        fields[i++] = float(lights[l].directional);
+        fields[i++] = lights[l].intensity;
+        fields[i++] = lights[l].color.x;
+        fields[i++] = lights[l].color.y;
+        fields[i++] = lights[l].color.z;
+    }
+    fields[i++] = scene.cameraPosition.x;
+    fields[i++] = scene.cameraPosition.y;
+    fields[i++] = scene.cameraPosition.z;
+    fields[i++] = scene.ambientIntensity;
+    fields[i++] = scene.ambientColor.x;
+    fields[i++] = scene.ambientColor.y;
+    fields[i++] = scene.ambientColor.z;
+    fields[i++] = float(scene.lightCount);
+    for (int m = 0; m < 2; ++m) {
+        fields[i++] = materials[m].diffuse.x;
+        fields[i++] = materials[m].diffuse.y;
+        fields[i++] = materials[m].diffuse.z;
+        fields[i++] = materials[m].diffuse.w;
+        fields[i++] = materials[m].roughness;
+        fields[i++] = materials[m].metallic;
+    }
+}

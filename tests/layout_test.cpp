@@ -1,0 +1,133 @@
+// layout_test SHADER.spv: C++ and GLSL agree on the layout of chapter-15's shared structs. C++
+// fills two ShaderLights, a ShaderSceneInfo and two ShaderMaterials with distinct values; a
+// compute shader that includes the same gpu_types.glsl as the chapter reads them and writes each
+// field back; every field must come back as written. A wrong size or offset on either side puts
+// some other field's value there. Exit 0 when all agree.
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "../chapter-15/gpu_types.hpp"
+#include "common/buffer.hpp"
+#include "common/check.hpp"
+#include "common/cli.hpp"
+#include "common/commands.hpp"
+#include "common/descriptors.hpp"
+#include "common/device.hpp"
+#include "common/files.hpp"
+#include "common/instance.hpp"
+
+namespace {
+
+const char* gShaderPath = nullptr;
+
+void run(const common::Options& options) {
+    ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}}, {{8, 9, 10}, 0u, 11, {12, 13, 14}}};
+    ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u};
+    ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, {0, 0}}, {{29, 30, 31, 32}, 33, 34, {0, 0}}};
+    std::vector<float> expected;
+    for (const ShaderLight& l : lights)
+        expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
+                                         l.intensity, l.color.x, l.color.y, l.color.z});
+    expected.insert(expected.end(), {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
+                                     scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y,
+                                     scene.ambientColor.z, float(scene.lightCount)});
+    for (const ShaderMaterial& m : materials)
+        expected.insert(expected.end(),
+                        {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness, m.metallic});
+
+    common::Instance instance = common::createInstance("layout_test", options.validation, {});
+    common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
+                                                 {.scalarBlockLayout = true, .maintenance4 = true});
+    VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    common::Buffer buffers[4] = {
+        common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
+        common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
+        common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
+        common::createBuffer(device, expected.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             host),
+    };
+    std::memcpy(buffers[0].mapped, lights, sizeof(lights));
+    std::memcpy(buffers[1].mapped, &scene, sizeof(scene));
+    std::memcpy(buffers[2].mapped, materials, sizeof(materials));
+    std::memset(buffers[3].mapped, 0xff, expected.size() * sizeof(float));  // NaN until written
+
+    VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    VkDescriptorSetLayout layout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute),
+                 common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute),
+                 common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute),
+                 common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute)});
+    VkDescriptorPool pool = common::createDescriptorPool(
+        device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}});
+    VkDescriptorSet set = common::allocateDescriptorSet(device, pool, layout);
+    VkDescriptorType types[4] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    for (uint32_t b = 0; b < 4; ++b)
+        common::writeBufferDescriptor(device, set, b, types[b], buffers[b].handle, VK_WHOLE_SIZE);
+
+    std::vector<char> code = common::readFile(gShaderPath);
+    VkShaderModuleCreateInfo moduleInfo{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                        .codeSize = code.size(),
+                                        .pCode = reinterpret_cast<const uint32_t*>(code.data())};
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device.handle, &moduleInfo, nullptr, &module));
+    VkPipelineLayoutCreateInfo layoutInfo{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO, .setLayoutCount = 1, .pSetLayouts = &layout};
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelineLayout));
+    VkComputePipelineCreateInfo pipelineInfo{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                  .stage = VK_SHADER_STAGE_COMPUTE_BIT,
+                  .module = module,
+                  .pName = "main"},
+        .layout = pipelineLayout,
+    };
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
+
+    VkCommandBuffer cmd = common::beginOneTimeCommands(device);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout, 0, 1, &set, 0, nullptr);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    VkMemoryBarrier toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                           .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
+                           .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost,
+                         0, nullptr, 0, nullptr);
+    common::submitOneTimeCommands(device, cmd);
+
+    const float* fields = static_cast<const float*>(buffers[3].mapped);
+    size_t wrong = 0;
+    for (size_t i = 0; i < expected.size(); ++i)
+        if (fields[i] != expected[i]) {
+            std::printf("field %zu: the shader read %g, C++ wrote %g\n", i, fields[i], expected[i]);
+            ++wrong;
+        }
+    std::printf("%zu fields of ShaderLight, ShaderSceneInfo and ShaderMaterial checked, %zu disagree\n",
+                expected.size(), wrong);
+
+    vkDestroyPipeline(device.handle, pipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pipelineLayout, nullptr);
+    vkDestroyShaderModule(device.handle, module, nullptr);
+    vkDestroyDescriptorPool(device.handle, pool, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, layout, nullptr);
+    for (common::Buffer& buffer : buffers) common::destroyBuffer(device, buffer);
+    common::destroyDevice(device);
+    common::destroyInstance(instance);
+    if (wrong != 0) throw common::Failure("C++ and GLSL disagree on the struct layouts");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: layout_test SHADER.spv [--validation] [--device NAME]\n");
+        return 2;
+    }
+    gShaderPath = argv[1];
+    argv[1] = argv[0];  // the rest is the usual command line
+    return common::runChapter(argc - 1, argv + 1, {"layout_test", "C++/GLSL struct layout agreement", {}},
+                              run);
+}
