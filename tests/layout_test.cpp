@@ -11,11 +11,10 @@
 #include "common/buffer.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/descriptors.hpp"
 #include "common/device.hpp"
 #include "common/files.hpp"
 #include "common/instance.hpp"
+#include "gpu_compute.hpp"
 
 namespace {
 
@@ -52,51 +51,12 @@ void run(const common::Options& options) {
     std::memcpy(buffers[2].mapped, materials, sizeof(materials));
     std::memset(buffers[3].mapped, 0xff, expected.size() * sizeof(float));  // NaN until written
 
-    VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    VkDescriptorSetLayout layout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute),
-                 common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute),
-                 common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute),
-                 common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute)});
-    VkDescriptorPool pool = common::createDescriptorPool(
-        device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}});
-    VkDescriptorSet set = common::allocateDescriptorSet(device, pool, layout);
-    VkDescriptorType types[4] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-    for (uint32_t b = 0; b < 4; ++b)
-        common::writeBufferDescriptor(device, set, b, types[b], buffers[b].handle, VK_WHOLE_SIZE);
-
-    std::vector<char> code = common::readFile(gShaderPath);
-    VkShaderModuleCreateInfo moduleInfo{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
-                                        .codeSize = code.size(),
-                                        .pCode = reinterpret_cast<const uint32_t*>(code.data())};
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateShaderModule(device.handle, &moduleInfo, nullptr, &module));
-    VkPipelineLayoutCreateInfo layoutInfo{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO, .setLayoutCount = 1, .pSetLayouts = &layout};
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelineLayout));
-    VkComputePipelineCreateInfo pipelineInfo{
-        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-        .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                  .stage = VK_SHADER_STAGE_COMPUTE_BIT,
-                  .module = module,
-                  .pName = "main"},
-        .layout = pipelineLayout,
-    };
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
-
-    VkCommandBuffer cmd = common::beginOneTimeCommands(device);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout, 0, 1, &set, 0, nullptr);
-    vkCmdDispatch(cmd, 1, 1, 1);
-    VkMemoryBarrier toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
-                           .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
-                           .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost,
-                         0, nullptr, 0, nullptr);
-    common::submitOneTimeCommands(device, cmd);
+    runCompute(device, gShaderPath,
+               {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[0].handle},
+                {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers[1].handle},
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[2].handle},
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[3].handle}},
+               nullptr, 0, 1);
 
     const float* fields = static_cast<const float*>(buffers[3].mapped);
     size_t wrong = 0;
@@ -108,11 +68,6 @@ void run(const common::Options& options) {
     std::printf("%zu fields of ShaderLight, ShaderSceneInfo and ShaderMaterial checked, %zu disagree\n",
                 expected.size(), wrong);
 
-    vkDestroyPipeline(device.handle, pipeline, nullptr);
-    vkDestroyPipelineLayout(device.handle, pipelineLayout, nullptr);
-    vkDestroyShaderModule(device.handle, module, nullptr);
-    vkDestroyDescriptorPool(device.handle, pool, nullptr);
-    vkDestroyDescriptorSetLayout(device.handle, layout, nullptr);
     for (common::Buffer& buffer : buffers) common::destroyBuffer(device, buffer);
     common::destroyDevice(device);
     common::destroyInstance(instance);

@@ -53,8 +53,8 @@ void main() {
     } else if (depth >= 1.0) {
         outColor = vec4(0.0, 0.0, 0.0, 1.0);  // nothing was drawn here: no surface to light
     } else {
-        vec3 N = safeNormalize(normal, vec3(0.0, 0.0, 1.0));
-        vec3 V = safeNormalize(scene.cameraPosition - worldPosition, N);
+        vec3 N = surfaceNormal(normal);
+        vec3 V = viewDirection(worldPosition, scene.cameraPosition, N);
         vec3 color = scene.ambientColor * scene.ambientIntensity * albedo;
         for (uint i = 0u; i < scene.lightCount; ++i) {
             Light light = lights[i];
