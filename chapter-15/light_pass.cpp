@@ -7,7 +7,6 @@
 #include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
-#include "scene_pass.hpp"
 
 namespace {
 
@@ -19,7 +18,7 @@ common::Image createOutput(const common::Device& device, VkExtent2D extent) {
         VK_IMAGE_ASPECT_COLOR_BIT);
 }
 
-// Bindings 0-3: position, albedo, normal, PBR; binding 4: depth.
+// One binding per colour attachment in attachment order, then depth.
 void writeAttachments(const common::Device& device, LightPass& pass, const common::GBuffer& gbuffer) {
     uint32_t binding = 0;
     for (const common::Image& color : gbuffer.colors)
@@ -32,25 +31,28 @@ void writeAttachments(const common::Device& device, LightPass& pass, const commo
 }  // namespace
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity) {
+                          const common::GBuffer& gbuffer, GBufferLayout layout, uint32_t framesInFlight,
+                          uint32_t lightCapacity) {
     LightPass pass;
     pass.output = createOutput(device, extent);
-    static_assert(kGBufferColorFormats.size() == 4, "light.frag samples bindings 0-3 and depth at 4");
     VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-    pass.attachmentsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
-                 common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
-                 common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
-                 common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
-                 common::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment)});
+    std::vector<VkDescriptorSetLayoutBinding> attachmentBindings;
+    for (uint32_t i = 0; i <= gbuffer.colors.size(); ++i)  // the colour attachments, then depth
+        attachmentBindings.push_back(common::binding(i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment));
+    VkDescriptorSetLayoutCreateInfo attachmentsInfo{
+        .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+        .bindingCount = uint32_t(attachmentBindings.size()),
+        .pBindings = attachmentBindings.data()};
+    VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &attachmentsInfo, nullptr, &pass.attachmentsLayout));
     pass.lightsLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment)});
     pass.sceneLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment)});
-    pass.descriptorPool = common::createDescriptorPool(device, 1 + 2 * framesInFlight,
-                                                       {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5},
-                                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
-                                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
+    pass.descriptorPool = common::createDescriptorPool(
+        device, 1 + 2 * framesInFlight,
+        {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(attachmentBindings.size())},
+         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
+         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     VkSamplerCreateInfo samplerInfo{
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
@@ -86,8 +88,10 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     }
     //< light-buffers
 
+    const char* shader =
+        layout == GBufferLayout::Compact ? "chapter-15/light-compact.frag" : "chapter-15/light.frag";
     pass.pipeline = common::createFullscreenPipeline(
-        device, cache, "chapter-15/light.frag", kLightOutputFormat,
+        device, cache, shader, kLightOutputFormat,
         {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout}, sizeof(LightView));
     return pass;
 }

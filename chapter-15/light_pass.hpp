@@ -15,17 +15,21 @@
 #include "common/gbuffer.hpp"
 #include "common/image.hpp"
 #include "gpu_types.hpp"
+#include "scene_pass.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-// The fragment push constants: what to show.
+// The fragment push constants (light.frag's Show block, 112 bytes).
 struct LightView {
-    glm::vec4 boundsMin;  // the scene's bounds, to show world positions as colours
-    glm::vec4 boundsMax;
-    int view = 0;  // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
-    float near = 0.1f;
+    glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
+    glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
+    glm::vec4 boundsMax{1.0f};
+    int view = 0;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
+    float near = 0.1f;  // the projection's planes
     float far = 100.0f;
+    int reversedZ = 0;
 };
+static_assert(sizeof(LightView) == 112);
 
 struct LightPass {
     common::Image output;
@@ -44,7 +48,8 @@ struct LightPass {
 
 // `lightCapacity`: the scene's number of lights (the buffers are sized from it).
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity);
+                          const common::GBuffer& gbuffer, GBufferLayout layout, uint32_t framesInFlight,
+                          uint32_t lightCapacity);
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
 // Writes this frame's lights and scene info (lights.size() <= lightCapacity).

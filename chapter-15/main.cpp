@@ -9,9 +9,12 @@
 //   post pass (common/post_pass.cpp): into the presentation image, FXAA optional.
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "common/camera.hpp"
@@ -38,6 +41,12 @@ const common::ChapterInfo kChapter{
     {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of light.frag's `view`
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"}},
+    {{"gbuffer",
+      {"book", "reference", "compact"},
+      "G-buffer layout: the book's (36 B/px), all fp32 (68 B/px), or compact (16 B/px)"},
+     {"dump",
+      {},
+      "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"}},
 };
 
 //> light-controls
@@ -93,6 +102,36 @@ void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scen
 }
 //< light-controls
 
+//> projection
+// The projection of this frame. The book's layouts use the scene camera's near and far planes;
+// the compact layout uses reversed-Z (near at depth 1, far at 0: float depth is then nearly as
+// precise far away as close by) with the planes fitted to the scene's bounds as seen from here.
+struct Projection {
+    glm::mat4 matrix;
+    float near, far;
+    bool reversed;
+};
+
+Projection projectionFor(GBufferLayout layout, const common::Scene& scene, const common::Camera& camera,
+                         const common::GpuScene& gpuScene, VkExtent2D extent) {
+    if (!reversedZ(layout))
+        return {common::projectionMatrix(scene.camera.fov, extent, scene.camera.near, scene.camera.far),
+                scene.camera.near, scene.camera.far, false};
+    glm::vec3 nearest = glm::clamp(camera.position, gpuScene.boundsMin, gpuScene.boundsMax);
+    float far = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 p((corner & 1) ? gpuScene.boundsMax.x : gpuScene.boundsMin.x,
+                    (corner & 2) ? gpuScene.boundsMax.y : gpuScene.boundsMin.y,
+                    (corner & 4) ? gpuScene.boundsMax.z : gpuScene.boundsMin.z);
+        far = std::max(far, glm::length(p - camera.position));
+    }
+    far = far * 1.01f + 1e-3f;
+    float near = std::max(glm::length(nearest - camera.position), far * 1e-5f);
+    // Swapping the planes in the projection is all reversed-Z needs (plus GREATER and clear 0).
+    return {common::projectionMatrix(scene.camera.fov, extent, far, near), near, far, true};
+}
+//< projection
+
 //> shader-lights
 std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
     std::vector<ShaderLight> lights;
@@ -127,6 +166,31 @@ void checkLightOutput(const common::Device& device, const LightPass& lightPass) 
         throw common::Failure("the light output has NaN, infinite or negative values");
 }
 
+// --dump DIR: the last frame's light output, light.pfm, and -- for the layouts that store floats
+// -- the G-buffer as position/albedo/normal/pbr.pfm plus coverage.pfm (1 where a surface is). The
+// accuracy tools (tests/accuracy/) shade these on the CPU in double precision.
+void dumpFrame(const common::Device& device, const LightPass& lightPass, const ScenePass& scenePass,
+               const std::filesystem::path& directory) {
+    std::error_code ec;
+    std::filesystem::create_directories(directory, ec);
+    VkExtent2D extent = lightPass.output.extent;
+    common::writePfm(directory / "light.pfm", extent.width, extent.height,
+                     common::readFloatImage(device, lightPass.output.handle, kLightOutputFormat, extent,
+                                            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL),
+                     3);
+    if (scenePass.layout == GBufferLayout::Compact) return;
+    const char* names[] = {"position", "albedo", "normal", "pbr"};
+    for (size_t i = 0; i < 4; ++i) {
+        const common::Image& image = scenePass.gbuffer.colors[i];
+        std::vector<float> texels = common::readFloatImage(device, image.handle, image.format, extent,
+                                                           VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        common::writePfm(directory / (std::string(names[i]) + ".pfm"), extent.width, extent.height, texels,
+                         3);
+        if (i == 1) common::writePfm(directory / "coverage.pfm", extent.width, extent.height, texels, 1, 3);
+    }
+    std::printf("chapter-15: wrote %s\n", directory.c_str());
+}
+
 void run(const common::Options& options) {
     //> setup
     common::ModelCache models;
@@ -151,18 +215,21 @@ void run(const common::Options& options) {
                 gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());
 
     common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-15");
-    ScenePass scenePass =
-        createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
+    GBufferLayout layout =
+        GBufferLayout(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0);
+    ScenePass scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
+                                          options.framesInFlight, layout);
     LightPass lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
-                                          options.framesInFlight, uint32_t(scene.lights.size()));
+                                          layout, options.framesInFlight, uint32_t(scene.lights.size()));
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 
     common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
     common::CameraInput cameraInput;
     LightControls lightControls = findControlledLights(scene);
-    LightView lightView{glm::vec4(gpuScene.boundsMin, 0.0f), glm::vec4(gpuScene.boundsMax, 0.0f),
-                        int(options.view), scene.camera.near, scene.camera.far};
+    LightView lightView{.boundsMin = glm::vec4(gpuScene.boundsMin, 0.0f),
+                        .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
+                        .view = int(options.view)};
     bool fxaa = options.switches.count("fxaa") != 0;
     //< setup
 
@@ -206,10 +273,13 @@ void run(const common::Options& options) {
         VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
 
         // This frame's uniforms: camera, lights (they may have moved), scene info.
-        setCamera(
-            scenePass, slot,
-            common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near, scene.camera.far),
-            common::viewMatrix(camera));
+        glm::mat4 view = common::viewMatrix(camera);
+        Projection projection = projectionFor(layout, scene, camera, gpuScene, target.extent);
+        setCamera(scenePass, slot, projection.matrix, view);
+        lightView.clipToCameraRelative = glm::inverse(projection.matrix * glm::mat4(glm::mat3(view)));
+        lightView.near = projection.near;
+        lightView.far = projection.far;
+        lightView.reversedZ = projection.reversed ? 1 : 0;
         updateLights(lightPass, slot, shaderLights(scene),
                      {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
 
@@ -257,6 +327,7 @@ void run(const common::Options& options) {
                     lightControls.sunAngle, p.x, p.y, p.z);
     }
     if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
+    if (options.values.count("dump")) dumpFrame(device, lightPass, scenePass, options.values.at("dump"));
 
     //> teardown
     common::savePipelineCache(device, pipelineCache);

@@ -3,6 +3,8 @@
 
 #include <cstring>
 
+#include <string>
+
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -100,11 +102,12 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
 
     //> scene-pipeline
-    // Four colour attachments: four formats, four blend states.
+    // Four colour attachments (three in the compact layout): as many formats and blend states.
+    std::vector<VkFormat> formats = gbufferColorFormats(pass.layout);
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
-        .pColorAttachmentFormats = kGBufferColorFormats.data(),
+        .colorAttachmentCount = uint32_t(formats.size()),
+        .pColorAttachmentFormats = formats.data(),
         .depthAttachmentFormat = kDepthFormat,
     };
     common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
@@ -112,7 +115,9 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
                                                       common::kBitangent | common::kUv);
     //< scene-pipeline
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, "chapter-15/scene.frag");
+    VkShaderModule fragment = common::loadShaderModule(device, pass.layout == GBufferLayout::Compact
+                                                                   ? "chapter-15/scene-compact.frag"
+                                                                   : "chapter-15/scene.frag");
     pass.pipeline = common::createGraphicsPipeline(
         device, cache,
         {
@@ -121,7 +126,10 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
             .vertexInput = &vertexInput.state,
             .depthTest = true,
             .depthWrite = true,
-            .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
+            // Reversed-Z: nearer is larger.
+            .depthCompare =
+                reversedZ(pass.layout) ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+            .colorAttachmentCount = uint32_t(formats.size()),
             .layout = pass.pipelineLayout,
             .pNext = &rendering,
         });
@@ -132,9 +140,19 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 }  // namespace
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight) {
+                          const common::GpuScene& scene, uint32_t framesInFlight, GBufferLayout layout) {
     ScenePass pass;
-    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+    pass.layout = layout;
+    for (VkFormat format : gbufferColorFormats(layout)) {
+        VkFormatProperties properties;
+        vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
+        VkFormatFeatureFlags needed =
+            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+        if ((properties.optimalTilingFeatures & needed) != needed)
+            throw common::Failure("this device cannot render to and sample format " + std::to_string(format) +
+                                  ", which this G-buffer layout needs");
+    }
+    pass.gbuffer = common::createGBuffer(device, extent, gbufferColorFormats(layout), kDepthFormat);
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
     return pass;
@@ -142,7 +160,7 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
     common::destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+    pass.gbuffer = common::createGBuffer(device, extent, gbufferColorFormats(pass.layout), kDepthFormat);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
@@ -154,7 +172,7 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
-    common::beginGBufferRendering(cmd, pass.gbuffer);
+    common::beginGBufferRendering(cmd, pass.gbuffer, reversedZ(pass.layout) ? 0.0f : 1.0f);
     VkExtent2D extent = pass.gbuffer.depth.extent;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};

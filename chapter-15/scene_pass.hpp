@@ -15,16 +15,34 @@
 #include "common/gbuffer.hpp"
 #include "common/gpu_scene.hpp"
 
-// Attachment order = the fragment shader's output locations = the light pass's bindings.
-inline constexpr std::array<VkFormat, 4> kGBufferColorFormats = {
-    VK_FORMAT_R16G16B16A16_SFLOAT,  // 0: world position
-    VK_FORMAT_R16G16B16A16_SFLOAT,  // 1: albedo
-    VK_FORMAT_R16G16B16A16_SFLOAT,  // 2: normal
-    VK_FORMAT_R16G16B16A16_SFLOAT,  // 3: AO, roughness, metallic
+//> gbuffer-layouts
+// The G-buffer layouts of --gbuffer. Attachment order = the fragment shader's output locations =
+// the light pass's bindings (then depth, always D32_SFLOAT).
+enum class GBufferLayout {
+    Book,       // the book's: position, albedo, normal, AO/roughness/metallic, all RGBA16F (36 B/px)
+    Reference,  // the same in RGBA32F: the accuracy yardstick (68 B/px)
+    Compact,    // albedo 3 x 10 bits (gamma 2) + coverage, normal octahedral 2 x 16 bits,
+                // roughness and metallic 2 x 16 bits; position from reversed-Z depth (16 B/px)
 };
+
+inline std::vector<VkFormat> gbufferColorFormats(GBufferLayout layout) {
+    switch (layout) {
+        case GBufferLayout::Reference:
+            return std::vector<VkFormat>(4, VK_FORMAT_R32G32B32A32_SFLOAT);
+        case GBufferLayout::Compact:
+            return {VK_FORMAT_A2B10G10R10_UNORM_PACK32, VK_FORMAT_R16G16_UNORM, VK_FORMAT_R16G16_UNORM};
+        default:
+            return std::vector<VkFormat>(4, VK_FORMAT_R16G16B16A16_SFLOAT);
+    }
+}
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline bool reversedZ(GBufferLayout layout) {
+    return layout == GBufferLayout::Compact;
+}
+//< gbuffer-layouts
 
 struct ScenePass {
+    GBufferLayout layout = GBufferLayout::Book;
     common::GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
@@ -40,8 +58,9 @@ struct ScenePass {
     VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
+// Throws Failure when the device cannot render to the layout's formats.
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight);
+                          const common::GpuScene& scene, uint32_t framesInFlight, GBufferLayout layout);
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,

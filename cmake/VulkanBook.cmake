@@ -41,20 +41,32 @@ endfunction()
 # vkbook_shaders(target chapter src...): compiles shaders/<chapter>/<src> to
 # <build>/bin/shaders/<chapter>/<src>.spv at build time. glslangValidator writes a depfile, so
 # editing a file under shaders/include/ rebuilds every shader that includes it. A GLSL error
-# fails the build with the compiler's message.
+# fails the build with the compiler's message. A source written `name.frag:variant:DEFINE` is
+# compiled once more with -DDEFINE into name-variant.frag.spv (e.g. a G-buffer layout).
 function(vkbook_shaders target chapter)
     set(outputs)
-    foreach(src IN LISTS ARGN)
+    foreach(spec IN LISTS ARGN)
+        string(REPLACE ":" ";" parts "${spec}")
+        list(GET parts 0 src)
+        set(defines)
+        set(name ${src})
+        list(LENGTH parts count)
+        if(count EQUAL 3)
+            list(GET parts 1 variant)
+            list(GET parts 2 define)
+            set(defines -D${define})
+            string(REGEX REPLACE "^([^.]+)\\." "\\1-${variant}." name "${src}")
+        endif()
         set(in ${VKBOOK_ROOT}/shaders/${chapter}/${src})
-        set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${src}.spv)
+        set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${name}.spv)
         add_custom_command(
             OUTPUT ${out}
             COMMAND ${CMAKE_COMMAND} -E make_directory ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}
-            COMMAND Vulkan::glslangValidator --target-env vulkan1.3 -I${VKBOOK_ROOT}/shaders/include
+            COMMAND Vulkan::glslangValidator --target-env vulkan1.3 -I${VKBOOK_ROOT}/shaders/include ${defines}
                     --depfile ${out}.d -o ${out} ${in}
             MAIN_DEPENDENCY ${in}
             DEPFILE ${out}.d
-            COMMENT "glslangValidator ${chapter}/${src}"
+            COMMENT "glslangValidator ${chapter}/${name}"
             VERBATIM)
         list(APPEND outputs ${out})
     endforeach()

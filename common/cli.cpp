@@ -80,6 +80,12 @@ void checkScreenshotPath(const std::filesystem::path& path) {
         throw InputError("cannot write screenshot '" + name + "': the file is not writable");
 }
 
+const Choice* findChoice(const ChapterInfo& chapter, std::string_view arg) {
+    for (const Choice& choice : chapter.choices)
+        if (arg == "--" + choice.name) return &choice;
+    return nullptr;
+}
+
 bool isSwitch(const ChapterInfo& chapter, std::string_view name) {
     for (const auto& [switchName, help] : chapter.switches)
         if (switchName == name) return true;
@@ -134,6 +140,22 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             }
             if (!found)
                 throw InputError("--view must be one of " + names + ", got '" + std::string(name) + "'");
+        } else if (const Choice* choice = findChoice(chapter, arg)) {
+            std::string_view given = value();
+            if (choice->values.empty()) {
+                if (given.empty()) throw InputError(std::string(arg) + " needs a non-empty value");
+                options.values[choice->name] = given;
+                continue;
+            }
+            std::string names;
+            bool found = false;
+            for (uint32_t v = 0; v < choice->values.size(); ++v) {
+                names += (v ? "|" : "") + choice->values[v];
+                if (choice->values[v] == given) options.choices[choice->name] = v, found = true;
+            }
+            if (!found)
+                throw InputError(std::string(arg) + " must be one of " + names + ", got '" +
+                                 std::string(given) + "'");
         } else if (arg.starts_with("--") && isSwitch(chapter, arg.substr(2))) {
             options.switches.insert(std::string(arg.substr(2)));
         } else if (arg == "--help" || arg == "-h") {
@@ -169,6 +191,16 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                 std::string names;
                 for (const std::string& view : info.views) names += (names.empty() ? "" : "|") + view;
                 std::printf(kSceneUsage, names.c_str());
+            }
+            for (const Choice& choice : info.choices) {
+                std::string values;
+                for (const std::string& value : choice.values) values += (values.empty() ? "" : "|") + value;
+                if (choice.values.empty())
+                    std::printf("  --%s VALUE\n                     %s\n", choice.name.c_str(),
+                                choice.help.c_str());
+                else
+                    std::printf("  --%s %s\n                     %s (default %s)\n", choice.name.c_str(),
+                                values.c_str(), choice.help.c_str(), choice.values.front().c_str());
             }
             for (const auto& [switchName, help] : info.switches)
                 std::printf("  --%-17s%s\n", switchName.c_str(), help.c_str());

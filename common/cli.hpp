@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -30,10 +31,21 @@ struct Options {
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
     bool help = false;
     // Chapters that render scenes (chapter-10 on):
-    std::filesystem::path scene;     // --scene FILE.json
-    std::filesystem::path model;     // --model FILE.obj
-    uint32_t view = 0;               // --view: index into ChapterInfo::views (0 = the final image)
-    std::set<std::string> switches;  // chapter-specific on/off options given, e.g. "fxaa" for --fxaa
+    std::filesystem::path scene;              // --scene FILE.json
+    std::filesystem::path model;              // --model FILE.obj
+    uint32_t view = 0;                        // --view: index into ChapterInfo::views (0 = the final image)
+    std::set<std::string> switches;           // chapter-specific on/off options given, e.g. "fxaa" for --fxaa
+    std::map<std::string, uint32_t> choices;  // chapter-specific --NAME VALUE: index of VALUE (0 default)
+    std::map<std::string, std::string> values;  // chapter-specific --NAME VALUE of a free-form choice
+};
+
+// A chapter-specific option with a fixed set of values, the first the default:
+// {"gbuffer", {"book", "reference", "compact"}, "the G-buffer layout"} accepts --gbuffer compact.
+// With no values it takes any non-empty value (a path): {"dump", {}, "..."} accepts --dump DIR.
+struct Choice {
+    std::string name;
+    std::vector<std::string> values;
+    std::string help;
 };
 
 // What a chapter is, for --help and for the options only some chapters take.
@@ -45,6 +57,7 @@ struct ChapterInfo {
     std::vector<std::string> views;
     // Chapter-specific on/off options, each with its --help line: {"fxaa", "anti-alias with FXAA"}.
     std::vector<std::pair<std::string, std::string>> switches = {};
+    std::vector<Choice> choices = {};
 };
 
 // Parses argv; throws InputError with a one-line message on any bad argument.

@@ -9,8 +9,10 @@ GBuffer createGBuffer(const Device& device, VkExtent2D extent, std::span<const V
                       VkFormat depthFormat) {
     GBuffer gbuffer;
     for (VkFormat format : colorFormats)
+        // TRANSFER_SRC: the accuracy tools read G-buffers back (chapter-15 --dump).
         gbuffer.colors.push_back(createImage(device, extent, format,
-                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                              VK_IMAGE_ASPECT_COLOR_BIT));
     gbuffer.depth = createImage(device, extent, depthFormat,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
@@ -64,7 +66,7 @@ void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 //< gbuffer-render-init
 
 //> gbuffer-begin-rendering
-void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float depthClear) {
     // What a framebuffer and the render pass's attachment descriptions used to say, now given
     // at record time: one VkRenderingAttachmentInfo per colour attachment, and the depth one.
     std::vector<VkRenderingAttachmentInfo> colors;
@@ -75,7 +77,7 @@ void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
             .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
             .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
             .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}},
+            .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 0.0f}}},  // alpha 0: no surface here
         });
     VkRenderingAttachmentInfo depth{
         .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
@@ -83,7 +85,7 @@ void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
         .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the light pass reads it (--view depth, lighting)
-        .clearValue = {.depthStencil = {1.0f, 0}},
+        .clearValue = {.depthStencil = {depthClear, 0}},
     };
     VkRenderingInfo rendering{
         .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,

@@ -28,7 +28,8 @@ void destroyGBuffer(const Device& device, GBuffer& gbuffer);
 void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer);
 // After the scene pass: every attachment to READ_ONLY_OPTIMAL, visible to the light pass.
 void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer);
-// vkCmdBeginRendering on all attachments, cleared to zero (depth to 1) and stored.
-void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer);
+// vkCmdBeginRendering on all attachments, cleared to zero (depth to `depthClear`: 1, or 0 with
+// reversed-Z) and stored.
+void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float depthClear = 1.0f);
 
 }  // namespace common

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,22 @@ std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat 
         throw Failure("readFloatImage: unsupported format " + std::to_string(format));
     }
     return values;
+}
+
+void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgba, int channels, int firstChannel) {
+    std::ofstream out(path, std::ios::binary);
+    out << (channels == 3 ? "PF" : "Pf") << "\n"
+        << width << " " << height << "\n-1.0\n";  // -1: little-endian
+    std::vector<float> row(size_t(width) * size_t(channels));
+    for (uint32_t y = height; y-- > 0;) {
+        for (uint32_t x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c)
+                row[size_t(x) * size_t(channels) + size_t(c)] =
+                    rgba[(size_t(y) * width + x) * 4 + size_t(firstChannel + c)];
+        out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
+    }
+    if (!out) throw Failure("cannot write '" + path.string() + "'");
 }
 
 void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,

@@ -28,4 +28,9 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
 std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
                                   VkImageLayout layout);
 
+// Writes 4-float texels (as readFloatImage returns them) as a Portable Float Map: channels 3
+// ("PF", RGB) or 1 ("Pf", the R channel only). Rows go bottom to top, as the format says.
+void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgba, int channels, int firstChannel = 0);
+
 }  // namespace common

@@ -1,8 +1,12 @@
 #version 450
 // chapter-15 scene pass: writes the book's G-buffer -- world position, albedo, normal (normal
-// map applied) and PBR data (AO, roughness, metallic) -- one colour attachment each.
+// map applied) and PBR data (AO, roughness, metallic) -- one colour attachment each. Compiled a
+// second time with COMPACT_GBUFFER for --gbuffer compact: no position (the light pass
+// reconstructs it from depth), the normal octahedral-encoded in 2 x 16 bits, albedo in 3 x 10
+// bits (gamma 2), roughness and metallic in 2 x 16 bits (AO is a constant: not stored).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.glsl"
+#include "octahedral.glsl"
 #include "pbr.glsl"
 
 //> scene-frag
@@ -12,10 +16,16 @@ layout(location = 2) in vec3 inTangent;
 layout(location = 3) in vec3 inBitangent;
 layout(location = 4) in vec2 inUv;
 
+#ifdef COMPACT_GBUFFER
+layout(location = 0) out vec4 outAlbedo;  // A2B10G10R10_UNORM: sqrt(albedo), alpha = coverage
+layout(location = 1) out vec2 outNormal;  // R16G16_UNORM, octahedral
+layout(location = 2) out vec2 outPbr;     // R16G16_UNORM: roughness, metallic
+#else
 layout(location = 0) out vec4 outPosition;
 layout(location = 1) out vec4 outAlbedo;
 layout(location = 2) out vec4 outNormal;
 layout(location = 3) out vec4 outPbr;
+#endif
 
 layout(std430, set = 1, binding = 0) readonly buffer Materials {
     Material materials[];
@@ -45,11 +55,22 @@ void main() {
     vec3 mapped = texture(normalTexture, inUv).rgb * 2.0 - 1.0;  // tangent space, z out of the surface
     vec3 normal = safeNormalize(mat3(T, B, N) * mapped, N);
 
-    vec4 metalRough = texture(metalRoughTexture, inUv);  // G roughness, B metallic (glTF and the book)
-    float ao = 0.5;  // fixed, as in the book (no AO maps yet)
+#ifdef COMPACT_GBUFFER
+    outNormal = encodeOctahedral(normal);
+#else
     outPosition = vec4(inWorldPosition, 1.0);
-    outAlbedo = vec4(albedo.rgb, 1.0);
     outNormal = vec4(normal, 1.0);
-    outPbr = vec4(ao, material.roughness * metalRough.g, material.metallic * metalRough.b, 1.0);
+#endif
+    float ao = 0.5;  // fixed, as in the book (no AO maps yet); the lighting does not read it
+    vec4 metalRough = texture(metalRoughTexture, inUv);  // G roughness, B metallic (glTF and the book)
+    float roughness = material.roughness * metalRough.g, metallic = material.metallic * metalRough.b;
+#ifdef COMPACT_GBUFFER
+    // Gamma 2 puts the 10 bits where the eye needs them (dark values), like sRGB but cheap to undo.
+    outAlbedo = vec4(sqrt(albedo.rgb), 1.0);  // alpha 1 marks "a surface is here" (cleared to 0)
+    outPbr = vec2(roughness, metallic);
+#else
+    outAlbedo = vec4(albedo.rgb, 1.0);  // alpha 1 marks "a surface is here" (cleared to 0)
+    outPbr = vec4(ao, roughness, metallic, 1.0);
+#endif
 }
 //< scene-frag
