@@ -18,4 +18,5 @@ struct ComputeBinding {
 // Binds `bindings` as set 0 (binding i = bindings[i]), pushes `pushSize` bytes of `push`,
 // dispatches `groups` workgroups, makes the results visible to the host and waits.
 void runCompute(const common::Device& device, const std::filesystem::path& spirv,
-                const std::vector<ComputeBinding>& bindings, const void* push, uint32_t pushSize, uint32_t groups);
+                const std::vector<ComputeBinding>& bindings, const void* push, uint32_t pushSize,
+                uint32_t groups);
