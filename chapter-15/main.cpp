@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "common/benchmark.hpp"
 #include "common/camera.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
@@ -231,6 +233,11 @@ void run(const common::Options& options) {
                         .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
                         .view = int(options.view)};
     bool fxaa = options.switches.count("fxaa") != 0;
+
+    // --benchmark: timestamps around the three passes, and the frame statistics.
+    common::GpuTimer gpuTimer =
+        common::createGpuTimer(device, options.framesInFlight, {"scene", "light", "post"});
+    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
     //< setup
 
     auto recreateTarget = [&] {
@@ -246,6 +253,7 @@ void run(const common::Options& options) {
     bool viewKeyDown = false, fxaaKeyDown = false;
     float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
     for (uint32_t frame = 0;;) {
+        auto frameStart = std::chrono::steady_clock::now();
         bool lastFrame = common::pollTarget(target, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
@@ -265,6 +273,7 @@ void run(const common::Options& options) {
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        if (options.benchmark) common::readGpuTimer(device, gpuTimer, slot, stats);  // this slot's last frame
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
             if (!recreateTarget()) break;
@@ -287,9 +296,13 @@ void run(const common::Options& options) {
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+        if (options.benchmark) common::beginGpuTimer(gpuTimer, sync.commandBuffer, slot, frame);
         recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 0);
         recordLightPass(sync.commandBuffer, lightPass, slot, lightView);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 2);
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -313,12 +326,32 @@ void run(const common::Options& options) {
             common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
                                    target.presentLayout, options.screenshot);
         bool current = common::presentTargetImage(target, device, imageIndex);
+        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
+        common::addCpuFrame(
+            stats, frame,
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (options.benchmark) {
+        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
+            common::readGpuTimer(device, gpuTimer, slot, stats);
+        const char* layouts[] = {"book", "reference", "compact"};
+        common::reportBenchmark(
+            stats,
+            {{"chapter", "chapter-15"},
+             {"device", device.properties.deviceName},
+             {"driver", device.driver},
+             {"resolution", std::to_string(target.extent.width) + "x" + std::to_string(target.extent.height)},
+             {"gbuffer", layouts[int(layout)]},
+             {"gbuffer_bytes_per_pixel", std::to_string(gbufferBytesPerPixel(layout))},
+             {"frames_in_flight", std::to_string(options.framesInFlight)},
+             {"present",
+              target.window ? (target.vsync ? "window, vsync" : "window, no vsync") : "headless"}});
+    }
 
     if (lightControls.moved) {
         glm::vec3 p =
@@ -330,6 +363,7 @@ void run(const common::Options& options) {
     if (options.values.count("dump")) dumpFrame(device, lightPass, scenePass, options.values.at("dump"));
 
     //> teardown
+    common::destroyGpuTimer(device, gpuTimer);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);

@@ -39,6 +39,16 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline bool reversedZ(GBufferLayout layout) {
     return layout == GBufferLayout::Compact;
 }
+
+// Bytes per pixel of the colour attachments and D32_SFLOAT depth.
+inline uint32_t gbufferBytesPerPixel(GBufferLayout layout) {
+    uint32_t bytes = 4;  // depth
+    for (VkFormat format : gbufferColorFormats(layout))
+        bytes += format == VK_FORMAT_R32G32B32A32_SFLOAT   ? 16
+                 : format == VK_FORMAT_R16G16B16A16_SFLOAT ? 8
+                                                           : 4;  // the 32-bit formats of the compact layout
+    return bytes;
+}
 //< gbuffer-layouts
 
 struct ScenePass {

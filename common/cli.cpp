@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <string_view>
 
@@ -15,7 +16,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
-    "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH] [--help]%s\n"
+    "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH] [--help]\n"
+    "          [--benchmark [--warmup N] [--json FILE]]%s\n"
     "\n"
     "  --headless         render offscreen, no window or display needed\n"
     "  --width W          image width, 1..16384 (default 1280)\n"
@@ -28,6 +30,9 @@ constexpr const char* kUsage =
     "                     exit with code 3 if it reports any warning or error\n"
     "  --resize WxH       (testing) resize the window or offscreen target to WxH after half of\n"
     "                     --frames\n"
+    "  --benchmark        render --warmup frames (default 10), then --frames (default 100) measured\n"
+    "                     ones without vsync; print CPU and GPU frame and pass times\n"
+    "  --json FILE        with --benchmark: also write the report as JSON\n"
     "  --help             print this text\n";
 
 constexpr const char* kSceneUsage =
@@ -112,6 +117,13 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         } else if (arg == "--frames") {
             options.frames = parseNumber(arg, value(), 1, 10'000'000);
             framesGiven = true;
+        } else if (arg == "--benchmark") {
+            options.benchmark = true;
+        } else if (arg == "--warmup") {
+            options.warmup = parseNumber(arg, value(), 0, 100000);
+        } else if (arg == "--json") {
+            options.json = value();
+            if (options.json.empty()) throw InputError("--json needs a file name");
         } else if (arg == "--frames-in-flight") {
             options.framesInFlight = parseNumber(arg, value(), 1, 3);
         } else if (arg == "--screenshot") {
@@ -166,6 +178,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             throw InputError("unexpected argument '" + std::string(arg) + "' (see --help)");
         }
     }
+    if (!options.json.empty() && !options.benchmark) throw InputError("--json goes with --benchmark");
     if (!options.scene.empty() && !options.model.empty())
         throw InputError("--scene and --model exclude each other");
     if (options.resizeTo && (!framesGiven || options.frames < 2))
@@ -174,8 +187,17 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
 }
 
 uint32_t frameCount(const Options& options) {
+    if (options.benchmark) return options.warmup + (options.frames != 0 ? options.frames : 100);
     if (options.frames != 0) return options.frames;
     return options.headless ? 1 : 0;
+}
+
+namespace {
+const std::chrono::steady_clock::time_point gStart = std::chrono::steady_clock::now();
+}
+
+double millisecondsSinceStart() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - gStart).count();
 }
 
 int runChapter(int argc, const char* const* argv, const ChapterInfo& info,

@@ -30,6 +30,10 @@ struct Options {
     bool validation = false;
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
     bool help = false;
+    // --benchmark: render --warmup frames, then --frames measured ones (default 100), no vsync.
+    bool benchmark = false;
+    uint32_t warmup = 10;
+    std::filesystem::path json;  // --json FILE: the benchmark report as JSON
     // Chapters that render scenes (chapter-10 on):
     std::filesystem::path scene;              // --scene FILE.json
     std::filesystem::path model;              // --model FILE.obj
@@ -70,5 +74,8 @@ uint32_t frameCount(const Options& options);
 // happened to the exit codes above. Every chapter's main() is this one call.
 int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                const std::function<void(const Options&)>& chapter);
+
+// Milliseconds since the process started (more exactly: since its static initialisation).
+double millisecondsSinceStart();
 
 }  // namespace common

@@ -145,6 +145,16 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     device.properties = chosen.properties;
     device.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
+    VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                            .pNext = &driver};
+    vkGetPhysicalDeviceProperties2(device.physical, &properties2);
+    device.driver = std::string(driver.driverName) + ", " + driver.driverInfo;
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device.physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(device.physical, &familyCount, families.data());
+    device.timestampValidBits = families[device.queueFamily].timestampValidBits;
 
     std::vector<const char*> extensions;
     if (surface != VK_NULL_HANDLE) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <string_view>
 
 #include "common/instance.hpp"
@@ -13,6 +14,8 @@ namespace common {
 struct Device {
     VkPhysicalDevice physical = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties{};
+    std::string driver;               // driver name and version, e.g. "llvmpipe, Mesa 22.3.6"
+    uint32_t timestampValidBits = 0;  // of the queue family; 0: no timestamps
     VkPhysicalDeviceMemoryProperties memory{};
     VkDevice handle = VK_NULL_HANDLE;
     uint32_t queueFamily = 0;  // graphics, and present when there is a surface

@@ -70,6 +70,19 @@ void createSwapchain(Target& target, const Device& device) {
         compositeAlpha = static_cast<VkCompositeAlphaFlagBitsKHR>(
             caps.supportedCompositeAlpha & ~(caps.supportedCompositeAlpha - 1));  // lowest supported bit
 
+    // FIFO waits for the display's vertical blank and is always there. A benchmark measures the
+    // renderer, not the display: MAILBOX (newest frame wins) or IMMEDIATE when offered.
+    VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
+    if (!target.vsync) {
+        uint32_t modeCount = 0;
+        VK_CHECK(
+            vkGetPhysicalDeviceSurfacePresentModesKHR(device.physical, target.surface, &modeCount, nullptr));
+        std::vector<VkPresentModeKHR> modes(modeCount);
+        VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(device.physical, target.surface, &modeCount,
+                                                           modes.data()));
+        for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_IMMEDIATE_KHR, VK_PRESENT_MODE_MAILBOX_KHR})
+            if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) presentMode = wanted;
+    }
     VkSwapchainKHR old = target.swapchain;
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
@@ -85,7 +98,7 @@ void createSwapchain(Target& target, const Device& device) {
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
         .preTransform = caps.currentTransform,
         .compositeAlpha = compositeAlpha,
-        .presentMode = VK_PRESENT_MODE_FIFO_KHR,  // always available; waits for vertical blank
+        .presentMode = presentMode,
         .clipped = VK_TRUE,
         .oldSwapchain = old,
     };
@@ -145,6 +158,7 @@ Target openTarget(const Options& options, const char* title) {
     target.requestedExtent = {options.width, options.height};
     target.frameLimit = frameCount(options);
     target.scriptedResize = options.resizeTo;
+    target.vsync = !options.benchmark;
     if (options.headless) return target;
 
     if (!glfwInit()) throw Failure("cannot open a window (" + glfwErrorText() + "); run with --headless");

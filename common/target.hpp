@@ -45,6 +45,7 @@ struct Target {
     uint32_t frameLimit = 0;       // 0: until the window is closed
     std::optional<VkExtent2D> scriptedResize;  // --resize, applied at frame frameLimit / 2
     uint32_t nextOffscreen = 0;
+    bool vsync = true;  // false with --benchmark: MAILBOX or IMMEDIATE when the surface offers one
 };
 
 // Opens the window (or nothing, headless) described by the command line.

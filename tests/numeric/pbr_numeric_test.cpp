@@ -16,6 +16,9 @@
 // --check random: on the random samples, e <= 1e-3 at the 99.9th percentile and <= 1e-2 at worst.
 // --check hard:   on every hard case, e <= 1e-3 for every output (the fp64 value of the same robust
 //                 formula), and the light is used or skipped exactly as the reference does it.
+// --deviations:   no GPU; in fp64, our formula with one of its deviations from the book's shader
+//                 undone at a time (and the book's shader whole), on the random samples and the
+//                 hard cases: how often each gives NaN or infinity, and how far it moves the result.
 // Every mode prints the table of worst cases. Exit 0 when the check passes.
 #include <algorithm>
 #include <cmath>
@@ -214,6 +217,118 @@ std::string check;
 size_t sampleCount = 100000;
 const char* shaderPath = nullptr;
 
+// ---- --deviations: the book's chapter-15 shading, and ours with one deviation undone ----------
+
+struct Variant {
+    const char* name;
+    bool bookDirection = false;  // L = normalize((light - P) - P)
+    bool bookEpsilon = false;    // D G F / (4 NdotV NdotL + 0.0001) instead of D Vis F
+    bool noRoughnessClamp = false;
+    bool bookHalfVector = false;    // H = normalize(V + L), no fallback
+    bool noSkip = false;            // multiply by max(NdotL, 0) instead of skipping the light
+    bool bookFalloff = false;       // 1 / d^2 instead of 1 / max(d^2, 1e-4)
+    bool bookDistribution = false;  // GGX with 1 - NdotH^2 instead of |N x H|^2
+};
+
+dvec3 variantRadiance(const Sample& s, const Variant& v) {
+    namespace pbr = common::pbr;
+    dvec3 P(s.worldPositionMetallic), N = pbr::surfaceNormal(dvec3(s.storedNormalRoughness));
+    dvec3 V = pbr::viewDirection(P, dvec3(s.cameraPosition), N), albedo(s.albedo);
+    double metallic = std::clamp(double(s.worldPositionMetallic.w), 0.0, 1.0);
+    double roughness = v.noRoughnessClamp ? std::clamp(double(s.storedNormalRoughness.w), 0.0, 1.0)
+                                          : std::clamp(double(s.storedNormalRoughness.w), 0.045, 1.0);
+    dvec3 light(s.lightPositionDirectional), L;
+    double attenuation = 1.0;
+    if (s.lightPositionDirectional.w != 0.0f) {
+        L = glm::normalize(-light);
+    } else {
+        dvec3 toLight = light - P;
+        double d2 = glm::dot(toLight, toLight);
+        if (!v.bookDirection && !v.bookFalloff && !(d2 > 0.0)) return dvec3(0.0);
+        L = glm::normalize(v.bookDirection ? toLight - P : toLight);
+        attenuation = v.bookFalloff ? 1.0 / d2 : 1.0 / std::max(d2, 1e-4);
+    }
+    double NdotL = glm::dot(N, L);
+    if (!v.noSkip && !(NdotL > 0.0)) return dvec3(0.0);
+    dvec3 h = V + L;
+    dvec3 H = v.bookHalfVector ? glm::normalize(h) : (glm::dot(h, h) > 1e-6 ? glm::normalize(h) : N);
+    double NdotV = std::max(glm::dot(N, V), 0.0), NL = std::clamp(NdotL, 0.0, 1.0);
+    double NdotH = std::max(glm::dot(N, H), 0.0), HdotV = std::max(glm::dot(H, V), 0.0);
+    double alpha = roughness * roughness, D;
+    if (v.bookDistribution || v.noRoughnessClamp) {  // the book's form
+        double a2 = alpha * alpha, denom = NdotH * NdotH * (a2 - 1.0) + 1.0;
+        D = a2 / (pbr::kPi * denom * denom);
+    } else {
+        D = pbr::distributionGGX(N, H, std::min(NdotH, 1.0), roughness);
+    }
+    dvec3 F = pbr::fresnelSchlick(HdotV, glm::mix(dvec3(0.04), albedo, metallic));
+    dvec3 specular;
+    if (v.bookEpsilon) {
+        double k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
+        double G = NdotV / (NdotV * (1 - k) + k) * (NL / (NL * (1 - k) + k));
+        specular = D * G * F / (4.0 * NdotV * NL + 0.0001);
+    } else {
+        specular = D * pbr::visibilitySmithSchlick(NdotV, NL, roughness) * F;
+    }
+    dvec3 kD = (dvec3(1.0) - F) * (1.0 - metallic);
+    return (kD * albedo / pbr::kPi + specular) * dvec3(s.lightColorIntensity) *
+           double(s.lightColorIntensity.w) * attenuation * NL;
+}
+
+void reportDeviations() {
+    std::vector<Case> cases = randomCases(sampleCount);
+    size_t randomCount = cases.size();
+    std::vector<Case> hard = hardCases();
+    cases.insert(cases.end(), hard.begin(), hard.end());
+    const Variant variants[] = {
+        {.name = "ours"},
+        {.name = "point-light direction of the book", .bookDirection = true},
+        {.name = "epsilon 0.0001 in the denominator", .bookEpsilon = true},
+        {.name = "no roughness clamp", .noRoughnessClamp = true},
+        {.name = "1 - NdotH^2 GGX form", .bookDistribution = true},
+        {.name = "H without the V = -L fallback", .bookHalfVector = true},
+        {.name = "max(NdotL, 0) instead of a skip", .noSkip = true},
+        {.name = "1/d^2 without the 1 cm bound", .bookFalloff = true},
+        {.name = "the book's shader, all of the above",
+         .bookDirection = true,
+         .bookEpsilon = true,
+         .noRoughnessClamp = true,
+         .bookHalfVector = true,
+         .noSkip = true,
+         .bookFalloff = true,
+         .bookDistribution = true},
+    };
+    std::printf("%-38s %9s %9s %12s %12s %12s\n", "variant (fp64)", "NaN/inf", "NaN/inf", "median e",
+                "99th pct e", "max e");
+    std::printf("%-38s %9s %9s %12s %12s %12s\n", "", "(random)", "(hard)", "(random)", "(random)",
+                "(random)");
+    for (const Variant& variant : variants) {
+        size_t badRandom = 0, badHard = 0;
+        std::vector<double> errors;
+        for (size_t i = 0; i < cases.size(); ++i) {
+            dvec3 ours = variantRadiance(cases[i].sample, variants[0]);
+            dvec3 theirs = variantRadiance(cases[i].sample, variant);
+            bool finite = std::isfinite(theirs.x) && std::isfinite(theirs.y) && std::isfinite(theirs.z);
+            if (!finite) (i < randomCount ? badRandom : badHard) += 1;
+            if (i >= randomCount || !finite) continue;
+            double o[3] = {ours.x, ours.y, ours.z}, t[3] = {theirs.x, theirs.y, theirs.z};
+            errors.push_back(relativeError(t, o, 3));
+        }
+        std::sort(errors.begin(), errors.end());
+        auto at = [&](double p) {
+            return errors.empty() ? 0.0
+                                  : errors[std::min(errors.size() - 1, size_t(p * double(errors.size())))];
+        };
+        std::printf("%-38s %9zu %9zu %12.3e %12.3e %12.3e\n", variant.name, badRandom, badHard, at(0.5),
+                    at(0.99), errors.empty() ? 0.0 : errors.back());
+    }
+    std::printf(
+        "e: relative difference of the light's contribution from ours (max norm over RGB), %zu random "
+        "samples, "
+        "%zu hard cases\n",
+        randomCount, hard.size());
+}
+
 void run(const common::Options& options) {
     std::vector<Case> cases = check == "hard" ? hardCases() : randomCases(sampleCount);
     if (check == "finite") {
@@ -304,6 +419,10 @@ int main(int argc, char** argv) {
     std::vector<const char*> rest = {argv[0]};
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
+        if (arg == "--deviations") {
+            reportDeviations();
+            return 0;
+        }
         if (arg == "--check" && i + 1 < argc)
             check = argv[++i];
         else if (arg == "--samples" && i + 1 < argc)
@@ -314,7 +433,9 @@ int main(int argc, char** argv) {
             rest.push_back(argv[i]);
     }
     if (!shaderPath || (check != "finite" && check != "random" && check != "hard")) {
-        std::fprintf(stderr, "usage: pbr_numeric_test SHADER.spv --check finite|random|hard [--samples N]\n");
+        std::fprintf(
+            stderr,
+            "usage: pbr_numeric_test SHADER.spv --check finite|random|hard [--samples N] | --deviations\n");
         return 2;
     }
     return common::runChapter(int(rest.size()), rest.data(),
