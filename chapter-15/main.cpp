@@ -168,11 +168,13 @@ void checkLightOutput(const common::Device& device, const LightPass& lightPass) 
         throw common::Failure("the light output has NaN, infinite or negative values");
 }
 
-// --dump DIR: the last frame's light output, light.pfm, and -- for the layouts that store floats
-// -- the G-buffer as position/albedo/normal/pbr.pfm plus coverage.pfm (1 where a surface is). The
-// accuracy tools (tests/accuracy/) shade these on the CPU in double precision.
+// --dump DIR: the last frame's light output, light.pfm; the distance from the camera plane of
+// each pixel's surface, distance.pfm (from the depth attachment: it tells which surface a layout
+// sees); and -- for the layouts that store floats -- the G-buffer as position/albedo/normal/pbr.pfm
+// plus coverage.pfm (1 where a surface is). The accuracy tools (tests/accuracy/) shade these on
+// the CPU in double precision.
 void dumpFrame(const common::Device& device, const LightPass& lightPass, const ScenePass& scenePass,
-               const std::filesystem::path& directory) {
+               const LightView& view, const std::filesystem::path& directory) {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);
     VkExtent2D extent = lightPass.output.extent;
@@ -180,7 +182,31 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
                      common::readFloatImage(device, lightPass.output.handle, kLightOutputFormat, extent,
                                             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL),
                      3);
-    if (scenePass.layout == GBufferLayout::Compact) return;
+    std::vector<float> distance = common::readFloatImage(device, scenePass.gbuffer.depth.handle, kDepthFormat,
+                                                         extent, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    for (size_t i = 0; i < distance.size();
+         i += 4) {  // depth.glsl's eyeDistance(), planes swapped when reversed
+        double n = view.reversedZ ? view.far : view.near, f = view.reversedZ ? view.near : view.far;
+        distance[i] = float(n * f / (f - double(distance[i]) * (f - n)));
+    }
+    common::writePfm(directory / "distance.pfm", extent.width, extent.height, distance, 1);
+    if (scenePass.layout == GBufferLayout::Compact) {
+        // The compact normals, decoded (octahedral.glsl's decodeOctahedral): which surface each pixel shows.
+        const common::Image& normals = scenePass.gbuffer.colors[1];
+        std::vector<float> texels = common::readFloatImage(device, normals.handle, normals.format, extent,
+                                                           VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        for (size_t i = 0; i < texels.size(); i += 4) {
+            glm::vec2 p(texels[i] * 2.0f - 1.0f, texels[i + 1] * 2.0f - 1.0f);
+            glm::vec3 n(p, 1.0f - std::abs(p.x) - std::abs(p.y));
+            if (n.z < 0.0f)
+                n = glm::vec3((1.0f - std::abs(n.y)) * (n.x >= 0 ? 1.0f : -1.0f),
+                              (1.0f - std::abs(n.x)) * (n.y >= 0 ? 1.0f : -1.0f), n.z);
+            n = glm::normalize(n);
+            texels[i] = n.x, texels[i + 1] = n.y, texels[i + 2] = n.z;
+        }
+        common::writePfm(directory / "normal.pfm", extent.width, extent.height, texels, 3);
+        return;
+    }
     const char* names[] = {"position", "albedo", "normal", "pbr"};
     for (size_t i = 0; i < 4; ++i) {
         const common::Image& image = scenePass.gbuffer.colors[i];
@@ -360,7 +386,8 @@ void run(const common::Options& options) {
                     lightControls.sunAngle, p.x, p.y, p.z);
     }
     if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
-    if (options.values.count("dump")) dumpFrame(device, lightPass, scenePass, options.values.at("dump"));
+    if (options.values.count("dump"))
+        dumpFrame(device, lightPass, scenePass, lightView, options.values.at("dump"));
 
     //> teardown
     common::destroyGpuTimer(device, gpuTimer);

@@ -124,6 +124,12 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
             .vertexInput = &vertexInput.state,
+            // Back faces are never seen on closed meshes (the book culls none): culling them saves
+            // their fragments, and removes depth ties where a back face meets a front face at a
+            // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
+            // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
+            .cullMode = VK_CULL_MODE_BACK_BIT,
+            .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
             .depthTest = true,
             .depthWrite = true,
             // Reversed-Z: nearer is larger.

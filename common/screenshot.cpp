@@ -38,7 +38,8 @@ bool channelOffsets(VkFormat format, int offsets[3]) {
 }
 
 VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
-                                   VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+                                   VkAccessFlags srcAccess, VkAccessFlags dstAccess,
+                                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT) {
     return {
         .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
         .srcAccessMask = srcAccess,
@@ -48,14 +49,14 @@ VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLay
         .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
         .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
         .image = image,
-        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+        .subresourceRange = {aspect, 0, 1, 0, 1},
     };
 }
 
 }  // namespace
 
 std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D extent, VkImageLayout layout,
-                               uint32_t bytesPerTexel) {
+                               uint32_t bytesPerTexel, VkImageAspectFlags aspect) {
     VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * bytesPerTexel;
     Buffer readback =
         createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -65,17 +66,18 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
     // Whatever wrote the image earlier on this queue (a render pass, a blit) is done and visible
     // to the copy; the image goes back to `layout` afterwards, so the caller's next step (present)
     // finds it as it left it.
-    VkImageMemoryBarrier toTransfer = layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                                    VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    VkImageMemoryBarrier toTransfer =
+        layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT,
+                      VK_ACCESS_TRANSFER_READ_BIT, aspect);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toTransfer);
     VkBufferImageCopy region{
-        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+        .imageSubresource = {aspect, 0, 0, 1},
         .imageExtent = {extent.width, extent.height, 1},
     };
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle, 1, &region);
-    VkImageMemoryBarrier back =
-        layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_ACCESS_TRANSFER_READ_BIT, 0);
+    VkImageMemoryBarrier back = layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                                              VK_ACCESS_TRANSFER_READ_BIT, 0, aspect);
     VkBufferMemoryBarrier toHost{
         .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER,
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -110,6 +112,17 @@ std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat 
             std::memcpy(&half, bytes.data() + i * 2, 2);
             values[i] = glm::unpackHalf1x16(half);
         }
+    } else if (format == VK_FORMAT_R16G16_UNORM) {
+        std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 4);
+        for (size_t i = 0; i < count / 4; ++i)
+            for (size_t c = 0; c < 2; ++c) {
+                uint16_t v;
+                std::memcpy(&v, bytes.data() + i * 4 + c * 2, 2);
+                values[i * 4 + c] = float(v) / 65535.0f;
+            }
+    } else if (format == VK_FORMAT_D32_SFLOAT) {
+        std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 4, VK_IMAGE_ASPECT_DEPTH_BIT);
+        for (size_t i = 0; i < count / 4; ++i) std::memcpy(&values[i * 4], bytes.data() + i * 4, 4);
     } else {
         throw Failure("readFloatImage: unsupported format " + std::to_string(format));
     }

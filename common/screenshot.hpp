@@ -22,9 +22,10 @@ void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExte
 // The texels of a 2D colour image, tightly packed, after all earlier work on the queue. `image`
 // is in `layout` and stays in it.
 std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D extent, VkImageLayout layout,
-                               uint32_t bytesPerTexel);
+                               uint32_t bytesPerTexel, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
 
-// An R32G32B32A32_SFLOAT or R16G16B16A16_SFLOAT image as 4 floats per texel.
+// An R32G32B32A32_SFLOAT or R16G16B16A16_SFLOAT image as 4 floats per texel; an R16G16_UNORM or
+// D32_SFLOAT image in the first 2 or 1 of the 4.
 std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
                                   VkImageLayout layout);
 
