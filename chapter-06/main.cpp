@@ -7,9 +7,11 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
+#include "common/benchmark.hpp"
 #include "common/buffer.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
@@ -22,6 +24,8 @@
 #include "common/target.hpp"
 
 namespace {
+
+const common::ChapterInfo kChapter{"chapter-06", "drawing a triangle (the book's chapter 6)", {}};
 
 //> mesh-data
 // The book's MeshData: what the application knows about a mesh before the GPU has it.
@@ -196,12 +200,14 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
 //> record
 // Re-recorded every frame, as the book does from this chapter on.
 void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebuffer framebuffer,
-                         VkExtent2D extent, const Pipeline& pipeline, const std::vector<Mesh>& meshes) {
+                         VkExtent2D extent, const Pipeline& pipeline, const std::vector<Mesh>& meshes,
+                         common::GpuTimer* timer, uint32_t slot, uint32_t frame) {
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
     };
     VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
+    if (timer) common::beginGpuTimer(*timer, cmd, slot, frame);  // --benchmark only
 
     VkClearValue clear{.color = {{0.5f, 0.7f, 0.9f, 1.0f}}};
     VkRenderPassBeginInfo passInfo{
@@ -237,6 +243,7 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
     }
 
     vkCmdEndRenderPass(cmd);
+    if (timer) common::markGpuPass(*timer, cmd, slot, 0);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
 //< record
@@ -263,6 +270,10 @@ void run(const common::Options& options) {
     std::vector<VkFramebuffer> framebuffers = createFramebuffers(device, renderPass, target);
     common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-06");
     Pipeline pipeline = createPipeline(device, pipelineCache.handle, renderPass, vertexInput);
+
+    // --benchmark: a timestamp before and after the one pass, and the frame statistics.
+    common::GpuTimer gpuTimer = common::createGpuTimer(device, options.framesInFlight, {"triangle"});
+    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
     //< setup
 
     //> frame-loop
@@ -276,11 +287,13 @@ void run(const common::Options& options) {
     };
 
     for (uint32_t frame = 0;;) {
+        auto frameStart = std::chrono::steady_clock::now();
         bool lastFrame = common::pollTarget(target, frame);
         common::FrameSync& sync = frames[frame % options.framesInFlight];
 
         // Wait until the GPU is done with this slot's command buffer, used options.framesInFlight frames ago.
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        if (options.benchmark) common::readGpuTimer(device, gpuTimer, frame % options.framesInFlight, stats);
 
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
@@ -291,7 +304,8 @@ void run(const common::Options& options) {
 
         VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
         recordCommandBuffer(sync.commandBuffer, renderPass, framebuffers[imageIndex], target.extent, pipeline,
-                            meshes);
+                            meshes, options.benchmark ? &gpuTimer : nullptr, frame % options.framesInFlight,
+                            frame);
 
         // Colour output waits for the image; the target's semaphore for this image says when the
         // drawing is done; the fence says when this frame's command buffer is free again.
@@ -313,14 +327,24 @@ void run(const common::Options& options) {
                                    target.presentLayout, options.screenshot);
 
         bool current = common::presentTargetImage(target, device, imageIndex);
+        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
+        common::addCpuFrame(
+            stats, frame,
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (options.benchmark) {
+        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
+            common::readGpuTimer(device, gpuTimer, slot, stats);
+        common::reportBenchmark(stats, common::benchmarkInfo(kChapter, options, device, target));
+    }
 
     //> teardown
+    common::destroyGpuTimer(device, gpuTimer);
     common::savePipelineCache(device, pipelineCache);
     vkDestroyPipeline(device.handle, pipeline.handle, nullptr);
     vkDestroyPipelineLayout(device.handle, pipeline.layout, nullptr);
@@ -343,6 +367,5 @@ void run(const common::Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return common::runChapter(argc, argv, {"chapter-06", "drawing a triangle (the book's chapter 6)", {}},
-                              run);
+    return common::runChapter(argc, argv, kChapter, run);
 }

@@ -8,10 +8,12 @@
 // Models, textures, the scene file and the camera (the book's chapters 7-9) come from common/.
 #include <vulkan/vulkan.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
+#include "common/benchmark.hpp"
 #include "common/camera.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
@@ -87,6 +89,13 @@ void run(const common::Options& options) {
     common::CameraInput cameraInput;
     setProjection(geometryPass, common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near,
                                                          scene.camera.far));
+
+    // --benchmark: timestamps at the start, after the geometry pass, after the lighting pass. The
+    // lighting command buffers are pre-recorded per image, so the last timestamp goes into the frame
+    // slot's own small command buffer, submitted right after the lighting one.
+    common::GpuTimer gpuTimer =
+        common::createGpuTimer(device, options.framesInFlight, {"geometry", "lighting"});
+    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
     //< setup
 
     //> resize
@@ -110,6 +119,7 @@ void run(const common::Options& options) {
     double lastTime = glfwGetTime();
     bool viewKeyDown = false;
     for (uint32_t frame = 0;;) {
+        auto frameStart = std::chrono::steady_clock::now();
         bool lastFrame = common::pollTarget(target, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
@@ -130,6 +140,7 @@ void run(const common::Options& options) {
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        if (options.benchmark) common::readGpuTimer(device, gpuTimer, slot, stats);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
             if (!recreateTarget()) break;
@@ -149,7 +160,9 @@ void run(const common::Options& options) {
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(geometry.commandBuffer, &beginInfo));
+        if (options.benchmark) common::beginGpuTimer(gpuTimer, geometry.commandBuffer, slot, frame);
         recordGeometryPass(geometry.commandBuffer, geometryPass, gpuScene, slot);
+        if (options.benchmark) common::markGpuPass(gpuTimer, geometry.commandBuffer, slot, 0);
         VK_CHECK(vkEndCommandBuffer(geometry.commandBuffer));
         VkSubmitInfo geometrySubmit{
             .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
@@ -167,13 +180,20 @@ void run(const common::Options& options) {
         VkSemaphore waits[] = {geometry.geometryComplete, sync.imageAvailable};
         VkPipelineStageFlags waitStages[] = {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                                              VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT};
+        VkCommandBuffer lighting[] = {lightingPass.commandBuffers[imageIndex], sync.commandBuffer};
+        if (options.benchmark) {
+            VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
+            VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+            common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);
+            VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+        }
         VkSubmitInfo lightingSubmit{
             .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
             .waitSemaphoreCount = 2,
             .pWaitSemaphores = waits,
             .pWaitDstStageMask = waitStages,
-            .commandBufferCount = 1,
-            .pCommandBuffers = &lightingPass.commandBuffers[imageIndex],
+            .commandBufferCount = options.benchmark ? 2u : 1u,
+            .pCommandBuffers = lighting,
             .signalSemaphoreCount = 1,
             .pSignalSemaphores = &target.renderFinished[imageIndex],
         };
@@ -183,14 +203,24 @@ void run(const common::Options& options) {
             common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
                                    target.presentLayout, options.screenshot);
         bool current = common::presentTargetImage(target, device, imageIndex);
+        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
+        common::addCpuFrame(
+            stats, frame,
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (options.benchmark) {
+        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
+            common::readGpuTimer(device, gpuTimer, slot, stats);
+        common::reportBenchmark(stats, common::benchmarkInfo(kChapter, options, device, target));
+    }
 
     //> teardown
+    common::destroyGpuTimer(device, gpuTimer);
     common::savePipelineCache(device, pipelineCache);
     destroyLightingPass(device, lightingPass);
     destroyGeometryPass(device, geometryPass);

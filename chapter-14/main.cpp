@@ -10,10 +10,12 @@
 //   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional).
 #include <vulkan/vulkan.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
+#include "common/benchmark.hpp"
 #include "common/camera.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
@@ -70,6 +72,11 @@ void run(const common::Options& options) {
     common::CameraInput cameraInput;
     LightView lightView{int(options.view), scene.camera.near, scene.camera.far};
     bool fxaa = options.switches.count("fxaa") != 0;
+
+    // --benchmark: timestamps around the three passes, and the frame statistics.
+    common::GpuTimer gpuTimer =
+        common::createGpuTimer(device, options.framesInFlight, {"scene", "light", "post"});
+    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
     //< setup
 
     //> resize
@@ -86,6 +93,7 @@ void run(const common::Options& options) {
     double lastTime = glfwGetTime();
     bool viewKeyDown = false, fxaaKeyDown = false;
     for (uint32_t frame = 0;;) {
+        auto frameStart = std::chrono::steady_clock::now();
         bool lastFrame = common::pollTarget(target, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
@@ -104,6 +112,7 @@ void run(const common::Options& options) {
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        if (options.benchmark) common::readGpuTimer(device, gpuTimer, slot, stats);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
             if (!recreateTarget()) break;
@@ -120,9 +129,13 @@ void run(const common::Options& options) {
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+        if (options.benchmark) common::beginGpuTimer(gpuTimer, sync.commandBuffer, slot, frame);
         recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 0);
         recordLightPass(sync.commandBuffer, lightPass, lightView);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 2);
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
@@ -157,14 +170,24 @@ void run(const common::Options& options) {
             common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
                                    target.presentLayout, options.screenshot);
         bool current = common::presentTargetImage(target, device, imageIndex);
+        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
+        common::addCpuFrame(
+            stats, frame,
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (options.benchmark) {
+        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
+            common::readGpuTimer(device, gpuTimer, slot, stats);
+        common::reportBenchmark(stats, common::benchmarkInfo(kChapter, options, device, target));
+    }
 
     //> teardown
+    common::destroyGpuTimer(device, gpuTimer);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);

@@ -365,18 +365,10 @@ void run(const common::Options& options) {
     if (options.benchmark) {
         for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
             common::readGpuTimer(device, gpuTimer, slot, stats);
-        const char* layouts[] = {"book", "reference", "compact"};
-        common::reportBenchmark(
-            stats,
-            {{"chapter", "chapter-15"},
-             {"device", device.properties.deviceName},
-             {"driver", device.driver},
-             {"resolution", std::to_string(target.extent.width) + "x" + std::to_string(target.extent.height)},
-             {"gbuffer", layouts[int(layout)]},
-             {"gbuffer_bytes_per_pixel", std::to_string(gbufferBytesPerPixel(layout))},
-             {"frames_in_flight", std::to_string(options.framesInFlight)},
-             {"present",
-              target.window ? (target.vsync ? "window, vsync" : "window, no vsync") : "headless"}});
+        std::vector<std::pair<std::string, std::string>> info =
+            common::benchmarkInfo(kChapter, options, device, target);
+        info.push_back({"gbuffer_bytes_per_pixel", std::to_string(gbufferBytesPerPixel(layout))});
+        common::reportBenchmark(stats, info);
     }
 
     if (lightControls.moved) {

@@ -99,8 +99,8 @@ Summary summarize(std::vector<double> values) {
     return {rank(0.5), rank(0.95), values.front(), values.back()};
 }
 
-nlohmann::json toJson(const Summary& s) {
-    return {{"median", s.median}, {"p95", s.p95}, {"min", s.min}, {"max", s.max}};
+nlohmann::json toJson(const Summary& s, const std::vector<double>& frames) {
+    return {{"median", s.median}, {"p95", s.p95}, {"min", s.min}, {"max", s.max}, {"frames", frames}};
 }
 
 }  // namespace
@@ -120,7 +120,7 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     std::printf("\n%-18s %10s %10s %10s %10s\n", "ms", "median", "p95", "min", "max");
     Summary cpu = summarize(stats.cpuMs);
     std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", "CPU frame", cpu.median, cpu.p95, cpu.min, cpu.max);
-    report["cpu_frame_ms"] = toJson(cpu);
+    report["cpu_frame_ms"] = toJson(cpu, stats.cpuMs);
     bool timestamps = !stats.gpuMs.empty();
     report["gpu_timestamps"] = timestamps;
     if (timestamps) {
@@ -131,7 +131,7 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
             std::string name = column == 0 ? "frame" : stats.passes[column - 1];
             std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", ("GPU " + name).c_str(), s.median, s.p95,
                         s.min, s.max);
-            report["gpu_ms"][name] = toJson(s);
+            report["gpu_ms"][name] = toJson(s, values);
         }
     } else {
         std::printf("GPU times: this device's queue has no timestamps\n");
@@ -141,6 +141,25 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
         out << report.dump(2) << "\n";
         if (!out) throw Failure("cannot write '" + stats.json + "'");
     }
+}
+
+std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo& chapter,
+                                                               const Options& options, const Device& device,
+                                                               const Target& target) {
+    std::vector<std::pair<std::string, std::string>> info = {
+        {"chapter", chapter.name},
+        {"device", device.properties.deviceName},
+        {"driver", device.driver},
+        {"resolution", std::to_string(target.extent.width) + "x" + std::to_string(target.extent.height)},
+        {"frames_in_flight", std::to_string(options.framesInFlight)},
+        {"present", target.window ? (target.vsync ? "window, vsync" : "window, no vsync") : "headless"},
+    };
+    for (const Choice& choice : chapter.choices)
+        if (!choice.values.empty())
+            info.push_back(
+                {choice.name,
+                 choice.values[options.choices.count(choice.name) ? options.choices.at(choice.name) : 0]});
+    return info;
 }
 
 }  // namespace common

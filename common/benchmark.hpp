@@ -17,6 +17,7 @@
 
 #include "common/cli.hpp"
 #include "common/device.hpp"
+#include "common/target.hpp"
 
 namespace common {
 
@@ -60,5 +61,11 @@ void addCpuFrame(FrameStats& stats, uint32_t frame, double ms);
 // The table on stdout, and the JSON file. `info` names what was measured (device, driver,
 // resolution, layout, frames in flight...).
 void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::string, std::string>>& info);
+
+// What a benchmark ran on: chapter, device, driver, resolution, frames in flight, how it presented,
+// and the chapter's --choices (the G-buffer layout).
+std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo& chapter,
+                                                               const Options& options, const Device& device,
+                                                               const Target& target);
 
 }  // namespace common
