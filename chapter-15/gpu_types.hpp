@@ -32,12 +32,16 @@ static_assert(offsetof(ShaderSceneInfo, ambientIntensity) == 12 &&
               offsetof(ShaderSceneInfo, ambientColor) == 16 && offsetof(ShaderSceneInfo, lightCount) == 28);
 
 // Material in a std430 storage buffer: 32 bytes.
+inline constexpr uint32_t kMaterialNormalMap = 1u;      // MATERIAL_NORMAL_MAP
+inline constexpr uint32_t kMaterialMetalRoughMap = 2u;  // MATERIAL_METAL_ROUGH_MAP
 struct ShaderMaterial {
     glm::vec4 diffuse;
     float roughness;
     float metallic;
-    float padding[2];
+    uint32_t flags;
+    float padding;
 };
 static_assert(sizeof(ShaderMaterial) == 32);
-static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20);
+static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20 &&
+              offsetof(ShaderMaterial, flags) == 24);
 //< gpu-types

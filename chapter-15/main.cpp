@@ -323,7 +323,7 @@ void run(const common::Options& options) {
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
         if (options.benchmark) common::beginGpuTimer(gpuTimer, sync.commandBuffer, slot, frame);
-        recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
+        recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
         if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 0);
         recordLightPass(sync.commandBuffer, lightPass, slot, lightView);
         if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);

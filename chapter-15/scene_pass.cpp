@@ -1,6 +1,7 @@
 // chapter-15: the scene pass.
 #include "scene_pass.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include <string>
@@ -72,7 +73,10 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
 
     std::vector<ShaderMaterial> shaderMaterials;
     for (const common::GpuMaterial& m : scene.materials)
-        shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic, {0.0f, 0.0f}});
+        shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic,
+                                   (m.normalTexture != 1 ? kMaterialNormalMap : 0u) |  // 1: the flat default
+                                       (m.metalRoughTexture != 0 ? kMaterialMetalRoughMap : 0u),  // 0: white
+                                   0.0f});
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
                                           shaderMaterials.size() * sizeof(ShaderMaterial),
@@ -118,27 +122,32 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     VkShaderModule fragment = common::loadShaderModule(device, pass.layout == GBufferLayout::Compact
                                                                    ? "chapter-15/scene-compact.frag"
                                                                    : "chapter-15/scene.frag");
-    pass.pipeline = common::createGraphicsPipeline(
-        device, cache,
-        {
-            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
-            .vertexInput = &vertexInput.state,
-            // Back faces are never seen on closed meshes (the book culls none): culling them saves
-            // their fragments, and removes depth ties where a back face meets a front face at a
-            // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
-            // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
-            .cullMode = VK_CULL_MODE_BACK_BIT,
-            .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-            .depthTest = true,
-            .depthWrite = true,
-            // Reversed-Z: nearer is larger.
-            .depthCompare =
-                reversedZ(pass.layout) ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
-            .colorAttachmentCount = uint32_t(formats.size()),
-            .layout = pass.pipelineLayout,
-            .pNext = &rendering,
-        });
+    for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE}) {
+        VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+        VkSpecializationInfo specialization{
+            .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
+        (alphaTest ? pass.cutoutPipeline : pass.opaquePipeline) = common::createGraphicsPipeline(
+            device, cache,
+            {
+                .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                           common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
+                .vertexInput = &vertexInput.state,
+                // Back faces are never seen on closed meshes (the book culls none): culling them saves
+                // their fragments, and removes depth ties where a back face meets a front face at a
+                // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
+                // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
+                .cullMode = VK_CULL_MODE_BACK_BIT,
+                .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+                .depthTest = true,
+                .depthWrite = true,
+                // Reversed-Z: nearer is larger.
+                .depthCompare =
+                    reversedZ(pass.layout) ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                .colorAttachmentCount = uint32_t(formats.size()),
+                .layout = pass.pipelineLayout,
+                .pNext = &rendering,
+            });
+    }
     vkDestroyShaderModule(device.handle, fragment, nullptr);
     vkDestroyShaderModule(device.handle, vertex, nullptr);
 }
@@ -176,11 +185,10 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 
 //> record-scene
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
-                     uint32_t frame) {
+                     uint32_t frame, glm::vec3 cameraPosition) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
     common::beginGBufferRendering(cmd, pass.gbuffer, reversedZ(pass.layout) ? 0.0f : 1.0f);
     VkExtent2D extent = pass.gbuffer.depth.extent;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
@@ -189,7 +197,23 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
 
+    // The order of the draws: opaque ones by the distance of their bounds' centre, then cut-outs.
+    std::vector<std::pair<float, const common::Draw*>> order;
     for (const common::Draw& draw : scene.draws) {
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        glm::vec3 center = glm::vec3(draw.model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
+        float key = glm::length(center - cameraPosition);
+        if (scene.materials[draw.material].alphaTested) key += 1e30f;  // after every opaque draw
+        order.push_back({key, &draw});
+    }
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& [key, drawPointer] : order) {
+        const common::Draw& draw = *drawPointer;
+        VkPipeline pipeline =
+            scene.materials[draw.material].alphaTested ? pass.cutoutPipeline : pass.opaquePipeline;
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
@@ -214,7 +238,8 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
 //< record-scene
 
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
-    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    vkDestroyPipeline(device.handle, pass.cutoutPipeline, nullptr);
+    vkDestroyPipeline(device.handle, pass.opaquePipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);

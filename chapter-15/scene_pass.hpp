@@ -65,7 +65,8 @@ struct ScenePass {
     std::vector<VkDescriptorSet> materialTextureSets;
     VkSampler sampler = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkPipeline opaquePipeline = VK_NULL_HANDLE;  // no alpha test: early depth testing
+    VkPipeline cutoutPipeline = VK_NULL_HANDLE;  // alpha-tested materials
 };
 
 // Throws Failure when the device cannot render to the layout's formats.
@@ -73,6 +74,7 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
                           const common::GpuScene& scene, uint32_t framesInFlight, GBufferLayout layout);
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
+// Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
-                     uint32_t frame);
+                     uint32_t frame, glm::vec3 cameraPosition);
 void destroyScenePass(const common::Device& device, ScenePass& pass);

@@ -28,6 +28,7 @@ public:
             uploadTexture(device_, batch_, solid(255, 255, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
         scene_.textures.push_back(
             uploadTexture(device_, batch_, solid(128, 128, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
+        scene_.textureHasAlpha = {false, false};
     }
 
     // Albedo (sRGB) with alpha taken from the red channel of `alpha` (map_d) when given.
@@ -79,6 +80,9 @@ private:
         if (pixels) {
             index = uint32_t(scene_.textures.size());
             scene_.textures.push_back(uploadTexture(device_, batch_, *pixels, format));
+            bool alpha = false;
+            for (size_t i = 3; i < pixels->rgba.size() && !alpha; i += 4) alpha = pixels->rgba[i] < 255;
+            scene_.textureHasAlpha.push_back(alpha);
         }
         loaded_[key] = index;
         return index;
@@ -139,6 +143,11 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     uploadStaged(device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
                 out.indexCount = uint32_t(mesh.indices.size());
+                out.boundsMin = out.boundsMax = mesh.vertices.front().position;
+                for (const Vertex& v : mesh.vertices) {
+                    out.boundsMin = glm::min(out.boundsMin, v.position);
+                    out.boundsMax = glm::max(out.boundsMax, v.position);
+                }
                 gpu.meshes.push_back(out);
             }
         }
@@ -168,6 +177,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     material.normalTexture = textures.normal(o.normalTexture.value_or(m.normalTexture));
                 if (wanted.metalRoughMaps)
                     material.metalRoughTexture = textures.metalRough(m.roughnessTexture, m.metallicTexture);
+                material.alphaTested =
+                    material.diffuse.a < 1.0f || gpu.textureHasAlpha[material.albedoTexture];
                 gpu.materials.push_back(material);
             }
         }

@@ -24,6 +24,7 @@ struct GpuMesh {
     Buffer vertices;  // common::Vertex
     Buffer indices;   // uint32_t
     uint32_t indexCount = 0;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // model space, to sort draws by distance
 };
 
 struct GpuMaterial {
@@ -33,6 +34,7 @@ struct GpuMaterial {
     uint32_t albedoTexture = 0;      // index into GpuScene::textures; alpha from map_d when given
     uint32_t normalTexture = 1;      // tangent-space normal map (a flat one when the MTL has none)
     uint32_t metalRoughTexture = 0;  // G = roughness, B = metallic, as in the book (white when none)
+    bool alphaTested = false;        // some texel or the colour itself has alpha < 1: a cut-out (discard)
 };
 
 struct Draw {
@@ -44,7 +46,8 @@ struct Draw {
 
 struct GpuScene {
     std::vector<GpuMesh> meshes;
-    std::vector<Image> textures;  // [0]: 1x1 white, [1]: 1x1 flat normal (0.5, 0.5, 1)
+    std::vector<Image> textures;        // [0]: 1x1 white, [1]: 1x1 flat normal (0.5, 0.5, 1)
+    std::vector<bool> textureHasAlpha;  // per texture: some texel's alpha is below 1
     std::vector<GpuMaterial> materials;
     std::vector<Draw> draws;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space

@@ -23,7 +23,7 @@ const char* gShaderPath = nullptr;
 void run(const common::Options& options) {
     ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}}, {{8, 9, 10}, 0u, 11, {12, 13, 14}}};
     ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u};
-    ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, {0, 0}}, {{29, 30, 31, 32}, 33, 34, {0, 0}}};
+    ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, 35u, 0}, {{29, 30, 31, 32}, 33, 34, 36u, 0}};
     std::vector<float> expected;
     for (const ShaderLight& l : lights)
         expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
@@ -32,8 +32,8 @@ void run(const common::Options& options) {
                                      scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y,
                                      scene.ambientColor.z, float(scene.lightCount)});
     for (const ShaderMaterial& m : materials)
-        expected.insert(expected.end(),
-                        {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness, m.metallic});
+        expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
+                                         m.metallic, float(m.flags)});
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,

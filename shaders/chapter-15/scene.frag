@@ -10,6 +10,10 @@
 #include "pbr.glsl"
 
 //> scene-frag
+// Two pipelines from this shader: opaque materials compile the alpha test away, so the depth test
+// can run before the shader; only cut-out materials (alpha below 1 somewhere) pay for discard.
+layout(constant_id = 0) const bool ALPHA_TEST = true;
+
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inTangent;
@@ -43,7 +47,7 @@ void main() {
     Material material = materials[draw.materialIndex];
     vec4 albedo = material.diffuse * texture(albedoTexture, inUv);
     // A G-buffer pixel holds one surface: cut-outs are all or nothing (docs: transparency).
-    if (albedo.a < 0.5) discard;
+    if (ALPHA_TEST && albedo.a < 0.5) discard;
 
     // The tangent frame, re-orthonormalised after interpolation: T made perpendicular to N
     // (Gram-Schmidt), B = N x T with the handedness the mesh gave it.
@@ -52,8 +56,11 @@ void main() {
                                                                               : cross(N, vec3(0, 1, 0)));
     T = safeNormalize(T, vec3(1.0, 0.0, 0.0));
     vec3 B = cross(N, T) * (dot(cross(N, T), inBitangent) < 0.0 ? -1.0 : 1.0);
-    vec3 mapped = texture(normalTexture, inUv).rgb * 2.0 - 1.0;  // tangent space, z out of the surface
-    vec3 normal = safeNormalize(mat3(T, B, N) * mapped, N);
+    vec3 normal = N;
+    if ((material.flags & MATERIAL_NORMAL_MAP) != 0u) {  // the same for the whole draw: cheap to branch on
+        vec3 mapped = texture(normalTexture, inUv).rgb * 2.0 - 1.0;  // tangent space, z out of the surface
+        normal = safeNormalize(mat3(T, B, N) * mapped, N);
+    }
 
 #ifdef COMPACT_GBUFFER
     outNormal = encodeOctahedral(normal);
@@ -62,7 +69,9 @@ void main() {
     outNormal = vec4(normal, 1.0);
 #endif
     float ao = 0.5;  // fixed, as in the book (no AO maps yet); the lighting does not read it
-    vec4 metalRough = texture(metalRoughTexture, inUv);  // G roughness, B metallic (glTF and the book)
+    vec4 metalRough = (material.flags & MATERIAL_METAL_ROUGH_MAP) != 0u
+                          ? texture(metalRoughTexture, inUv)  // G roughness, B metallic (glTF and the book)
+                          : vec4(1.0);
     float roughness = material.roughness * metalRough.g, metallic = material.metallic * metalRough.b;
 #ifdef COMPACT_GBUFFER
     // Gamma 2 puts the 10 bits where the eye needs them (dark values), like sRGB but cheap to undo.

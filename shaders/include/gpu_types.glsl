@@ -23,12 +23,14 @@ struct SceneInfo {
 };
 
 // Materials: a storage buffer, std430 layout. 32 bytes.
+const uint MATERIAL_NORMAL_MAP = 1u;       // flags: the material has a normal map
+const uint MATERIAL_METAL_ROUGH_MAP = 2u;  //        ... a metal-rough map
 struct Material {
     vec4 diffuse;
-    float roughness;  // factors, multiplied by the metal-rough texture (white when there is none)
+    float roughness;  // factors, multiplied by the metal-rough texture's when there is one
     float metallic;
-    float padding0;
-    float padding1;
+    uint flags;       // the MATERIAL_ bits: textures not worth sampling are skipped
+    float padding;
 };
 //< gpu-types
 

@@ -40,5 +40,6 @@ void main() {
         fields[i++] = materials[m].diffuse.w;
         fields[i++] = materials[m].roughness;
         fields[i++] = materials[m].metallic;
+        fields[i++] = float(materials[m].flags);
     }
 }
