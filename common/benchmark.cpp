@@ -159,6 +159,7 @@ std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo
             info.push_back(
                 {choice.name,
                  choice.values[options.choices.count(choice.name) ? options.choices.at(choice.name) : 0]});
+    info.push_back({"command", options.command});
     return info;
 }
 

@@ -102,6 +102,8 @@ bool isSwitch(const ChapterInfo& chapter, std::string_view name) {
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
     Options options;
     bool framesGiven = false;
+    options.command = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : chapter.name;
+    for (int i = 1; i < argc; ++i) options.command += std::string(" ") + argv[i];
     for (int i = 1; i < argc; ++i) {
         std::string_view arg = argv[i];
         auto value = [&]() -> std::string_view {

@@ -41,6 +41,7 @@ struct Options {
     std::set<std::string> switches;           // chapter-specific on/off options given, e.g. "fxaa" for --fxaa
     std::map<std::string, uint32_t> choices;  // chapter-specific --NAME VALUE: index of VALUE (0 default)
     std::map<std::string, std::string> values;  // chapter-specific --NAME VALUE of a free-form choice
+    std::string command;  // the command line as given (program name without its directory), for reports
 };
 
 // A chapter-specific option with a fixed set of values, the first the default:

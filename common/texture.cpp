@@ -1,19 +1,22 @@
-// Image decoding (stb_image), texture upload with mip generation, samplers.
+// Image decoding (stb_image), mip chains (stb_image_resize), texture upload, samplers.
 #include "common/texture.hpp"
 
 #include <stb_image.h>
+#include <stb_image_resize.h>
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "common/check.hpp"
 
 namespace common {
 namespace {
 
-VkImageMemoryBarrier mipBarrier(VkImage image, uint32_t level, VkImageLayout from, VkImageLayout to,
-                                VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLayout from, VkImageLayout to,
+                                    VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
     return {
         .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
         .srcAccessMask = srcAccess,
@@ -23,7 +26,7 @@ VkImageMemoryBarrier mipBarrier(VkImage image, uint32_t level, VkImageLayout fro
         .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
         .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
         .image = image,
-        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1},
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mipLevels, 0, 1},
     };
 }
 
@@ -49,79 +52,68 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
 }
 
 Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format) {
-    // A full mip chain when the format can be blitted with linear filtering (the usual case);
+    // A full mip chain when the format can be sampled with linear filtering (the usual case);
     // otherwise one level.
     VkFormatProperties properties;
     vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
-    VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT |
-                                VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-    bool canBlit = (properties.optimalTilingFeatures & blit) == blit;
+    bool filterable = properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
     uint32_t mipLevels = 1;
-    if (canBlit)
+    if (filterable)
         for (uint32_t size = std::max(pixels.width, pixels.height); size > 1; size /= 2) ++mipLevels;
 
-    Image image = createImage(
-        device, {pixels.width, pixels.height}, format,
-        VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-        VK_IMAGE_ASPECT_COLOR_BIT, mipLevels);
+    // The mip chain is made here on the CPU, each level a 2x2 box filter of the one above
+    // (stb_image_resize; in linear light for an _SRGB format, colour weighted by alpha), and goes
+    // up with level 0 in one copy. The book blits each level into the next on the GPU instead;
+    // on lavapipe the first blits cost ~110 ms of startup (llvmpipe compiles its blit shaders
+    // then), the CPU chain of a 512x512 texture ~3 ms (docs/performance.md).
+    std::vector<VkBufferImageCopy> regions;
+    std::vector<uint8_t> levels = pixels.rgba;
+    int width = int(pixels.width), height = int(pixels.height);
+    size_t above = 0;  // offset of the level above in `levels`
+    for (uint32_t level = 0; level < mipLevels; ++level) {
+        if (level > 0) {
+            int nextWidth = std::max(width / 2, 1), nextHeight = std::max(height / 2, 1);
+            size_t offset = levels.size();
+            levels.resize(offset + size_t(nextWidth) * size_t(nextHeight) * 4);
+            bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
+            if (!stbir_resize_uint8_generic(levels.data() + above, width, height, 0, levels.data() + offset,
+                                            nextWidth, nextHeight, 0, 4, 3, 0, STBIR_EDGE_WRAP,
+                                            STBIR_FILTER_BOX,
+                                            srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
+                throw std::runtime_error("stb_image_resize failed on a mip level");
+            above = offset;
+            width = nextWidth;
+            height = nextHeight;
+        }
+        regions.push_back({
+            .bufferOffset = above,
+            .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1},
+            .imageExtent = {uint32_t(width), uint32_t(height), 1},
+        });
+    }
 
-    Buffer staging = createBuffer(device, pixels.rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    Image image = createImage(device, {pixels.width, pixels.height}, format,
+                              VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT, mipLevels);
+
+    Buffer staging = createBuffer(device, levels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    std::memcpy(staging.mapped, pixels.rgba.data(), pixels.rgba.size());
+    std::memcpy(staging.mapped, levels.data(), levels.size());
     batch.stagingBuffers.push_back(staging);
 
     VkCommandBuffer cmd = batch.commandBuffer;
-    VkImageMemoryBarrier toTransfer{
-        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-        .srcAccessMask = 0,
-        .dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
-        .oldLayout = VK_IMAGE_LAYOUT_UNDEFINED,
-        .newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .image = image.handle,
-        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mipLevels, 0, 1},
-    };
+    VkImageMemoryBarrier toTransfer =
+        textureBarrier(image.handle, mipLevels, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toTransfer);
-    VkBufferImageCopy region{
-        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-        .imageExtent = {pixels.width, pixels.height, 1},
-    };
-    vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &region);
-
-    // Each level is a linear downscale of the one above: level i-1 becomes a blit source, then
-    // is done and goes to SHADER_READ_ONLY.
-    int32_t width = int32_t(pixels.width), height = int32_t(pixels.height);
-    for (uint32_t level = 1; level < mipLevels; ++level) {
-        VkImageMemoryBarrier toSource = mipBarrier(
-            image.handle, level - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                             nullptr, 0, nullptr, 1, &toSource);
-        int32_t nextWidth = std::max(width / 2, 1), nextHeight = std::max(height / 2, 1);
-        VkImageBlit blitRegion{
-            .srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1},
-            .srcOffsets = {{0, 0, 0}, {width, height, 1}},
-            .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1},
-            .dstOffsets = {{0, 0, 0}, {nextWidth, nextHeight, 1}},
-        };
-        vkCmdBlitImage(cmd, image.handle, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.handle,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blitRegion, VK_FILTER_LINEAR);
-        VkImageMemoryBarrier done = mipBarrier(image.handle, level - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_READ_BIT);
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
-                             nullptr, 0, nullptr, 1, &done);
-        width = nextWidth;
-        height = nextHeight;
-    }
-    VkImageMemoryBarrier last = mipBarrier(image.handle, mipLevels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                           VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
+    vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           uint32_t(regions.size()), regions.data());
+    VkImageMemoryBarrier toShader = textureBarrier(
+        image.handle, mipLevels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &last);
+                         nullptr, 0, nullptr, 1, &toShader);
     return image;
 }
 

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
     size_t frames = std::stoul(argv[2]);
     std::vector<std::string> passes(argv + 3, argv + argc);
 
-    for (const char* key : {"chapter", "device", "driver", "resolution", "frames_in_flight", "present"})
+    for (const char* key :
+         {"chapter", "device", "driver", "resolution", "frames_in_flight", "present", "command"})
         if (!report.contains(key) || !report[key].is_string())
             problem(std::string("no string field '") + key + "'");
     for (const char* key : {"measured_frames", "warmup_frames", "startup_ms"})
