@@ -58,7 +58,9 @@ case "$command" in
     test)
         install_missing
         build_release
+        started=$SECONDS
         ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+        echo "setup: test stage took $((SECONDS - started)) s"
         ;;
     *)
         echo "usage: scripts/setup.sh run [chapter-NN] [options...] | scripts/setup.sh test" >&2
