@@ -37,6 +37,14 @@ std::string command(const nlohmann::json& r) {
     return text.substr(0, json) + (next == std::string::npos ? "" : text.substr(next));
 }
 
+// The G-buffer layout, and the light pass's form when it is not the book's fragment shader.
+std::string layout(const nlohmann::json& r) {
+    std::string text = r.value("gbuffer", "-");
+    if (r.value("light-pass", "fragment") != "fragment")
+        text += ", " + r["light-pass"].get<std::string>() + " light";
+    return text;
+}
+
 void frameRow(const nlohmann::json& r) {
     std::string passes, gpu = "no timestamps";
     if (r.value("gpu_timestamps", false)) {
@@ -48,7 +56,7 @@ void frameRow(const nlohmann::json& r) {
                           format("%.2f", r["gpu_ms"][name]["median"].get<double>());
     }
     std::printf("| %s | %s | %s | %s | %s | %s | %s | %.0f | `%s` |\n",
-                r["chapter"].get<std::string>().c_str(), r.value("gbuffer", "-").c_str(),
+                r["chapter"].get<std::string>().c_str(), layout(r).c_str(),
                 r["resolution"].get<std::string>().c_str(), r["present"].get<std::string>().c_str(),
                 medianP95(r["cpu_frame_ms"]).c_str(), gpu.c_str(), passes.c_str(),
                 r["startup_ms"].get<double>(), command(r).c_str());
@@ -64,9 +72,9 @@ void bytesRow(const nlohmann::json& r, double gbPerSecond) {
     const nlohmann::json& gpu = r["gpu_ms"];
     double measured = gpu["scene"]["median"].get<double>() + gpu["light"]["median"].get<double>();
     double sceneMs = gpu["scene"]["median"].get<double>();
-    std::printf("| %s | %s | %.0f | %.1f | %.3f | %.3f | %.3f | %.1fx | %.1f |\n",
-                r["gbuffer"].get<std::string>().c_str(), resolution.c_str(), bytesPerPixel, bytes / 1e6,
-                boundMs, sceneMs, gpu["light"]["median"].get<double>(), measured / boundMs,
+    std::printf("| %s | %s | %.0f | %.1f | %.3f | %.3f | %.3f | %.1fx | %.1f |\n", layout(r).c_str(),
+                resolution.c_str(), bytesPerPixel, bytes / 1e6, boundMs, sceneMs,
+                gpu["light"]["median"].get<double>(), measured / boundMs,
                 bytesPerPixel * pixels / (sceneMs * 1e-3) / 1e9);
 }
 

@@ -37,12 +37,16 @@ all_chapters() {
     for layout in book compact reference; do
         run "15-${w}x$h-$layout$suffix" chapter-15 "$@" "${size[@]}" --warmup 5 --frames 40 --gbuffer "$layout"
     done
+    for layout in book compact; do
+        run "15-${w}x$h-$layout-compute$suffix" chapter-15 "$@" "${size[@]}" --warmup 5 --frames 40 \
+            --gbuffer "$layout" --light-pass compute
+    done
 }
 
 # names SIZE SUFFIX: the report files all_chapters wrote, in table order.
 names() {
     for n in 06 10 14; do echo "$work/$n-$1$2.json"; done
-    for layout in book compact reference; do echo "$work/15-$1-$layout$2.json"; done
+    for layout in book compact reference book-compute compact-compute; do echo "$work/15-$1-$layout$2.json"; done
 }
 
 # paste SECTION TEXT: replaces docs/performance.md between the section's markers.

@@ -7,15 +7,31 @@
 #include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
+#include "common/files.hpp"
+#include "common/pipeline.hpp"
 
 namespace {
 
-common::Image createOutput(const common::Device& device, VkExtent2D extent) {
+common::Image createOutput(const common::Device& device, VkExtent2D extent, LightPassKind kind) {
     // TRANSFER_SRC: --check-output copies it back to the CPU.
-    return common::createImage(
-        device, extent, kLightOutputFormat,
-        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-        VK_IMAGE_ASPECT_COLOR_BIT);
+    VkImageUsageFlags written =
+        kind == LightPassKind::Compute ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    return common::createImage(device, extent, kLightOutputFormat,
+                               written | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                               VK_IMAGE_ASPECT_COLOR_BIT);
+}
+
+// The compute form writes the output through a storage-image descriptor, in GENERAL layout.
+void writeOutput(const common::Device& device, LightPass& pass) {
+    if (pass.kind != LightPassKind::Compute) return;
+    VkDescriptorImageInfo image{.imageView = pass.output.view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                               .dstSet = pass.outputSet,
+                               .dstBinding = 0,
+                               .descriptorCount = 1,
+                               .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                               .pImageInfo = &image};
+    vkUpdateDescriptorSets(device.handle, 1, &write, 0, nullptr);
 }
 
 // One binding per colour attachment in attachment order, then depth.
@@ -31,11 +47,13 @@ void writeAttachments(const common::Device& device, LightPass& pass, const commo
 }  // namespace
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, GBufferLayout layout, uint32_t framesInFlight,
-                          uint32_t lightCapacity) {
+                          const common::GBuffer& gbuffer, GBufferLayout layout, LightPassKind kind,
+                          uint32_t framesInFlight, uint32_t lightCapacity) {
     LightPass pass;
-    pass.output = createOutput(device, extent);
-    VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    pass.kind = kind;
+    pass.output = createOutput(device, extent, kind);
+    VkShaderStageFlags fragment =
+        kind == LightPassKind::Compute ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
     std::vector<VkDescriptorSetLayoutBinding> attachmentBindings;
     for (uint32_t i = 0; i <= gbuffer.colors.size(); ++i)  // the colour attachments, then depth
         attachmentBindings.push_back(common::binding(i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment));
@@ -49,10 +67,11 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     pass.sceneLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment)});
     pass.descriptorPool = common::createDescriptorPool(
-        device, 1 + 2 * framesInFlight,
+        device, 2 + 2 * framesInFlight,
         {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(attachmentBindings.size())},
          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
-         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
+         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
+         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     VkSamplerCreateInfo samplerInfo{
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
@@ -88,19 +107,51 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     }
     //< light-buffers
 
-    const char* shader =
-        layout == GBufferLayout::Compact ? "chapter-15/light-compact.frag" : "chapter-15/light.frag";
-    pass.pipeline = common::createFullscreenPipeline(
-        device, cache, shader, kLightOutputFormat,
-        {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout}, sizeof(LightView));
+    bool compact = layout == GBufferLayout::Compact;
+    if (kind == LightPassKind::Fragment) {
+        pass.pipeline = common::createFullscreenPipeline(
+            device, cache, compact ? "chapter-15/light-compact.frag" : "chapter-15/light.frag",
+            kLightOutputFormat, {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout},
+            sizeof(LightView));
+        return pass;
+    }
+
+    //> compute-pipeline
+    // The compute form: the same three sets plus set 3, the output as a storage image, and the
+    // same push constants; one shader stage, no fixed-function state.
+    pass.outputLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)});
+    pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
+    writeOutput(device, pass);
+    VkDescriptorSetLayout setLayouts[] = {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout,
+                                          pass.outputLayout};
+    VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
+    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                          .setLayoutCount = 4,
+                                          .pSetLayouts = setLayouts,
+                                          .pushConstantRangeCount = 1,
+                                          .pPushConstantRanges = &pushRange};
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.computeLayout));
+    VkShaderModule module =
+        common::loadShaderModule(device, compact ? "chapter-15/light-compact.comp" : "chapter-15/light.comp");
+    VkComputePipelineCreateInfo pipelineInfo{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
+        .layout = pass.computeLayout,
+    };
+    VK_CHECK(
+        vkCreateComputePipelines(device.handle, cache, 1, &pipelineInfo, nullptr, &pass.computePipeline));
+    vkDestroyShaderModule(device.handle, module, nullptr);
+    //< compute-pipeline
     return pass;
 }
 
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer) {
     common::destroyImage(device, pass.output);
-    pass.output = createOutput(device, extent);
+    pass.output = createOutput(device, extent, pass.kind);
     writeAttachments(device, pass, gbuffer);
+    writeOutput(device, pass);
 }
 
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
@@ -112,8 +163,39 @@ void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight
     std::memcpy(pass.scenes[frame].mapped, &info, sizeof(info));
 }
 
+//> record-compute-light
+// The compute form: the output goes to GENERAL (a storage image), one 8x8 group per 8x8 pixels,
+// then to READ_ONLY for the post pass -- the same image, the same layouts after, as the fragment form.
+static void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass,
+                                   const VkDescriptorSet (&sets)[4], const LightView& view) {
+    VkImageMemoryBarrier2 init = common::imageBarrier(
+        pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    common::pipelineBarrier(cmd, &init, 1);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computePipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computeLayout, 0, 4, sets, 0, nullptr);
+    vkCmdPushConstants(cmd, pass.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView), &view);
+    vkCmdDispatch(cmd, (pass.output.extent.width + 7) / 8, (pass.output.extent.height + 7) / 8, 1);
+
+    VkImageMemoryBarrier2 finish =
+        common::imageBarrier(pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    common::pipelineBarrier(cmd, &finish, 1);
+}
+//< record-compute-light
+
 //> record-light
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view) {
+    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.lightSets[frame], pass.sceneSets[frame],
+                              pass.outputSet};
+    if (pass.kind == LightPassKind::Compute) {
+        recordComputeLightPass(cmd, pass, sets, view);
+        return;
+    }
     VkImageMemoryBarrier2 init = common::imageBarrier(
         pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
         VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
@@ -122,9 +204,8 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
 
     common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
-    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.lightSets[frame], pass.sceneSets[frame]};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0,
-                            nullptr);
+                            nullptr);  // sets 0-2: the fourth is the compute form's
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
@@ -140,6 +221,9 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
 
 void destroyLightPass(const common::Device& device, LightPass& pass) {
     common::destroyFullscreenPipeline(device, pass.pipeline);
+    vkDestroyPipeline(device.handle, pass.computePipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.computeLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.outputLayout, nullptr);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     for (common::Buffer& buffer : pass.scenes) common::destroyBuffer(device, buffer);

@@ -1,6 +1,7 @@
 // chapter-15: the light pass -- Cook-Torrance lighting of the G-buffer by the scene's lights into
 // an R32G32B32A32_SFLOAT image; the post pass (common/post_pass.cpp) presents it. The book's
-// LightRender (chapter 15).
+// LightRender (chapter 15): a full-screen triangle. With --light-pass compute the same shading
+// runs as a compute dispatch that stores into the image instead.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -19,7 +20,10 @@
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-// The fragment push constants (light.frag's Show block, 112 bytes).
+// How the light pass runs: the book's full-screen triangle, or a compute dispatch.
+enum class LightPassKind { Fragment, Compute };
+
+// The push constants (light_shading.glsl's Show block, 112 bytes).
 struct LightView {
     glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
     glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
@@ -43,13 +47,19 @@ struct LightPass {
     std::vector<VkDescriptorSet> lightSets, sceneSets;
     uint32_t lightCapacity = 0;
     VkSampler sampler = VK_NULL_HANDLE;
-    common::FullscreenPipeline pipeline;
+    LightPassKind kind = LightPassKind::Fragment;
+    common::FullscreenPipeline pipeline;  // Fragment
+    // Compute: the output as a storage image (set 3) and the compute pipeline.
+    VkDescriptorSetLayout outputLayout = VK_NULL_HANDLE;
+    VkDescriptorSet outputSet = VK_NULL_HANDLE;
+    VkPipelineLayout computeLayout = VK_NULL_HANDLE;
+    VkPipeline computePipeline = VK_NULL_HANDLE;
 };
 
 // `lightCapacity`: the scene's number of lights (the buffers are sized from it).
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, GBufferLayout layout, uint32_t framesInFlight,
-                          uint32_t lightCapacity);
+                          const common::GBuffer& gbuffer, GBufferLayout layout, LightPassKind kind,
+                          uint32_t framesInFlight, uint32_t lightCapacity);
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
 // Writes this frame's lights and scene info (lights.size() <= lightCapacity).

@@ -46,6 +46,9 @@ const common::ChapterInfo kChapter{
     {{"gbuffer",
       {"book", "reference", "compact"},
       "G-buffer layout: the book's (36 B/px), all fp32 (68 B/px), or compact (16 B/px)"},
+     {"light-pass",
+      {"fragment", "compute"},
+      "light pass: the book's full-screen triangle, or a compute dispatch (the same shading)"},
      {"dump",
       {},
       "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"}},
@@ -228,10 +231,13 @@ void run(const common::Options& options) {
     common::Instance instance =
         common::createInstance("chapter-15", options.validation, common::targetInstanceExtensions(target));
     common::createTargetSurface(target, instance);
-    // scalarBlockLayout: the lights and scene info are read with the C-like scalar layout.
-    common::Device device =
-        common::createDevice(instance, target.surface, options.device,
-                             {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+    // scalarBlockLayout: the lights and scene info are read with the C-like scalar layout;
+    // maintenance4: the compute light pass (glslang declares its group size with LocalSizeId).
+    common::Device device = common::createDevice(instance, target.surface, options.device,
+                                                 {.dynamicRendering = true,
+                                                  .synchronization2 = true,
+                                                  .scalarBlockLayout = true,
+                                                  .maintenance4 = true});
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
 
@@ -247,8 +253,11 @@ void run(const common::Options& options) {
         GBufferLayout(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0);
     ScenePass scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
                                           options.framesInFlight, layout);
-    LightPass lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
-                                          layout, options.framesInFlight, uint32_t(scene.lights.size()));
+    LightPassKind lightKind =
+        LightPassKind(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0);
+    LightPass lightPass =
+        createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, layout, lightKind,
+                        options.framesInFlight, uint32_t(scene.lights.size()));
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 

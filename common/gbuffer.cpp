@@ -27,21 +27,26 @@ void destroyGBuffer(const Device& device, GBuffer& gbuffer) {
     gbuffer = {};
 }
 
+// The G-buffer's readers: the light pass's fragment shader, or its compute shader (chapter-15's
+// --light-pass compute).
+constexpr VkPipelineStageFlags2 kReaders =
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
 //> gbuffer-render-init
 // Before drawing: every attachment to ATTACHMENT_OPTIMAL. The old contents are cleared, so the
 // old layout is UNDEFINED; but the previous frame's light pass may still be sampling them in its
-// fragment shader, so the transition waits for that stage (a write-after-read hazard needs only
-// this execution dependency).
+// fragment shader (or, in chapter-15, its compute shader: kReaders), so the transition waits for
+// that stage (a write-after-read hazard needs only this execution dependency).
 void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
     for (const Image& color : gbuffer.colors)
-        barriers.push_back(imageBarrier(
-            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
+        barriers.push_back(imageBarrier(color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                                        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, kReaders, VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
     barriers.push_back(imageBarrier(
         gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, kReaders, VK_ACCESS_2_NONE,
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT));
     pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
@@ -52,16 +57,14 @@ void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
     for (const Image& color : gbuffer.colors)
-        barriers.push_back(
-            imageBarrier(color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
-    barriers.push_back(
-        imageBarrier(gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+        barriers.push_back(imageBarrier(
+            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, kReaders, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    barriers.push_back(imageBarrier(
+        gbuffer.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kReaders, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
     pipelineBarrier(cmd, barriers.data(), uint32_t(barriers.size()));
 }
 //< gbuffer-render-init

@@ -1,103 +1,16 @@
 #version 450
-// chapter-15 light pass: Cook-Torrance lighting of every G-buffer pixel by the scene's lights,
-// plus ambient light; or, with --view, one attachment. Compiled a second time with
-// COMPACT_GBUFFER for --gbuffer compact, which stores no position: it is reconstructed from the
-// (reversed-Z) depth; albedo comes as sqrt(albedo) in 10 bits, roughness and metallic in 16.
-//
-// Shading happens in coordinates relative to the camera: position - camera and light - camera
-// are small numbers where it matters (near the camera), however far the scene is from the world
-// origin. Subtracting two nearby fp32 values is exact, so nothing is lost on the way.
+// chapter-15 light pass as the book draws it: a full-screen triangle whose fragment shader shades
+// each G-buffer pixel (light_shading.glsl). light.comp does the same in a compute dispatch.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
-#include "depth_view.glsl"
-#include "gpu_types.glsl"
-#include "octahedral.glsl"
-#include "pbr.glsl"
+#include "light_shading.glsl"
 
 //> light-frag
 layout(location = 0) in vec2 inUv;
 
 layout(location = 0) out vec4 outColor;
 
-#ifdef COMPACT_GBUFFER
-layout(set = 0, binding = 0) uniform sampler2D albedoAttachment;  // sqrt(albedo), coverage
-layout(set = 0, binding = 1) uniform sampler2D normalAttachment;  // octahedral
-layout(set = 0, binding = 2) uniform sampler2D pbrAttachment;     // roughness, metallic
-layout(set = 0, binding = 3) uniform sampler2D depthAttachment;   // reversed-Z
-#else
-layout(set = 0, binding = 0) uniform sampler2D positionAttachment;
-layout(set = 0, binding = 1) uniform sampler2D albedoAttachment;
-layout(set = 0, binding = 2) uniform sampler2D normalAttachment;
-layout(set = 0, binding = 3) uniform sampler2D pbrAttachment;
-layout(set = 0, binding = 4) uniform sampler2D depthAttachment;
-#endif
-
-layout(scalar, set = 1, binding = 0) readonly buffer Lights {
-    Light lights[];
-};
-layout(scalar, set = 2, binding = 0) uniform Scene {
-    SceneInfo scene;
-};
-
-layout(push_constant) uniform Show {
-    mat4 clipToCameraRelative;  // inverse of projection x (view without its translation)
-    vec4 boundsMin;             // xyz: the scene's bounds, to show positions as colours
-    vec4 boundsMax;
-    int view;  // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
-    float near;  // the projection's near and far planes
-    float far;
-    int reversedZ;  // depth 1 at near, 0 at far
-} show;
-
 void main() {
-    float depth = texture(depthAttachment, inUv).r;
-    vec4 albedoCoverage = texture(albedoAttachment, inUv);
-    bool surface = albedoCoverage.a > 0.5;  // written 1 where a surface was drawn, cleared to 0
-#ifdef COMPACT_GBUFFER
-    vec3 albedo = albedoCoverage.rgb * albedoCoverage.rgb;  // stored as sqrt(albedo)
-    vec3 pbr = vec3(0.5, texture(pbrAttachment, inUv).rg);  // AO (fixed 0.5, not stored), roughness, metallic
-#else
-    vec3 albedo = albedoCoverage.rgb;
-    vec3 pbr = texture(pbrAttachment, inUv).rgb;  // AO, roughness, metallic
-#endif
-#ifdef COMPACT_GBUFFER
-    vec3 normal = decodeOctahedral(texture(normalAttachment, inUv).xy);
-    // The pixel's clip-space point (y up under our flipped viewport) back to camera-relative space.
-    vec4 clip = vec4(inUv.x * 2.0 - 1.0, 1.0 - inUv.y * 2.0, depth, 1.0);
-    vec4 relative = show.clipToCameraRelative * clip;
-    vec3 position = relative.xyz / relative.w;
-#else
-    vec3 normal = texture(normalAttachment, inUv).xyz;
-    vec3 position = texture(positionAttachment, inUv).xyz - scene.cameraPosition;
-#endif
-
-    if (show.view == 1) {
-        vec3 world = position + scene.cameraPosition;
-        outColor = vec4(surface ? clamp((world - show.boundsMin.xyz) / (show.boundsMax.xyz - show.boundsMin.xyz), 0.0, 1.0)
-                                : vec3(0.0), 1.0);
-    } else if (show.view == 2) {
-        outColor = vec4(albedo, 1.0);
-    } else if (show.view == 3) {
-        outColor = vec4(surface ? normal * 0.5 + 0.5 : vec3(0.0), 1.0);
-    } else if (show.view == 4) {
-        outColor = vec4(pbr, 1.0);
-    } else if (show.view == 5) {
-        float distance = show.reversedZ != 0 ? eyeDistance(depth, show.far, show.near) : eyeDistance(depth, show.near, show.far);
-        outColor = vec4(vec3(distanceToGrey(distance, show.near, show.far)), 1.0);
-    } else if (!surface) {
-        outColor = vec4(0.0, 0.0, 0.0, 1.0);  // nothing was drawn here: no surface to light
-    } else {
-        vec3 N = surfaceNormal(normal);
-        vec3 V = viewDirection(position, vec3(0.0), N);  // the camera is the origin here
-        vec3 color = scene.ambientColor * scene.ambientIntensity * albedo;
-        for (uint i = 0u; i < scene.lightCount; ++i) {
-            Light light = lights[i];
-            bool directional = light.directional != 0u;
-            vec3 lightPosition = directional ? light.position : light.position - scene.cameraPosition;
-            color += evaluateLight(directional, lightPosition, light.color, light.intensity, position, N, V, albedo,
-                                   pbr.b, pbr.g);
-        }
-        outColor = vec4(color, 1.0);
-    }
+    outColor = shadePixel(inUv);
 }
 //< light-frag
