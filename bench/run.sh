@@ -16,13 +16,30 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 doc=$root/docs/performance.md
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# Pipeline caches of these runs stay in here, not in the user's ~/.cache.
+export XDG_CACHE_HOME=$work/cache
 
-# run NAME CHAPTER ARGS...: one benchmark, its JSON report in $work/NAME.json.
+# run NAME CHAPTER ARGS...: one benchmark, its JSON report in $work/NAME.json. A one-frame run
+# first fills the pipeline cache, so the startup reported is the usual one, with a warm cache
+# (cold_startup measures the first run of each chapter).
 run() {
     local name=$1 chapter=$2
     shift 2
     echo "bench: $chapter $*" >&2
+    "$bin/$chapter" "$@" --warmup 0 --frames 1 > /dev/null
     "$bin/$chapter" "$@" --json "$work/$name.json" > "$work/$name.txt"
+}
+
+# cold_startup DEVICE: markdown rows of each chapter's startup (1280x720, headless) with an empty
+# pipeline cache, then with the cache that run left.
+cold_startup() {
+    local n cold warm
+    for n in 06 10 14 15; do
+        rm -rf "$XDG_CACHE_HOME"
+        cold=$("$bin/chapter-$n" --headless --device "$1" --benchmark --warmup 0 --frames 1 | awk '/^startup/ {print $2}')
+        warm=$("$bin/chapter-$n" --headless --device "$1" --benchmark --warmup 0 --frames 1 | awk '/^startup/ {print $2}')
+        echo "| chapter-$n | $cold | $warm |"
+    done
 }
 
 # all_chapters DEVICE W H SUFFIX ARGS...: chapters 06, 10, 14 and 15 (per layout) at one
@@ -72,6 +89,7 @@ case "${1:-}" in
     bin=$2/bin
     out=$3
     "$2/bench/bin/bandwidth" --device NVIDIA --mib 1024 --json "$work/bandwidth.json" > "$work/bandwidth.txt"
+    cold_startup NVIDIA > "$work/startup.md"
     for size in "1920 1080" "3840 2160"; do
         read -r w h <<< "$size"
         all_chapters NVIDIA "$w" "$h" "" --headless
@@ -97,6 +115,13 @@ $(sed -n 's/^copy *\(.*\)/copy: \1/p; s/^bandwidth *\(.*\)/**\1**/p' "$work/band
 
 $("$table" frames "${reports[@]}")
 
+Startup (ms, 1280x720 headless, \`chapter-NN --headless --benchmark --warmup 0 --frames 1\`), the first
+run with an empty pipeline cache, the second with the cache the first left:
+
+| chapter | empty cache | warm cache |
+|---|---|---|
+$(cat "$work/startup.md")
+
 G-buffer traffic against the measured bandwidth (a G-buffer written once by the scene pass and
 read once by the light pass, depth included):
 
@@ -109,6 +134,7 @@ MARKDOWN
     build=$(cd "${1:-$root/build}" && pwd)
     bin=$build/bin
     "$build/bench/bin/bandwidth" --device llvmpipe --mib 256 --json "$work/bandwidth.json" > "$work/bandwidth.txt"
+    startup=$(cold_startup llvmpipe)
     for size in "1280 720" "1920 1080"; do
         read -r w h <<< "$size"
         all_chapters llvmpipe "$w" "$h" "" --headless
@@ -116,7 +142,7 @@ MARKDOWN
     windowed=""
     if command -v xvfb-run > /dev/null; then
         # Windowed, no vsync (IMMEDIATE or MAILBOX), on an X server in memory: adds the present.
-        xvfb-run -a -s "-screen 0 1920x1080x24" bash -c "set -euo pipefail; $(declare -f run all_chapters); bin=$bin work=$work
+        xvfb-run -a -s "-screen 0 1920x1080x24" bash -c "set -euo pipefail; $(declare -f run all_chapters); bin=$bin work=$work XDG_CACHE_HOME=$XDG_CACHE_HOME
             all_chapters llvmpipe 1280 720 -window"
         windowed=yes
     fi
@@ -132,6 +158,13 @@ Bandwidth probe (\`bandwidth --device llvmpipe --mib 256\`):
 $(sed -n 's/^copy *\(.*\)/copy: \1/p; s/^bandwidth *\(.*\)/**\1**/p' "$work/bandwidth.txt" | paste -sd ' ')
 
 $("$build/bench/bin/benchmark_table" frames "${reports[@]}")
+
+Startup (ms, 1280x720 headless, \`chapter-NN --headless --benchmark --warmup 0 --frames 1\`), the first
+run with an empty pipeline cache, the second with the cache the first left:
+
+| chapter | empty cache | warm cache |
+|---|---|---|
+$startup
 
 G-buffer traffic against the measured bandwidth:
 
