@@ -79,6 +79,34 @@ paste_section() {
     echo "run.sh: wrote the $1 section of $doc" >&2
 }
 
+# field NAME: a line of the bandwidth probe's output (device, driver).
+field() {
+    awk -v name="$1" '$1 == name {$1=""; print substr($0,2)}' "$work/bandwidth.txt"
+}
+
+# results PROBE: the measured part of a section, from what $work holds: the bandwidth probe (run
+# as PROBE), the frame table of $reports, the startup table, the G-buffer traffic of $layouts.
+results() {
+    cat <<MARKDOWN
+Bandwidth probe (\`$1\`: a vkCmdCopyBuffer between device-local buffers, timestamps, median of 10):
+$(sed -n 's/^copy *\(.*\)/copy: \1/p; s/^bandwidth *\(.*\)/**\1**/p' "$work/bandwidth.txt" | paste -sd ' ')
+
+$("$table" frames "${reports[@]}")
+
+Startup (ms, 1280x720 headless, \`chapter-NN --headless --benchmark --warmup 0 --frames 1\`), the first
+run with an empty pipeline cache, the second with the cache the first left:
+
+| chapter | empty cache | warm cache |
+|---|---|---|
+$(cat "$work/startup.md")
+
+G-buffer traffic against the measured bandwidth (a G-buffer written once by the scene pass and
+read once by the light pass, depth included):
+
+$("$table" bytes "$work/bandwidth.json" "${layouts[@]}")
+MARKDOWN
+}
+
 machine() {
     echo "$(nproc) cores of $(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)," \
          "$(awk '/^MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo)"
@@ -103,29 +131,12 @@ case "${1:-}" in
     table=$build/bench/bin/benchmark_table
     mapfile -t reports < <(names 1920x1080 ""; names 3840x2160 "")
     mapfile -t layouts < <(for size in 1920x1080 3840x2160; do names $size "" | grep /15-; done)
-    device=$(awk '/^device/ {$1=""; print substr($0,2)}' "$work/bandwidth.txt")
-    driver=$(awk '/^driver/ {$1=""; print substr($0,2)}' "$work/bandwidth.txt")
     section=$(cat <<MARKDOWN
-Measured on **$device** ($driver; host: $(cat "$work/machine.txt")), $(date -u +%Y-%m-%d), by
+Measured on **$(field device)** ($(field driver); host: $(cat "$work/machine.txt")), $(date -u +%Y-%m-%d), by
 \`bench/run.sh --gpu\` (binaries built here, run headless on the lent machine as ../shared/GPU.md
 says; every command below also had \`--json FILE\`).
 
-Bandwidth probe (\`bandwidth --device NVIDIA --mib 1024\`: a 1 GiB vkCmdCopyBuffer, timestamps, median of 10):
-$(sed -n 's/^copy *\(.*\)/copy: \1/p; s/^bandwidth *\(.*\)/**\1**/p' "$work/bandwidth.txt" | paste -sd ' ')
-
-$("$table" frames "${reports[@]}")
-
-Startup (ms, 1280x720 headless, \`chapter-NN --headless --benchmark --warmup 0 --frames 1\`), the first
-run with an empty pipeline cache, the second with the cache the first left:
-
-| chapter | empty cache | warm cache |
-|---|---|---|
-$(cat "$work/startup.md")
-
-G-buffer traffic against the measured bandwidth (a G-buffer written once by the scene pass and
-read once by the light pass, depth included):
-
-$("$table" bytes "$work/bandwidth.json" "${layouts[@]}")
+$(results "bandwidth --device NVIDIA --mib 1024")
 MARKDOWN
 )
     paste_section gpu "$section"
@@ -133,8 +144,9 @@ MARKDOWN
 *)
     build=$(cd "${1:-$root/build}" && pwd)
     bin=$build/bin
+    table=$build/bench/bin/benchmark_table
     "$build/bench/bin/bandwidth" --device llvmpipe --mib 256 --json "$work/bandwidth.json" > "$work/bandwidth.txt"
-    startup=$(cold_startup llvmpipe)
+    cold_startup llvmpipe > "$work/startup.md"
     for size in "1280 720" "1920 1080"; do
         read -r w h <<< "$size"
         all_chapters llvmpipe "$w" "$h" "" --headless
@@ -147,28 +159,12 @@ MARKDOWN
         windowed=yes
     fi
     mapfile -t reports < <(names 1280x720 ""; names 1920x1080 ""; [ -z "$windowed" ] || names 1280x720 -window)
-    device=$(awk '/^device/ {$1=""; print substr($0,2)}' "$work/bandwidth.txt")
-    driver=$(awk '/^driver/ {$1=""; print substr($0,2)}' "$work/bandwidth.txt")
     mapfile -t layouts < <(for size in 1280x720 1920x1080; do names $size "" | grep /15-; done)
     section=$(cat <<MARKDOWN
-Measured on **$device** ($driver; $(machine)), $(date -u +%Y-%m-%d), by \`bench/run.sh\` (every
+Measured on **$(field device)** ($(field driver); $(machine)), $(date -u +%Y-%m-%d), by \`bench/run.sh\` (every
 command below also had \`--json FILE\`; the binaries are \`build/bin/chapter-NN\`, Release).
 
-Bandwidth probe (\`bandwidth --device llvmpipe --mib 256\`):
-$(sed -n 's/^copy *\(.*\)/copy: \1/p; s/^bandwidth *\(.*\)/**\1**/p' "$work/bandwidth.txt" | paste -sd ' ')
-
-$("$build/bench/bin/benchmark_table" frames "${reports[@]}")
-
-Startup (ms, 1280x720 headless, \`chapter-NN --headless --benchmark --warmup 0 --frames 1\`), the first
-run with an empty pipeline cache, the second with the cache the first left:
-
-| chapter | empty cache | warm cache |
-|---|---|---|
-$startup
-
-G-buffer traffic against the measured bandwidth:
-
-$("$build/bench/bin/benchmark_table" bytes "$work/bandwidth.json" "${layouts[@]}")
+$(results "bandwidth --device llvmpipe --mib 256")
 MARKDOWN
 )
     paste_section lavapipe "$section"
