@@ -1,0 +1,1 @@
+# fault tests: filled in by the reliability work (issue 8).

@@ -1,0 +1,1 @@
+# Fuzzing tests: filled in by the reliability work (issue 8).

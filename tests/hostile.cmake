@@ -1,0 +1,1 @@
+# hostile tests: filled in by the reliability work (issue 8).
