@@ -18,6 +18,15 @@ set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
 
 option(VKBOOK_WERROR "Treat compiler warnings as errors" ON)
 
+# -DVKBOOK_SANITIZE=ON: AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer on
+# every target, the first report ending the program. scripts/setup.sh test builds this into
+# build-sanitize/ and runs the headless tests there (docs/reliability.md).
+option(VKBOOK_SANITIZE "Build with AddressSanitizer, LeakSanitizer and UndefinedBehaviorSanitizer" OFF)
+if(VKBOOK_SANITIZE)
+    add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+    add_link_options(-fsanitize=address,undefined)
+endif()
+
 # All dependencies come from the system (Debian packages); nothing is downloaded.
 find_package(Vulkan 1.3 REQUIRED COMPONENTS glslangValidator)
 find_package(glfw3 3.3 REQUIRED)

@@ -73,14 +73,18 @@ Buffer uploadStaged(const Device& device, StagingBatch& batch, const void* data,
 void endStaging(const Device& device, StagingBatch& batch) {
     // Waiting on the fence only tells the host the copies are done; this barrier is what makes
     // the copied bytes visible to every later read on the device (vertex fetch, index fetch,
-    // shaders) in later submissions.
+    // shaders) in later submissions. The readers are named stage by stage: vertex input for
+    // vertex and index buffers, the shader stages for uniform and storage buffers.
     VkMemoryBarrier barrier{
         .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
         .dstAccessMask = VK_ACCESS_MEMORY_READ_BIT,
     };
-    vkCmdPipelineBarrier(batch.commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    VkPipelineStageFlags readers = VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    vkCmdPipelineBarrier(batch.commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, readers, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
     submitOneTimeCommands(device, batch.commandBuffer);
     for (Buffer& staging : batch.stagingBuffers) destroyBuffer(device, staging);
     batch = {};

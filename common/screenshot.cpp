@@ -63,14 +63,17 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 
     VkCommandBuffer cmd = beginOneTimeCommands(device);
-    // Whatever wrote the image earlier on this queue (a render pass, a blit) is done and visible
-    // to the copy; the image goes back to `layout` afterwards, so the caller's next step (present)
-    // finds it as it left it.
+    // Whatever wrote the image earlier on this queue (a render pass's colour or depth output, a
+    // compute shader, a copy or blit) is done and visible to the copy; the image goes back to
+    // `layout` afterwards, so the caller's next step (present) finds it as it left it.
+    VkPipelineStageFlags writers = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     VkImageMemoryBarrier toTransfer =
         layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT,
                       VK_ACCESS_TRANSFER_READ_BIT, aspect);
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &toTransfer);
+    vkCmdPipelineBarrier(cmd, writers, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                         &toTransfer);
     VkBufferImageCopy region{
         .imageSubresource = {aspect, 0, 0, 1},
         .imageExtent = {extent.width, extent.height, 1},

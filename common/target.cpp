@@ -220,6 +220,11 @@ bool pollTarget(Target& target, uint32_t frame) {
     bool closing = false;
     if (target.window) {
         glfwPollEvents();
+        // Minimised: nothing is visible, so nothing is drawn; sleep until the window comes back
+        // (or is closed) instead of rendering frames nobody sees. Where minimising also makes the
+        // framebuffer 0x0 (Windows), recreateTargetImages waits the same way.
+        while (glfwGetWindowAttrib(target.window, GLFW_ICONIFIED) && !glfwWindowShouldClose(target.window))
+            glfwWaitEvents();
         closing = glfwWindowShouldClose(target.window);
     }
     return closing || (target.frameLimit != 0 && frame + 1 >= target.frameLimit);
@@ -263,7 +268,9 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
         return !target.resized;
     }
     // Headless: nothing to show, but the semaphore is consumed as a present would consume it.
-    VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    // The batch is empty, so no stage of it waits: BOTTOM_OF_PIPE (ALL_COMMANDS would say the
+    // same here, but is the mask the best-practices checks flag for stalling real work).
+    VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
     VkSubmitInfo consume{
         .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
         .waitSemaphoreCount = 1,

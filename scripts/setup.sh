@@ -18,7 +18,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers           # Vulkan loader + headers, lavapipe (CPU device)
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
     libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev nlohmann-json3-dev libgtest-dev
-    xvfb xauth xdotool clang-format             # tests: windowed runs, key presses, formatting
+    xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
 )
 
 install_missing() {
