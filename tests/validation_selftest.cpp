@@ -1,9 +1,11 @@
 // validation_selftest: proves that --validation can fail, through the same runChapter() every
 // chapter's main() uses. With --validation it creates an instance and a device as the chapters
-// do, then makes two deliberate mistakes and checks that each one is counted:
+// do, then makes three deliberate mistakes and checks that each one is counted:
 //   1. an API misuse (a buffer of size 0) -- core validation;
 //   2. two copies writing the same buffer with no barrier between them -- a WRITE_AFTER_WRITE
-//      hazard that only synchronization validation reports.
+//      hazard that only synchronization validation reports;
+//   3. a sampler left alive when the device is destroyed -- object tracking, the check that makes
+//      every chapter test's silent exit mean "every Vulkan object was destroyed in time".
 // Expected: exit code 3 (validation messages), as a chapter would end. Exit 1 means a mistake
 // went unreported.
 #include <cstdio>
@@ -48,17 +50,26 @@ void makeMistakes(const common::Options& options) {
 
     common::destroyBuffer(device, target);
     common::destroyBuffer(device, source);
-    common::destroyDevice(device);
+
+    std::fprintf(stderr, "--- expected: an object not destroyed before its device ---\n");
+    VkSamplerCreateInfo samplerInfo{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    VkSampler leaked = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &leaked));
+    before = common::validationMessageCount();
+    common::destroyDevice(device);  // the sampler is still alive
+    bool leakReported = common::validationMessageCount() > before;
     common::destroyInstance(instance);
 
     std::printf("core validation reported the misuse: %s\n", coreReported ? "yes" : "NO");
     std::printf("synchronization validation reported the hazard: %s\n", syncReported ? "yes" : "NO");
-    if (!coreReported || !syncReported) throw common::Failure("a deliberate mistake was not reported");
+    std::printf("object tracking reported the leaked sampler: %s\n", leakReported ? "yes" : "NO");
+    if (!coreReported || !syncReported || !leakReported)
+        throw common::Failure("a deliberate mistake was not reported");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    return common::runChapter(argc, argv, {"validation_selftest", "makes two deliberate mistakes", {}},
+    return common::runChapter(argc, argv, {"validation_selftest", "makes three deliberate mistakes", {}},
                               makeMistakes);
 }
