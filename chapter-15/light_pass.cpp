@@ -156,10 +156,12 @@ void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D e
 
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
                   const ShaderSceneInfo& scene) {
-    std::memcpy(pass.lights[frame].mapped, lights.data(),
-                std::min<size_t>(lights.size(), pass.lightCapacity) * sizeof(ShaderLight));
+    // std::copy_n, not memcpy: a scene with no lights has lights.data() == nullptr, which memcpy
+    // must not be given even for 0 bytes (UndefinedBehaviorSanitizer reports it).
+    uint32_t count = std::min<uint32_t>(uint32_t(lights.size()), pass.lightCapacity);
+    std::copy_n(lights.data(), count, static_cast<ShaderLight*>(pass.lights[frame].mapped));
     ShaderSceneInfo info = scene;
-    info.lightCount = std::min<uint32_t>(uint32_t(lights.size()), pass.lightCapacity);
+    info.lightCount = count;
     std::memcpy(pass.scenes[frame].mapped, &info, sizeof(info));
 }
 

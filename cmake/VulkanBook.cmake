@@ -25,6 +25,9 @@ option(VKBOOK_SANITIZE "Build with AddressSanitizer, LeakSanitizer and Undefined
 if(VKBOOK_SANITIZE)
     add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
     add_link_options(-fsanitize=address,undefined)
+    # Keeps the driver and layer libraries loaded until exit, so their leaks, if any, are named.
+    add_library(vkbook_keep_libraries_loaded OBJECT ${CMAKE_CURRENT_LIST_DIR}/keep_libraries_loaded.cpp)
+    link_libraries(vkbook_keep_libraries_loaded)
 endif()
 
 # All dependencies come from the system (Debian packages); nothing is downloaded.

@@ -60,7 +60,7 @@ void readGpuTimer(const Device& device, GpuTimer& timer, uint32_t slot, FrameSta
                                             ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
     timer.written[slot] = false;
     if (result == VK_NOT_READY) return;
-    VK_CHECK(result);
+    VK_CHECK_RESULT(result, "vkGetQueryPoolResults");
     auto ms = [&](uint64_t from, uint64_t to) {
         return double((to - from) & timer.validMask) * timer.nanosecondsPerTick * 1e-6;
     };

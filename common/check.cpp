@@ -47,9 +47,25 @@ const char* resultName(VkResult result) {
     }
 }
 
+// What a result means for the user, for the failures that are not a bug of ours: the GPU gone
+// (a driver crash, a GPU reset or hang, an unplugged external GPU) or memory exhausted.
+const char* plainWords(VkResult result) {
+    switch (result) {
+        case VK_ERROR_DEVICE_LOST:
+            return "the GPU was lost (driver crash, GPU reset or device removed): ";
+        case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+            return "out of GPU memory: ";
+        case VK_ERROR_OUT_OF_HOST_MEMORY:
+            return "out of memory: ";
+        default:
+            return "";
+    }
+}
+
 void throwVkError(VkResult result, const char* expression, const char* file, int line) {
-    std::string message = std::string(expression) + " failed with " + resultName(result) + " (" +
-                          std::filesystem::path(file).filename().string() + ":" + std::to_string(line) + ")";
+    std::string message = plainWords(result) + std::string(expression) + " failed with " +
+                          resultName(result) + " (" + std::filesystem::path(file).filename().string() + ":" +
+                          std::to_string(line) + ")";
     throw Failure(message);
 }
 

@@ -34,3 +34,10 @@ const char* resultName(VkResult result);
         if (vkCheckResult_ != VK_SUCCESS)                                            \
             ::common::throwVkError(vkCheckResult_, #expression, __FILE__, __LINE__); \
     } while (0)
+
+// The same for a result kept to look at first (VK_NOT_READY, swapchain results): `call` names
+// the function it came from, for the message.
+#define VK_CHECK_RESULT(result, call)                                                           \
+    do {                                                                                        \
+        if ((result) != VK_SUCCESS) ::common::throwVkError((result), call, __FILE__, __LINE__); \
+    } while (0)

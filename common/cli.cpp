@@ -41,7 +41,8 @@ constexpr const char* kSceneUsage =
     "  --view NAME        show one attachment instead of the final image: %s\n";
 
 constexpr const char* kExitCodes =
-    "\nexit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
+    "\nan option given twice takes its last value\n"
+    "exit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
 
 uint32_t parseNumber(std::string_view flag, std::string_view text, uint32_t min, uint32_t max) {
     uint32_t value = 0;
@@ -97,11 +98,21 @@ bool isSwitch(const ChapterInfo& chapter, std::string_view name) {
     return false;
 }
 
+// An error message as one printable line, whatever the input put into it (a file name or a token
+// with a line break, a megabyte of garbage).
+std::string oneLine(std::string message) {
+    for (char& c : message)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    constexpr size_t kMaxLength = 1000;
+    if (message.size() > kMaxLength) message = message.substr(0, kMaxLength) + "...";
+    return message;
+}
+
 }  // namespace
 
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
     Options options;
-    bool framesGiven = false;
+    bool framesGiven = false, warmupGiven = false;
     options.command = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : chapter.name;
     for (int i = 1; i < argc; ++i) options.command += std::string(" ") + argv[i];
     for (int i = 1; i < argc; ++i) {
@@ -123,6 +134,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             options.benchmark = true;
         } else if (arg == "--warmup") {
             options.warmup = parseNumber(arg, value(), 0, 100000);
+            warmupGiven = true;
         } else if (arg == "--json") {
             options.json = value();
             if (options.json.empty()) throw InputError("--json needs a file name");
@@ -142,8 +154,10 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             throw InputError(std::string(chapter.name) + " draws no scene and takes no " + std::string(arg));
         } else if (arg == "--scene") {
             options.scene = value();
+            if (options.scene.empty()) throw InputError("--scene needs a file name");
         } else if (arg == "--model") {
             options.model = value();
+            if (options.model.empty()) throw InputError("--model needs a file name");
         } else if (arg == "--view") {
             std::string_view name = value();
             std::string names;
@@ -181,6 +195,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         }
     }
     if (!options.json.empty() && !options.benchmark) throw InputError("--json goes with --benchmark");
+    if (warmupGiven && !options.benchmark) throw InputError("--warmup goes with --benchmark");
     if (!options.scene.empty() && !options.model.empty())
         throw InputError("--scene and --model exclude each other");
     if (options.resizeTo && (!framesGiven || options.frames < 2))
@@ -233,10 +248,10 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
         }
         chapter(options);
     } catch (const InputError& error) {
-        std::fprintf(stderr, "%s: error: %s\n", name, error.what());
+        std::fprintf(stderr, "%s: error: %s\n", name, oneLine(error.what()).c_str());
         return 2;
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "%s: error: %s\n", name, error.what());
+        std::fprintf(stderr, "%s: error: %s\n", name, oneLine(error.what()).c_str());
         return 1;
     }
     if (uint32_t count = validationMessageCount(); count != 0) {

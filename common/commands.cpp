@@ -80,11 +80,10 @@ void submitOneTimeCommands(const Device& device, VkCommandBuffer commandBuffer) 
         .commandBufferCount = 1,
         .pCommandBuffers = &commandBuffer,
     };
-    VkResult result = vkQueueSubmit(device.queue, 1, &submit, done);
-    if (result == VK_SUCCESS) result = vkWaitForFences(device.handle, 1, &done, VK_TRUE, UINT64_MAX);
+    VK_CHECK(vkQueueSubmit(device.queue, 1, &submit, done));
+    VK_CHECK(vkWaitForFences(device.handle, 1, &done, VK_TRUE, UINT64_MAX));
     vkDestroyFence(device.handle, done, nullptr);
     vkFreeCommandBuffers(device.handle, device.oneTimePool, 1, &commandBuffer);
-    VK_CHECK(result);
 }
 
 }  // namespace common

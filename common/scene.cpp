@@ -1,6 +1,7 @@
 // Scene files: strict JSON reading (nlohmann-json) and writing.
 #include "common/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,13 @@ namespace common {
 namespace {
 
 using nlohmann::json;
+
+// A key as the JSON writes it, without the quotes: a "\n" in a key stays two characters, so every
+// message is one line.
+std::string escaped(const std::string& key) {
+    std::string text = json(key).dump();
+    return text.substr(1, text.size() - 2);
+}
 
 // Reads one JSON value with a path for messages ("models[2].transform.scale").
 class Reader {
@@ -31,7 +39,7 @@ public:
         for (const auto& [key, value] : object.items()) {
             bool known = false;
             for (const char* name : allowed) known = known || key == name;
-            if (!known) fail(where, "unknown key '" + key + "'");
+            if (!known) fail(where, "unknown key '" + escaped(key) + "'");
         }
     }
 
@@ -57,7 +65,12 @@ public:
     std::string string(const json& value, const std::string& where) const {
         if (!value.is_string() || value.get<std::string>().empty())
             fail(where, "expected a non-empty string");
-        return value.get<std::string>();
+        const std::string& text = value.get_ref<const std::string&>();
+        // File names and types: a line break in one would break the one-line messages that name it.
+        if (std::any_of(text.begin(), text.end(),
+                        [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+            fail(where, "must not contain control characters");
+        return text;
     }
 
 private:
@@ -119,6 +132,10 @@ glm::mat4 Transform::matrix() const {
 }
 
 Scene parseScene(const std::string& text, const std::string& origin, const std::filesystem::path& baseDir) {
+    // nlohmann-json reads UTF-8 (and skips its byte order mark); UTF-16 would be a syntax error at
+    // column 1.
+    if (text.starts_with("\xff\xfe") || text.starts_with("\xfe\xff"))
+        throw InputError(origin + ": UTF-16 text; save it as UTF-8");
     json root;
     try {
         root = json::parse(text);
@@ -134,6 +151,9 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
 
     if (!root.contains("models") || !root["models"].is_array() || root["models"].empty())
         r.fail("models", "expected a non-empty array of models");
+    if (root["models"].size() > kMaxSceneModels)
+        r.fail("models",
+               std::to_string(root["models"].size()) + " models, at most " + std::to_string(kMaxSceneModels));
     for (size_t i = 0; i < root["models"].size(); ++i) {
         const json& m = root["models"][i];
         std::string where = "models[" + std::to_string(i) + "]";
@@ -146,7 +166,8 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (!m["materials"].is_object())
                 r.fail(where + ".materials", "expected an object keyed by material name");
             for (const auto& [name, value] : m["materials"].items())
-                model.materials[name] = readOverride(r, value, where + ".materials." + name, baseDir);
+                model.materials[name] =
+                    readOverride(r, value, where + ".materials." + escaped(name), baseDir);
         }
         scene.models.push_back(std::move(model));
     }
@@ -175,6 +196,9 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
 
     if (root.contains("lights")) {
         if (!root["lights"].is_array()) r.fail("lights", "expected an array");
+        if (root["lights"].size() > kMaxSceneLights)
+            r.fail("lights", std::to_string(root["lights"].size()) + " lights, at most " +
+                                 std::to_string(kMaxSceneLights));
         for (size_t i = 0; i < root["lights"].size(); ++i) {
             const json& l = root["lights"][i];
             std::string where = "lights[" + std::to_string(i) + "]";

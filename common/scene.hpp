@@ -4,6 +4,7 @@
 // Projection and light classes, chapters 7-15); our scenes are files so readers can bring theirs.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -71,6 +72,12 @@ struct Scene {
     std::vector<Light> lights;
     bool operator==(const Scene&) const = default;
 };
+
+// What a scene file may hold. Every model is a draw call recorded each frame, every light is shaded
+// at every pixel (no light culling): 100,000 of each still renders (tests/hostile.cmake), and the
+// lights buffer (32 bytes a light) stays far below the smallest maxStorageBufferRange (128 MiB).
+inline constexpr size_t kMaxSceneModels = 100000;
+inline constexpr size_t kMaxSceneLights = 100000;
 
 // Parses scene JSON. `origin` names the file in error messages; relative model paths are taken
 // relative to `baseDir`. Throws InputError with one line naming the file and the offending key.

@@ -236,7 +236,8 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
         VkResult result = vkAcquireNextImageKHR(device.handle, target.swapchain, UINT64_MAX, imageAvailable,
                                                 VK_NULL_HANDLE, imageIndex);
         if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
-        if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);  // suboptimal still signals: draw, then recreate
+        // Suboptimal still signals the semaphore: draw, then recreate.
+        if (result != VK_SUBOPTIMAL_KHR) VK_CHECK_RESULT(result, "vkAcquireNextImageKHR");
         return true;
     }
     // Headless: images are handed out in turn, and an empty submission signals the semaphore the
@@ -264,7 +265,7 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
         };
         VkResult result = vkQueuePresentKHR(device.queue, &info);
         if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
-        VK_CHECK(result);
+        VK_CHECK_RESULT(result, "vkQueuePresentKHR");
         return !target.resized;
     }
     // Headless: nothing to show, but the semaphore is consumed as a present would consume it.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,8 +37,22 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such image file");
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info(path.c_str(), &width, &height, &channels))
+    if (!stbi_info(path.c_str(), &width, &height, &channels)) {
+        // stb_image refuses a PNG header of more than 2^30 bytes of pixels, then tries the other
+        // formats and reports "unknown image type": read the size from the PNG header ourselves.
+        unsigned char header[24] = {};
+        std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(header), sizeof(header));
+        if (std::memcmp(header, "\x89PNG\r\n\x1a\n", 8) == 0 && std::memcmp(header + 12, "IHDR", 4) == 0) {
+            auto be32 = [](const unsigned char* b) {
+                return uint32_t(b[0]) << 24 | b[1] << 16 | b[2] << 8 | b[3];
+            };
+            if (be32(header + 16) > maxDimension || be32(header + 20) > maxDimension)
+                throw InputError(path.string() + ": image size " + std::to_string(be32(header + 16)) + "x" +
+                                 std::to_string(be32(header + 20)) + " exceeds the device limit of " +
+                                 std::to_string(maxDimension));
+        }
         throw InputError(path.string() + ": not a readable image (" + stbi_failure_reason() + ")");
+    }
     // Checked before decoding: a header that claims 100000 x 100000 must not allocate 40 GB.
     if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
         throw InputError(path.string() + ": image size " + std::to_string(width) + "x" +

@@ -2,7 +2,9 @@
 # One command from a fresh Debian/Ubuntu machine to a running chapter or a green test suite.
 #
 #   scripts/setup.sh run [chapter-NN] [options...]   install, build (Release), run a chapter
-#   scripts/setup.sh test                            install, build (Release), run every test
+#   scripts/setup.sh test                            install, build (Release), run every test;
+#                                                    then build with the sanitizers and run the
+#                                                    headless tests again (docs/reliability.md)
 #
 # Installs only the Debian packages that are missing (with sudo when not root), configures
 # build/ in Release and builds it. `run` opens a window when a display is available, otherwise
@@ -39,6 +41,17 @@ build_release() {
     cmake --build "$build" -j "$(nproc)"
 }
 
+# AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer, optimised with debug info.
+sanitize_build="$root/build-sanitize"
+build_sanitize() {
+    cmake -S "$root" -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVKBOOK_SANITIZE=ON
+    cmake --build "$sanitize_build" -j "$(nproc)"
+}
+# Not run again under the sanitizers: the window-life tests (they measure resident memory, which
+# AddressSanitizer's shadow memory and quarantine inflate), builds of a chapter on its own,
+# formatting, docs, and the fuzzers (built with sanitizers of their own).
+sanitize_skip='^window-life\.|standalone|^format$|^docs\.|^fuzz\.'
+
 command=${1:-}
 [ $# -gt 0 ] && shift
 case "$command" in
@@ -61,6 +74,10 @@ case "$command" in
         started=$SECONDS
         ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
         echo "setup: test stage took $((SECONDS - started)) s"
+        build_sanitize
+        started=$SECONDS
+        ctest --test-dir "$sanitize_build" --output-on-failure -j "$(nproc)" -E "$sanitize_skip"
+        echo "setup: sanitizer test stage took $((SECONDS - started)) s"
         ;;
     *)
         echo "usage: scripts/setup.sh run [chapter-NN] [options...] | scripts/setup.sh test" >&2

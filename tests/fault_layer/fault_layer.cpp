@@ -1,0 +1,377 @@
+// VK_LAYER_VKBOOK_fault_injection: a Vulkan layer that makes one chosen call fail the way a real
+// GPU fails -- out of memory, or lost -- so the tests can check that every chapter then stops with
+// a clear error instead of hanging or crashing. Lavapipe never runs out of memory or loses its
+// device, so the failure has to be injected, and a layer is where the Vulkan loader lets us do it
+// without touching the chapters (serious renderers test their error paths the same way).
+//
+// VKBOOK_FAULT=<call>:<n> fails the n-th call (counting from 1) of <call>:
+//   vkAllocateMemory                  -> VK_ERROR_OUT_OF_DEVICE_MEMORY (that call only)
+//   vkCreateImage, vkCreateBuffer     -> VK_ERROR_OUT_OF_HOST_MEMORY (that call only)
+//   vkQueueSubmit, vkQueueSubmit2, vkWaitForFences, vkGetFenceStatus, vkDeviceWaitIdle,
+//   vkQueueWaitIdle, vkAcquireNextImageKHR, vkQueuePresentKHR, vkGetQueryPoolResults
+//                                     -> VK_ERROR_DEVICE_LOST, and from then on every one of these
+//                                        calls on that device returns VK_ERROR_DEVICE_LOST too, as
+//                                        after a real device loss (a wait returns at once: no hang).
+// A failed call is not passed down, so the layers below (validation) and the driver never see it
+// and keep a consistent picture. VKBOOK_FAULT_TRACE=1 prints each counted call, to choose n.
+// Otherwise the layer prints nothing. It is an implicit layer that is only enabled when
+// VKBOOK_FAULT_LAYER=1 (see its manifest in tests/fault.cmake): the loader reports layers enabled
+// through VK_INSTANCE_LAYERS as a warning to the debug messenger, which --validation would count.
+//
+// The layer interface (docs: the Vulkan loader's LoaderLayerInterface.md): the loader asks for
+// vkNegotiateLoaderLayerInterfaceVersion, which hands back our vkGetInstanceProcAddr and
+// vkGetDeviceProcAddr; in vkCreateInstance / vkCreateDevice each layer finds the next one's
+// GetProcAddr in the create info's pNext chain (VkLayerInstanceCreateInfo, VkLayerDeviceCreateInfo).
+#include <vulkan/vk_layer.h>
+#include <vulkan/vulkan.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+
+namespace {
+
+// ---- Which call fails -------------------------------------------------------------------------
+
+struct Fault {
+    std::string call;  // e.g. "vkQueueSubmit2"; empty: inject nothing
+    unsigned long long nth = 0;
+    bool trace = false;  // VKBOOK_FAULT_TRACE=1: print every counted call (to choose n)
+    std::unordered_map<std::string, unsigned long long> calls;  // how often each call was made
+};
+
+Fault parseFault() {
+    Fault f;
+    const char* trace = std::getenv("VKBOOK_FAULT_TRACE");
+    f.trace = trace != nullptr && std::strcmp(trace, "1") == 0;
+    const char* spec = std::getenv("VKBOOK_FAULT");
+    if (spec == nullptr || *spec == '\0') return f;
+    const char* colon = std::strrchr(spec, ':');
+    char* end = nullptr;
+    unsigned long long n = colon ? std::strtoull(colon + 1, &end, 10) : 0;
+    if (colon == nullptr || colon == spec || end == colon + 1 || *end != '\0' || n == 0) {
+        std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_FAULT='%s' is not <call>:<n>\n", spec);
+        return f;
+    }
+    f.call.assign(spec, colon);
+    f.nth = n;
+    return f;
+}
+
+// A plain static, not a leaked pointer: the loader unloads the layer at vkDestroyInstance, and
+// memory that only the unloaded library pointed to would be reported by LeakSanitizer.
+Fault& fault() {
+    static Fault parsed = parseFault();
+    return parsed;
+}
+
+// Counts a call of `call` (the caller holds gLock); true when it is the one to fail.
+bool failsNow(const char* call) {
+    Fault& f = fault();
+    unsigned long long n = ++f.calls[call];
+    if (f.trace) std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: %s #%llu\n", call, n);
+    return n == f.nth && f.call == call;
+}
+
+// ---- Per-instance and per-device state ---------------------------------------------------------
+
+// Every dispatchable handle (instance, physical device, device, queue, command buffer) starts
+// with the loader's dispatch table pointer; a device's queues share their device's. It is the
+// key to our state.
+void* dispatchKey(const void* handle) {
+    return *static_cast<void* const*>(handle);
+}
+
+struct InstanceData {
+    VkInstance handle = VK_NULL_HANDLE;
+    PFN_vkGetInstanceProcAddr next = nullptr;  // the next layer's (or the loader's) GetProcAddr
+};
+
+struct DeviceData {
+    PFN_vkGetDeviceProcAddr getProcAddr = nullptr;  // the next layer's
+    bool lost = false;  // once a loss is injected, everything that can report one does
+    struct {            // the next layer's functions that we call down to
+        PFN_vkDestroyDevice destroyDevice;
+        PFN_vkAllocateMemory allocateMemory;
+        PFN_vkCreateImage createImage;
+        PFN_vkCreateBuffer createBuffer;
+        PFN_vkQueueSubmit queueSubmit;
+        PFN_vkQueueSubmit2 queueSubmit2;
+        PFN_vkWaitForFences waitForFences;
+        PFN_vkGetFenceStatus getFenceStatus;
+        PFN_vkDeviceWaitIdle deviceWaitIdle;
+        PFN_vkQueueWaitIdle queueWaitIdle;
+        PFN_vkGetQueryPoolResults getQueryPoolResults;
+        PFN_vkAcquireNextImageKHR acquireNextImage;  // null without VK_KHR_swapchain
+        PFN_vkQueuePresentKHR queuePresent;
+    } next{};
+};
+
+std::mutex gLock;
+std::unordered_map<void*, InstanceData> gInstances;
+std::unordered_map<void*, DeviceData> gDevices;
+
+InstanceData& instanceData(const void* handle) {
+    std::lock_guard lock(gLock);
+    return gInstances.at(dispatchKey(handle));
+}
+
+// unordered_map never moves its elements, so the reference stays good until the device is destroyed.
+DeviceData& deviceData(const void* handle) {
+    std::lock_guard lock(gLock);
+    return gDevices.at(dispatchKey(handle));
+}
+
+// VK_ERROR_DEVICE_LOST when the device is lost or `call` is the one to lose it; else VK_SUCCESS,
+// and the caller passes the call down.
+VkResult deviceLoss(DeviceData& device, const char* call) {
+    std::lock_guard lock(gLock);
+    if (failsNow(call)) device.lost = true;
+    return device.lost ? VK_ERROR_DEVICE_LOST : VK_SUCCESS;
+}
+
+// ---- Instance and device creation: linking into the chain ---------------------------------------
+
+template <typename CreateInfo>
+CreateInfo* findLinkInfo(const void* pNext, VkStructureType type) {
+    auto* info = static_cast<CreateInfo*>(const_cast<void*>(pNext));
+    while (info != nullptr && !(info->sType == type && info->function == VK_LAYER_LINK_INFO))
+        info = static_cast<CreateInfo*>(const_cast<void*>(info->pNext));
+    return info;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createInstance(const VkInstanceCreateInfo* createInfo,
+                                              const VkAllocationCallbacks* allocator, VkInstance* instance) {
+    auto* link = findLinkInfo<VkLayerInstanceCreateInfo>(createInfo->pNext,
+                                                         VK_STRUCTURE_TYPE_LOADER_INSTANCE_CREATE_INFO);
+    if (link == nullptr) return VK_ERROR_INITIALIZATION_FAILED;
+    PFN_vkGetInstanceProcAddr next = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
+    link->u.pLayerInfo = link->u.pLayerInfo->pNext;  // the next layer finds its own link
+    auto create = reinterpret_cast<PFN_vkCreateInstance>(next(VK_NULL_HANDLE, "vkCreateInstance"));
+    VkResult result = create(createInfo, allocator, instance);
+    if (result != VK_SUCCESS) return result;
+    std::lock_guard lock(gLock);
+    gInstances[dispatchKey(*instance)] = {*instance, next};
+    return VK_SUCCESS;
+}
+
+VKAPI_ATTR void VKAPI_CALL destroyInstance(VkInstance instance, const VkAllocationCallbacks* allocator) {
+    if (instance == VK_NULL_HANDLE) return;
+    InstanceData data = instanceData(instance);
+    {
+        std::lock_guard lock(gLock);
+        gInstances.erase(dispatchKey(instance));
+    }
+    reinterpret_cast<PFN_vkDestroyInstance>(data.next(instance, "vkDestroyInstance"))(instance, allocator);
+}
+
+template <typename Function>
+void resolve(Function& function, PFN_vkGetDeviceProcAddr next, VkDevice device, const char* name) {
+    function = reinterpret_cast<Function>(next(device, name));
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkDeviceCreateInfo* createInfo,
+                                            const VkAllocationCallbacks* allocator, VkDevice* device) {
+    auto* link =
+        findLinkInfo<VkLayerDeviceCreateInfo>(createInfo->pNext, VK_STRUCTURE_TYPE_LOADER_DEVICE_CREATE_INFO);
+    if (link == nullptr) return VK_ERROR_INITIALIZATION_FAILED;
+    PFN_vkGetInstanceProcAddr nextInstance = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
+    PFN_vkGetDeviceProcAddr next = link->u.pLayerInfo->pfnNextGetDeviceProcAddr;
+    link->u.pLayerInfo = link->u.pLayerInfo->pNext;
+    VkInstance instance = instanceData(physical).handle;  // a physical device shares its instance's key
+    auto create = reinterpret_cast<PFN_vkCreateDevice>(nextInstance(instance, "vkCreateDevice"));
+    VkResult result = create(physical, createInfo, allocator, device);
+    if (result != VK_SUCCESS) return result;
+
+    DeviceData data;
+    data.getProcAddr = next;
+    resolve(data.next.destroyDevice, next, *device, "vkDestroyDevice");
+    resolve(data.next.allocateMemory, next, *device, "vkAllocateMemory");
+    resolve(data.next.createImage, next, *device, "vkCreateImage");
+    resolve(data.next.createBuffer, next, *device, "vkCreateBuffer");
+    resolve(data.next.queueSubmit, next, *device, "vkQueueSubmit");
+    resolve(data.next.queueSubmit2, next, *device, "vkQueueSubmit2");
+    resolve(data.next.waitForFences, next, *device, "vkWaitForFences");
+    resolve(data.next.getFenceStatus, next, *device, "vkGetFenceStatus");
+    resolve(data.next.deviceWaitIdle, next, *device, "vkDeviceWaitIdle");
+    resolve(data.next.queueWaitIdle, next, *device, "vkQueueWaitIdle");
+    resolve(data.next.getQueryPoolResults, next, *device, "vkGetQueryPoolResults");
+    resolve(data.next.acquireNextImage, next, *device, "vkAcquireNextImageKHR");
+    resolve(data.next.queuePresent, next, *device, "vkQueuePresentKHR");
+    std::lock_guard lock(gLock);
+    gDevices[dispatchKey(*device)] = data;
+    return VK_SUCCESS;
+}
+
+VKAPI_ATTR void VKAPI_CALL destroyDevice(VkDevice device, const VkAllocationCallbacks* allocator) {
+    if (device == VK_NULL_HANDLE) return;
+    PFN_vkDestroyDevice destroy = deviceData(device).next.destroyDevice;
+    {
+        std::lock_guard lock(gLock);
+        gDevices.erase(dispatchKey(device));
+    }
+    destroy(device, allocator);
+}
+
+// ---- The intercepted calls ---------------------------------------------------------------------
+
+VKAPI_ATTR VkResult VKAPI_CALL allocateMemory(VkDevice device, const VkMemoryAllocateInfo* info,
+                                              const VkAllocationCallbacks* allocator,
+                                              VkDeviceMemory* memory) {
+    DeviceData& data = deviceData(device);
+    {
+        std::lock_guard lock(gLock);
+        if (failsNow("vkAllocateMemory")) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    }
+    return data.next.allocateMemory(device, info, allocator, memory);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createImage(VkDevice device, const VkImageCreateInfo* info,
+                                           const VkAllocationCallbacks* allocator, VkImage* image) {
+    DeviceData& data = deviceData(device);
+    {
+        std::lock_guard lock(gLock);
+        if (failsNow("vkCreateImage")) return VK_ERROR_OUT_OF_HOST_MEMORY;
+    }
+    return data.next.createImage(device, info, allocator, image);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createBuffer(VkDevice device, const VkBufferCreateInfo* info,
+                                            const VkAllocationCallbacks* allocator, VkBuffer* buffer) {
+    DeviceData& data = deviceData(device);
+    {
+        std::lock_guard lock(gLock);
+        if (failsNow("vkCreateBuffer")) return VK_ERROR_OUT_OF_HOST_MEMORY;
+    }
+    return data.next.createBuffer(device, info, allocator, buffer);
+}
+
+// The calls that report a device loss: each returns it instead of reaching the driver once the
+// device is lost, and each can be the call that loses it.
+#define LOSE_OR_PASS_DOWN(handle, call, function, ...)                           \
+    DeviceData& data = deviceData(handle);                                       \
+    if (VkResult lost = deviceLoss(data, call); lost != VK_SUCCESS) return lost; \
+    return data.next.function(__VA_ARGS__)
+
+VKAPI_ATTR VkResult VKAPI_CALL queueSubmit(VkQueue queue, uint32_t count, const VkSubmitInfo* submits,
+                                           VkFence fence) {
+    LOSE_OR_PASS_DOWN(queue, "vkQueueSubmit", queueSubmit, queue, count, submits, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queueSubmit2(VkQueue queue, uint32_t count, const VkSubmitInfo2* submits,
+                                            VkFence fence) {
+    LOSE_OR_PASS_DOWN(queue, "vkQueueSubmit2", queueSubmit2, queue, count, submits, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL waitForFences(VkDevice device, uint32_t count, const VkFence* fences,
+                                             VkBool32 waitAll, uint64_t timeout) {
+    LOSE_OR_PASS_DOWN(device, "vkWaitForFences", waitForFences, device, count, fences, waitAll, timeout);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL getFenceStatus(VkDevice device, VkFence fence) {
+    LOSE_OR_PASS_DOWN(device, "vkGetFenceStatus", getFenceStatus, device, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL deviceWaitIdle(VkDevice device) {
+    LOSE_OR_PASS_DOWN(device, "vkDeviceWaitIdle", deviceWaitIdle, device);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queueWaitIdle(VkQueue queue) {
+    LOSE_OR_PASS_DOWN(queue, "vkQueueWaitIdle", queueWaitIdle, queue);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL getQueryPoolResults(VkDevice device, VkQueryPool pool, uint32_t first,
+                                                   uint32_t count, size_t size, void* results,
+                                                   VkDeviceSize stride, VkQueryResultFlags flags) {
+    LOSE_OR_PASS_DOWN(device, "vkGetQueryPoolResults", getQueryPoolResults, device, pool, first, count, size,
+                      results, stride, flags);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL acquireNextImage(VkDevice device, VkSwapchainKHR swapchain, uint64_t timeout,
+                                                VkSemaphore semaphore, VkFence fence, uint32_t* index) {
+    LOSE_OR_PASS_DOWN(device, "vkAcquireNextImageKHR", acquireNextImage, device, swapchain, timeout,
+                      semaphore, fence, index);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKHR* info) {
+    LOSE_OR_PASS_DOWN(queue, "vkQueuePresentKHR", queuePresent, queue, info);
+}
+
+#undef LOSE_OR_PASS_DOWN
+
+// ---- GetProcAddr: our functions for the calls we intercept, the next layer's for the rest ------
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getDeviceProcAddr(VkDevice device, const char* name);
+
+PFN_vkVoidFunction interceptedDeviceCall(const char* name) {
+    static const std::unordered_map<std::string, PFN_vkVoidFunction> calls = {
+        {"vkGetDeviceProcAddr", reinterpret_cast<PFN_vkVoidFunction>(getDeviceProcAddr)},
+        {"vkDestroyDevice", reinterpret_cast<PFN_vkVoidFunction>(destroyDevice)},
+        {"vkAllocateMemory", reinterpret_cast<PFN_vkVoidFunction>(allocateMemory)},
+        {"vkCreateImage", reinterpret_cast<PFN_vkVoidFunction>(createImage)},
+        {"vkCreateBuffer", reinterpret_cast<PFN_vkVoidFunction>(createBuffer)},
+        {"vkQueueSubmit", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit)},
+        {"vkQueueSubmit2", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit2)},
+        {"vkQueueSubmit2KHR", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit2)},
+        {"vkWaitForFences", reinterpret_cast<PFN_vkVoidFunction>(waitForFences)},
+        {"vkGetFenceStatus", reinterpret_cast<PFN_vkVoidFunction>(getFenceStatus)},
+        {"vkDeviceWaitIdle", reinterpret_cast<PFN_vkVoidFunction>(deviceWaitIdle)},
+        {"vkQueueWaitIdle", reinterpret_cast<PFN_vkVoidFunction>(queueWaitIdle)},
+        {"vkGetQueryPoolResults", reinterpret_cast<PFN_vkVoidFunction>(getQueryPoolResults)},
+        {"vkAcquireNextImageKHR", reinterpret_cast<PFN_vkVoidFunction>(acquireNextImage)},
+        {"vkQueuePresentKHR", reinterpret_cast<PFN_vkVoidFunction>(queuePresent)},
+    };
+    auto found = calls.find(name);
+    return found == calls.end() ? nullptr : found->second;
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getDeviceProcAddr(VkDevice device, const char* name) {
+    PFN_vkGetDeviceProcAddr next = deviceData(device).getProcAddr;
+    // Only what the device has: no vkAcquireNextImageKHR of ours on a device without swapchains.
+    if (PFN_vkVoidFunction ours = interceptedDeviceCall(name); ours && next(device, name)) return ours;
+    return next(device, name);
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance, const char* name) {
+    if (std::strcmp(name, "vkGetInstanceProcAddr") == 0)
+        return reinterpret_cast<PFN_vkVoidFunction>(getInstanceProcAddr);
+    if (std::strcmp(name, "vkCreateInstance") == 0)
+        return reinterpret_cast<PFN_vkVoidFunction>(createInstance);
+    if (std::strcmp(name, "vkDestroyInstance") == 0)
+        return reinterpret_cast<PFN_vkVoidFunction>(destroyInstance);
+    if (std::strcmp(name, "vkCreateDevice") == 0) return reinterpret_cast<PFN_vkVoidFunction>(createDevice);
+    if (PFN_vkVoidFunction ours = interceptedDeviceCall(name)) return ours;
+    if (instance == VK_NULL_HANDLE) return nullptr;
+    return instanceData(instance).next(instance, name);
+}
+
+}  // namespace
+
+// The three entry points the loader looks up by name. Inside the layer we only ever call the
+// functions above: an exported vkGetInstanceProcAddr could bind to the loader's own.
+extern "C" {
+
+VK_LAYER_EXPORT VKAPI_ATTR VkResult VKAPI_CALL
+vkNegotiateLoaderLayerInterfaceVersion(VkNegotiateLayerInterface* version) {
+    if (version->loaderLayerInterfaceVersion < 2) return VK_ERROR_INITIALIZATION_FAILED;
+    version->loaderLayerInterfaceVersion = 2;
+    version->pfnGetInstanceProcAddr = getInstanceProcAddr;
+    version->pfnGetDeviceProcAddr = getDeviceProcAddr;
+    version->pfnGetPhysicalDeviceProcAddr = nullptr;
+    return VK_SUCCESS;
+}
+
+VK_LAYER_EXPORT VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL vkGetInstanceProcAddr(VkInstance instance,
+                                                                               const char* name) {
+    return getInstanceProcAddr(instance, name);
+}
+
+VK_LAYER_EXPORT VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL vkGetDeviceProcAddr(VkDevice device,
+                                                                             const char* name) {
+    return getDeviceProcAddr(device, name);
+}
+
+}  // extern "C"
