@@ -21,6 +21,7 @@ packages=(
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
     libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev nlohmann-json3-dev libgtest-dev
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
+    clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/fuzz/), symbolized reports
 )
 
 install_missing() {
