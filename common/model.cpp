@@ -138,7 +138,34 @@ void checkFace(const std::filesystem::path& obj, int lineNumber, std::istringstr
 struct ObjText {
     MaterialKeys stated;                              // per MTL material, the keys it states
     std::vector<std::pair<std::string, int>> usemtl;  // the materials the OBJ uses, with their line
+    std::set<std::string> libraries;                  // the MTL file names checked, as mtllib gives them
 };
+
+// The file names of an `mtllib` line, split as tinyobjloader splits them: at spaces (not tabs),
+// a backslash keeping the next character ("my\ materials.mtl" is one name). Splitting any other
+// way would check other files than the ones tinyobjloader then reads.
+std::vector<std::string> mtllibNames(const std::string& line) {
+    size_t start = line.find("mtllib") + 7;  // the keyword and the one blank after it
+    std::vector<std::string> names;
+    std::string name;
+    bool escaped = false;
+    for (size_t i = start; i < line.size(); ++i) {
+        char c = line[i];
+        if (!escaped && c == '\\') {
+            escaped = true;
+            continue;
+        }
+        if (!escaped && c == ' ') {
+            if (!name.empty()) names.push_back(name);
+            name.clear();
+            continue;
+        }
+        escaped = false;
+        name += c;
+    }
+    if (!name.empty()) names.push_back(name);
+    return names;
+}
 
 // One pass over the OBJ text: the numbers of v / vn / vt lines, the indices of f lines, the MTL
 // files it names and the materials it uses.
@@ -160,32 +187,38 @@ ObjText checkObjText(const std::filesystem::path& obj, const std::string& text) 
         if (key == "usemtl")
             if (std::string name; tokens >> name) result.usemtl.emplace_back(name, number);
         if (key == "mtllib")
-            for (std::string file; tokens >> file;) {
+            for (const std::string& file : mtllibNames(line)) {
                 std::filesystem::path mtl = obj.parent_path() / file;
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(mtl, ec))
                     throw InputError(obj.string() + ": a material library it names cannot be read (" +
                                      mtl.string() + ")");
                 checkMtl(mtl, result.stated);
+                result.libraries.insert(file);
             }
     }
     return result;
 }
 
 // Hands tinyobjloader the MTL files as checked text (through readText) instead of letting it
-// open them.
+// open them, and only the ones checkObjText checked.
 class MtlReader : public tinyobj::MaterialReader {
 public:
-    explicit MtlReader(std::filesystem::path directory) : directory_(std::move(directory)) {}
+    MtlReader(std::filesystem::path obj, const std::set<std::string>& checked)
+        : obj_(std::move(obj)), checked_(checked) {}
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
-        std::istringstream text(readText(directory_ / name));
+        if (name.empty()) return false;  // "mtllib" and blanks: tinyobjloader uses the default material
+        if (!checked_.count(name))
+            throw InputError(obj_.string() + ": material library '" + name + "' was not read as named");
+        std::istringstream text(readText(obj_.parent_path() / name));
         tinyobj::LoadMtl(names, materials, &text, warning, error);
         return true;
     }
 
 private:
-    std::filesystem::path directory_;
+    std::filesystem::path obj_;
+    const std::set<std::string>& checked_;
 };
 
 // Splits a polygon into triangles (corner indices, n - 2 triangles of the polygon's winding) by
@@ -261,7 +294,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
     std::istringstream stream(text);
-    MtlReader mtlReader(directory);
+    MtlReader mtlReader(path, checked.libraries);
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, &mtlReader,
                           /*triangulate=*/false, /*default_vcols_fallback=*/false)) {
         std::string why = error;

@@ -120,3 +120,25 @@ TEST(HostileScene, LightCountUpToTheLimit) {
 }
 
 }  // namespace
+
+// `mtllib` splits its names as tinyobjloader does: a backslash keeps a space in a name. The MTL
+// behind such a name is the one checked and the one read (its Kd arrives; its bad number is caught).
+TEST(HostileObj, MtllibNameWithEscapedSpace) {
+    writeTemp("escaped space.mtl", "newmtl m\nKd 0.25 0.5 0.75\n");
+    auto path = writeTemp("escaped_space.obj",
+                          "mtllib escaped\\ space.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    common::ModelData model = common::loadObjModel(path);
+    ASSERT_FALSE(model.materials.empty());
+    EXPECT_FLOAT_EQ(model.materials[0].diffuse.g, 0.5f);
+
+    writeTemp("escaped bad.mtl", "newmtl m\nKd 0.25 nope 0.75\n");
+    auto bad = writeTemp("escaped_bad.obj",
+                         "mtllib escaped\\ bad.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    try {
+        common::loadObjModel(bad);
+        FAIL() << "a bad number in an MTL named with an escaped space was not caught";
+    } catch (const common::InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("escaped bad.mtl:2: 'Kd' has 'nope'"), std::string::npos)
+            << error.what();
+    }
+}
