@@ -26,6 +26,26 @@ std::vector<char> readFile(const std::filesystem::path& path) {
     return bytes;
 }
 
+std::string readInputFile(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) throw InputError(path.string() + ": no such file");
+    if (std::filesystem::is_directory(status))
+        throw InputError(path.string() + ": is a directory, not a file");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(path.string() + ": not a regular file (a device, a pipe or a socket)");
+    uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(path.string() + ": cannot read (" + ec.message() + ")");
+    if (size > kMaxInputFileBytes)
+        throw InputError(path.string() + ": " + std::to_string(size >> 20) + " MiB, more than the " +
+                         std::to_string(kMaxInputFileBytes >> 20) + " MiB an input file may have");
+    std::ifstream file(path, std::ios::binary);
+    std::string text(static_cast<size_t>(size), '\0');
+    if (!file || !file.read(text.data(), static_cast<std::streamsize>(size)))
+        throw InputError(path.string() + ": cannot read");
+    return text;
+}
+
 VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
     std::filesystem::path path = executableDir() / "shaders" / (std::string(name) + ".spv");
     if (!std::filesystem::exists(path))

@@ -5,7 +5,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +20,15 @@ std::filesystem::path executableDir();
 
 // The whole file; throws Failure naming the file when it cannot be read.
 std::vector<char> readFile(const std::filesystem::path& path);
+
+// The largest OBJ, MTL or scene file the loaders read: it is held in memory whole, and parsing
+// needs several times its size again.
+inline constexpr uintmax_t kMaxInputFileBytes = uintmax_t{2} << 30;  // 2 GiB
+
+// A reader's input file (a model, a material library, a scene), whole. Throws InputError with
+// one line naming the file when it does not exist, is a directory or a device or a pipe (which
+// could be endless: /dev/zero), is larger than kMaxInputFileBytes, or cannot be read.
+std::string readInputFile(const std::filesystem::path& path);
 
 // Loads <executableDir>/shaders/<name>.spv, e.g. loadShaderModule(device, "chapter-06/triangle.vert").
 VkShaderModule loadShaderModule(const Device& device, std::string_view name);

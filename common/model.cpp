@@ -16,6 +16,7 @@
 #include <unordered_map>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 
 namespace common {
 namespace {
@@ -70,11 +71,7 @@ void checkNumbers(const std::filesystem::path& file, int lineNumber, std::istrin
 // read it as part of the first keyword and lose that line); UTF-16 and binary files are refused,
 // since tinyobjloader reads them as text with no faces, or as a different model.
 std::string readText(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (!in) throw InputError(file.string() + ": cannot read");
-    std::string text = buffer.str();
+    std::string text = readInputFile(file);
     if (text.starts_with("\xff\xfe") || text.starts_with("\xfe\xff"))
         throw InputError(file.string() + ": UTF-16 text; save it as UTF-8 or ASCII");
     if (text.starts_with("\xef\xbb\xbf")) text.erase(0, 3);
@@ -279,8 +276,6 @@ std::filesystem::path texturePath(const std::filesystem::path& directory, const 
 }  // namespace
 
 ModelData loadObjModel(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
     std::filesystem::path directory = path.parent_path();
 
     // Our checks of the text first: tinyobjloader reads almost anything as some model.

@@ -237,13 +237,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in) throw InputError(path.string() + ": cannot read");
-    return parseScene(text.str(), path.string(), path.parent_path());
+    return parseScene(readInputFile(path), path.string(), path.parent_path());
 }
 
 std::string sceneToJson(const Scene& scene) {

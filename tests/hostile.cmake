@@ -35,6 +35,15 @@ endfunction()
 # --- OBJ and MTL -------------------------------------------------------------------------------
 set(H ${HOSTILE})
 hostile_test(obj-empty 15 2 "${DATA}/empty.obj: the model has no triangles" --model ${DATA}/empty.obj)
+# Not a file, or too large a one: refused before reading a byte (reading /dev/zero or a pipe
+# would never end; a 3 GiB file would be held in memory whole).
+hostile_test(obj-dev-zero 15 2 "/dev/zero: not a regular file" --model /dev/zero)
+hostile_test(obj-fifo 15 2 "${H}/fifo.obj: not a regular file" --model ${H}/fifo.obj)
+hostile_test(obj-directory 15 2 "${H}/directory.obj: is a directory, not a file" --model ${H}/directory.obj)
+hostile_test(obj-3gib 15 2 "${H}/sparse_3gib.obj: 3072 MiB, more than the 2048 MiB an input file may have"
+             --model ${H}/sparse_3gib.obj)
+hostile_test(scene-dev-zero 10 2 "/dev/zero: not a regular file" --scene /dev/zero)
+hostile_test(scene-fifo 14 2 "${H}/fifo.obj: not a regular file" --scene ${H}/fifo.obj)
 hostile_test(obj-garbage 15 2 "${H}/garbage.obj:[0-9]+: not a text file \\(a NUL byte\\)" --model ${H}/garbage.obj)
 hostile_test(mtl-garbage 15 2 "${H}/garbage.mtl:[0-9]+: not a text file \\(a NUL byte\\)" --model ${H}/garbage_mtl.obj)
 hostile_test(mtl-empty 15 warn

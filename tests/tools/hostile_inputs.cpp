@@ -3,6 +3,7 @@
 // time rather than committed (binary or large); tests/data/README.md lists each with the
 // behaviour it must produce.
 #include <stb_image_write.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -243,6 +244,14 @@ int main(int argc, char** argv) {
         write("scene_lights_100001.json", manyLights(100001));
         write("scene_models_100000.json", manyModels(100000));
         write("scene_models_100001.json", manyModels(100001));
+
+        // Not files at all, and a file too large to read: a directory, a named pipe (reading
+        // one waits for a writer forever), and a sparse file of 3 GiB (no disk space used).
+        fs::create_directories(gOut / "directory.obj");
+        fs::remove(gOut / "fifo.obj");
+        if (mkfifo((gOut / "fifo.obj").c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
+        std::ofstream(gOut / "sparse_3gib.obj", std::ios::binary).put('v');
+        fs::resize_file(gOut / "sparse_3gib.obj", uintmax_t{3} << 30);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "hostile_inputs: %s\n", error.what());
         return 1;
