@@ -63,27 +63,28 @@ VkExtent2D parseExtent(std::string_view flag, std::string_view text) {
             parseNumber(flag, text.substr(x + 1), 1, kMaxWindowDimension)};
 }
 
-// Refuses a screenshot path we could not write at the end of the run, before any work is done.
+// Refuses an output path we could not write at the end of the run, before any work is done.
 // The file itself is only written at the end (through a temporary file and a rename, so an
-// existing file is never left half-written).
-void checkScreenshotPath(const std::filesystem::path& path) {
+// existing file is never left half-written). `what` names it: "screenshot", "benchmark report".
+void checkOutputPath(const std::filesystem::path& path, const std::string& what) {
     namespace fs = std::filesystem;
-    std::string name = path.string();
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png") throw InputError("--screenshot '" + name + "' must end in .png");
+    std::string name = "cannot write " + what + " '" + path.string() + "': ";
     fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::error_code ec;
     if (!fs::is_directory(directory, ec))
-        throw InputError("cannot write screenshot '" + name + "': directory '" + directory.string() +
-                         "' does not exist");
-    if (fs::is_directory(path, ec))
-        throw InputError("cannot write screenshot '" + name + "': it is a directory");
+        throw InputError(name + "directory '" + directory.string() + "' does not exist");
+    if (fs::is_directory(path, ec)) throw InputError(name + "it is a directory");
     if (access(directory.c_str(), W_OK) != 0)
-        throw InputError("cannot write screenshot '" + name + "': directory '" + directory.string() +
-                         "' is not writable");
+        throw InputError(name + "directory '" + directory.string() + "' is not writable");
     if (fs::exists(path, ec) && access(path.c_str(), W_OK) != 0)
-        throw InputError("cannot write screenshot '" + name + "': the file is not writable");
+        throw InputError(name + "the file is not writable");
+}
+
+void checkScreenshotPath(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png") throw InputError("--screenshot '" + path.string() + "' must end in .png");
+    checkOutputPath(path, "screenshot");
 }
 
 const Choice* findChoice(const ChapterInfo& chapter, std::string_view arg) {
@@ -138,6 +139,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         } else if (arg == "--json") {
             options.json = value();
             if (options.json.empty()) throw InputError("--json needs a file name");
+            checkOutputPath(options.json, "benchmark report");
         } else if (arg == "--frames-in-flight") {
             options.framesInFlight = parseNumber(arg, value(), 1, 3);
         } else if (arg == "--screenshot") {

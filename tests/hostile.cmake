@@ -193,3 +193,8 @@ add_test(NAME hostile.cli-repeated-image COMMAND image_compare ${TEST_OUT}/hosti
 set_tests_properties(hostile.cli-repeated-image PROPERTIES FIXTURES_REQUIRED hostile-repeated)
 hostile_test(cli-width-0-10 10 2 "--width must be between 1 and 16384, got 0" --width 0)
 hostile_test(cli-frames-in-flight-4-14 14 2 "--frames-in-flight must be between 1 and 3, got 4" --frames-in-flight 4)
+# Output paths are checked before any work, as --screenshot's are (tests/chapter-06.cmake).
+hostile_test(cli-json-no-directory 06 2 "cannot write benchmark report '/no/such/dir/report.json': directory '/no/such/dir' does not exist"
+             --benchmark --frames 2 --json /no/such/dir/report.json)
+hostile_test(cli-json-is-directory 06 2 "cannot write benchmark report '/tmp': it is a directory"
+             --benchmark --frames 2 --json /tmp)
