@@ -34,7 +34,7 @@ if(XVFB_RUN)
         --size 800 600 --pixel-linear 400 300 1 0 0 --pixel-linear 0 0 0.5 0.7 0.9)
     set_tests_properties(chapter-06.window-image PROPERTIES FIXTURES_REQUIRED ch06-window)
 else()
-    message(WARNING "xvfb-run not found: the windowed tests are not registered (apt-get install xvfb)")
+    message(WARNING "Xvfb not found: the windowed tests are not registered (apt-get install xvfb)")
 endif()
 
 # Without --headless and without a display: a clear error, exit 1.

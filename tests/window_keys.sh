@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Run under xvfb-run: starts a chapter in a window, holds keys that move the lights (1, 4, Left)
+# Run under tests/xvfb_run.sh: starts a chapter in a window, holds keys that move the lights (1, 4, Left)
 # while it runs, and checks the chapter saw them. The chapter also resizes itself half-way
 # (--resize), with --validation on: any validation message fails the run (exit 3).
 #   window_keys.sh CHAPTER [chapter options...]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Run under xvfb-run: a window's life as a user lives it, with a window manager (jwm) so that
+# Run under tests/xvfb_run.sh: a window's life as a user lives it, with a window manager (jwm) so that
 # minimising means what it means on a desktop. The chapter runs until closed, with --validation:
 #   1. minimised for 2 s: it must stop drawing (almost no CPU time used meanwhile);
 #   2. restored: it must draw again;
