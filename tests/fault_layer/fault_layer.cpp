@@ -218,35 +218,33 @@ VKAPI_ATTR void VKAPI_CALL destroyDevice(VkDevice device, const VkAllocationCall
 
 // ---- The intercepted calls ---------------------------------------------------------------------
 
+// The calls that can run out of memory: the chosen one returns `failure` instead of reaching the
+// driver; every other passes down.
+#define FAIL_OR_PASS_DOWN(call, failure, function, device, ...) \
+    DeviceData& data = deviceData(device);                      \
+    {                                                           \
+        std::lock_guard lock(gLock);                            \
+        if (failsNow(call)) return failure;                     \
+    }                                                           \
+    return data.next.function(device, __VA_ARGS__)
+
 VKAPI_ATTR VkResult VKAPI_CALL allocateMemory(VkDevice device, const VkMemoryAllocateInfo* info,
                                               const VkAllocationCallbacks* allocator,
                                               VkDeviceMemory* memory) {
-    DeviceData& data = deviceData(device);
-    {
-        std::lock_guard lock(gLock);
-        if (failsNow("vkAllocateMemory")) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
-    }
-    return data.next.allocateMemory(device, info, allocator, memory);
+    FAIL_OR_PASS_DOWN("vkAllocateMemory", VK_ERROR_OUT_OF_DEVICE_MEMORY, allocateMemory, device, info,
+                      allocator, memory);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createImage(VkDevice device, const VkImageCreateInfo* info,
                                            const VkAllocationCallbacks* allocator, VkImage* image) {
-    DeviceData& data = deviceData(device);
-    {
-        std::lock_guard lock(gLock);
-        if (failsNow("vkCreateImage")) return VK_ERROR_OUT_OF_HOST_MEMORY;
-    }
-    return data.next.createImage(device, info, allocator, image);
+    FAIL_OR_PASS_DOWN("vkCreateImage", VK_ERROR_OUT_OF_HOST_MEMORY, createImage, device, info, allocator,
+                      image);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createBuffer(VkDevice device, const VkBufferCreateInfo* info,
                                             const VkAllocationCallbacks* allocator, VkBuffer* buffer) {
-    DeviceData& data = deviceData(device);
-    {
-        std::lock_guard lock(gLock);
-        if (failsNow("vkCreateBuffer")) return VK_ERROR_OUT_OF_HOST_MEMORY;
-    }
-    return data.next.createBuffer(device, info, allocator, buffer);
+    FAIL_OR_PASS_DOWN("vkCreateBuffer", VK_ERROR_OUT_OF_HOST_MEMORY, createBuffer, device, info, allocator,
+                      buffer);
 }
 
 // The calls that report a device loss: each returns it instead of reaching the driver once the
