@@ -299,6 +299,7 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
 }
 
 #undef LOSE_OR_PASS_DOWN
+#undef FAIL_OR_PASS_DOWN
 
 // ---- GetProcAddr: our functions for the calls we intercept, the next layer's for the rest ------
 
