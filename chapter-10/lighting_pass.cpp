@@ -53,24 +53,6 @@ VkRenderPass createLightingRenderPass(const common::Device& device, const common
 }
 //< lighting-render-pass
 
-std::vector<VkFramebuffer> createFramebuffers(const common::Device& device, VkRenderPass renderPass,
-                                              const common::Target& target) {
-    std::vector<VkFramebuffer> framebuffers(target.views.size());
-    for (size_t i = 0; i < target.views.size(); ++i) {
-        VkFramebufferCreateInfo info{
-            .sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO,
-            .renderPass = renderPass,
-            .attachmentCount = 1,
-            .pAttachments = &target.views[i],
-            .width = target.extent.width,
-            .height = target.extent.height,
-            .layers = 1,
-        };
-        VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
-    }
-    return framebuffers;
-}
-
 //> attachments-set
 // The G-buffer as sampled images: binding 0 albedo, binding 1 depth, in the layouts the
 // geometry pass left them in.
@@ -82,19 +64,14 @@ void writeAttachments(const common::Device& device, LightingPass& pass, const GB
 }
 //< attachments-set
 
-void destroyFramebuffers(const common::Device& device, LightingPass& pass) {
-    for (VkFramebuffer framebuffer : pass.framebuffers)
-        vkDestroyFramebuffer(device.handle, framebuffer, nullptr);
-    pass.framebuffers.clear();
-}
-
 }  // namespace
 
 LightingPass createLightingPass(const common::Device& device, VkPipelineCache cache,
                                 const common::Target& target, const GBuffer& gbuffer) {
     LightingPass pass;
     pass.renderPass = createLightingRenderPass(device, target);
-    pass.framebuffers = createFramebuffers(device, pass.renderPass, target);
+    // One framebuffer per target image, as chapter-06 makes them (common/target.cpp).
+    pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
 
     pass.attachmentsLayout = common::createDescriptorSetLayout(
         device,
@@ -105,16 +82,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // Attachments are read one texel per pixel: nearest filtering, which every depth format
     // supports (linear filtering of D32_SFLOAT is optional).
-    VkSamplerCreateInfo samplerInfo{
-        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
-        .magFilter = VK_FILTER_NEAREST,
-        .minFilter = VK_FILTER_NEAREST,
-        .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
-        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-    };
-    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    pass.sampler = common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     writeAttachments(device, pass, gbuffer);
 
     VkPushConstantRange show{
@@ -152,8 +120,8 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
 
 void resizeLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
                         const GBuffer& gbuffer) {
-    destroyFramebuffers(device, pass);
-    pass.framebuffers = createFramebuffers(device, pass.renderPass, target);
+    common::destroyFramebuffers(device, pass.framebuffers);
+    pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
     writeAttachments(device, pass, gbuffer);
 }
 
@@ -212,7 +180,7 @@ void destroyLightingPass(const common::Device& device, LightingPass& pass) {
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.attachmentsLayout, nullptr);
-    destroyFramebuffers(device, pass);
+    common::destroyFramebuffers(device, pass.framebuffers);
     vkDestroyRenderPass(device.handle, pass.renderPass, nullptr);
     pass = {};
 }

@@ -8,7 +8,6 @@
 // Models, textures, the scene file and the camera (the book's chapters 7-9) come from common/.
 #include <vulkan/vulkan.h>
 
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -22,8 +21,8 @@
 #include "common/gpu_scene.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
+#include "common/run_control.hpp"
 #include "common/scene.hpp"
-#include "common/screenshot.hpp"
 #include "common/target.hpp"
 #include "geometry_pass.hpp"
 #include "lighting_pass.hpp"
@@ -36,13 +35,45 @@ const common::ChapterInfo kChapter{
     {"final", "albedo", "depth"},  // --view names; their order is the lighting shader's `view`
 };
 
-// Per frame in flight, on top of common::FrameSync: the geometry pass's own command buffer and
-// the semaphore that tells the lighting submission the G-buffer is written.
-struct GeometrySync {
-    VkCommandPool commandPool;
-    VkCommandBuffer commandBuffer;
-    VkSemaphore geometryComplete;
+// What one frame in flight owns: common::FrameSync (its fence, the image-available semaphore, a
+// command buffer), plus the geometry pass's own command buffer and the semaphore that tells the
+// lighting submission the G-buffer is written.
+struct Frame {
+    common::FrameSync sync;
+    VkCommandPool geometryPool = VK_NULL_HANDLE;
+    VkCommandBuffer geometryCommands = VK_NULL_HANDLE;
+    VkSemaphore geometryComplete = VK_NULL_HANDLE;
 };
+
+std::vector<Frame> createFrames(const common::Device& device, uint32_t framesInFlight) {
+    std::vector<Frame> frames;
+    for (common::FrameSync& sync : common::createFrameSync(device, framesInFlight)) {
+        Frame frame{.sync = sync};
+        VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                         .flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT,
+                                         .queueFamilyIndex = device.queueFamily};
+        VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &frame.geometryPool));
+        VkCommandBufferAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                              .commandPool = frame.geometryPool,
+                                              .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                              .commandBufferCount = 1};
+        VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &frame.geometryCommands));
+        frame.geometryComplete = common::createSemaphore(device);
+        frames.push_back(frame);
+    }
+    return frames;
+}
+
+void destroyFrames(const common::Device& device, std::vector<Frame>& frames) {
+    std::vector<common::FrameSync> syncs;
+    for (Frame& frame : frames) {
+        vkDestroySemaphore(device.handle, frame.geometryComplete, nullptr);
+        vkDestroyCommandPool(device.handle, frame.geometryPool, nullptr);  // frees its command buffer
+        syncs.push_back(frame.sync);
+    }
+    common::destroyFrameSync(device, syncs);
+    frames.clear();
+}
 
 void run(const common::Options& options) {
     //> setup
@@ -56,20 +87,7 @@ void run(const common::Options& options) {
     common::createTargetSurface(target, instance);
     common::Device device = common::createDevice(instance, target.surface, options.device);
     common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
-    std::vector<GeometrySync> geometrySync(options.framesInFlight);
-    for (GeometrySync& sync : geometrySync) {
-        VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
-                                         .flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT,
-                                         .queueFamilyIndex = device.queueFamily};
-        VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &sync.commandPool));
-        VkCommandBufferAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-                                              .commandPool = sync.commandPool,
-                                              .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-                                              .commandBufferCount = 1};
-        VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &sync.commandBuffer));
-        sync.geometryComplete = common::createSemaphore(device);
-    }
+    std::vector<Frame> frames = createFrames(device, options.framesInFlight);
 
     common::GpuScene gpuScene = common::loadGpuScene(device, scene, models, {});
     models.clear();  // the CPU copies are on the GPU now
@@ -93,9 +111,7 @@ void run(const common::Options& options) {
     // --benchmark: timestamps at the start, after the geometry pass, after the lighting pass. The
     // lighting command buffers are pre-recorded per image, so the last timestamp goes into the frame
     // slot's own small command buffer, submitted right after the lighting one.
-    common::GpuTimer gpuTimer =
-        common::createGpuTimer(device, options.framesInFlight, {"geometry", "lighting"});
-    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
+    common::RunControl run = common::createRunControl(options, device, {"geometry", "lighting"});
     //< setup
 
     //> resize
@@ -117,30 +133,27 @@ void run(const common::Options& options) {
 
     //> frame-loop
     double lastTime = glfwGetTime();
-    bool viewKeyDown = false;
+    common::KeyPress viewKey{GLFW_KEY_V};
     for (uint32_t frame = 0;;) {
-        auto frameStart = std::chrono::steady_clock::now();
-        bool lastFrame = common::pollTarget(target, frame);
+        bool lastFrame = common::beginFrame(run, target, frame);
         uint32_t slot = frame % options.framesInFlight;
-        common::FrameSync& sync = frames[slot];
-        GeometrySync& geometry = geometrySync[slot];
+        Frame& inFlight = frames[slot];
+        common::FrameSync& sync = inFlight.sync;
 
         if (target.window) {  // camera controls, and V cycles through the --view attachments
             double now = glfwGetTime();
             float speed = glm::length(gpuScene.boundsMax - gpuScene.boundsMin) * 0.15f;
             common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed);
             lastTime = now;
-            bool viewKey = glfwGetKey(target.window, GLFW_KEY_V) == GLFW_PRESS;
-            if (viewKey && !viewKeyDown) {
+            if (common::pressedOnce(target.window, viewKey)) {
                 lightingView.view = (lightingView.view + 1) % int(kChapter.views.size());
                 VK_CHECK(vkDeviceWaitIdle(device.handle));  // the lighting command buffers are re-recorded
                 recordLightingPass(device, lightingPass, target, lightingView);
             }
-            viewKeyDown = viewKey;
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        if (options.benchmark) common::readGpuTimer(device, gpuTimer, slot, stats);
+        common::collectGpuTimes(run, device, slot);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
             if (!recreateTarget()) break;
@@ -156,20 +169,20 @@ void run(const common::Options& options) {
         // Geometry pass: recorded every frame (the camera moves), submitted on its own, and it
         // signals geometryComplete. It does not touch the target image, so it does not wait for it.
         setView(geometryPass, slot, common::viewMatrix(camera));
-        VK_CHECK(vkResetCommandPool(device.handle, geometry.commandPool, 0));
+        VK_CHECK(vkResetCommandPool(device.handle, inFlight.geometryPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-        VK_CHECK(vkBeginCommandBuffer(geometry.commandBuffer, &beginInfo));
-        if (options.benchmark) common::beginGpuTimer(gpuTimer, geometry.commandBuffer, slot, frame);
-        recordGeometryPass(geometry.commandBuffer, geometryPass, gpuScene, slot);
-        if (options.benchmark) common::markGpuPass(gpuTimer, geometry.commandBuffer, slot, 0);
-        VK_CHECK(vkEndCommandBuffer(geometry.commandBuffer));
+        VK_CHECK(vkBeginCommandBuffer(inFlight.geometryCommands, &beginInfo));
+        common::timeFrameStart(run, inFlight.geometryCommands, slot, frame);
+        recordGeometryPass(inFlight.geometryCommands, geometryPass, gpuScene, slot);
+        common::timePassEnd(run, inFlight.geometryCommands, slot, 0);
+        VK_CHECK(vkEndCommandBuffer(inFlight.geometryCommands));
         VkSubmitInfo geometrySubmit{
             .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
             .commandBufferCount = 1,
-            .pCommandBuffers = &geometry.commandBuffer,
+            .pCommandBuffers = &inFlight.geometryCommands,
             .signalSemaphoreCount = 1,
-            .pSignalSemaphores = &geometry.geometryComplete,
+            .pSignalSemaphores = &inFlight.geometryComplete,
         };
         VK_CHECK(vkQueueSubmit(device.queue, 1, &geometrySubmit, VK_NULL_HANDLE));
 
@@ -177,14 +190,14 @@ void run(const common::Options& options) {
         // G-buffer where it first reads it (the fragment shader) and for the image where it
         // first writes it (colour output); it signals the image's renderFinished and the
         // frame's fence, which therefore also covers the geometry submission before it.
-        VkSemaphore waits[] = {geometry.geometryComplete, sync.imageAvailable};
+        VkSemaphore waits[] = {inFlight.geometryComplete, sync.imageAvailable};
         VkPipelineStageFlags waitStages[] = {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                                              VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT};
         VkCommandBuffer lighting[] = {lightingPass.commandBuffers[imageIndex], sync.commandBuffer};
-        if (options.benchmark) {
+        if (run.benchmark) {
             VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
             VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-            common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);
+            common::timePassEnd(run, sync.commandBuffer, slot, 1);
             VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
         }
         VkSubmitInfo lightingSubmit{
@@ -192,45 +205,32 @@ void run(const common::Options& options) {
             .waitSemaphoreCount = 2,
             .pWaitSemaphores = waits,
             .pWaitDstStageMask = waitStages,
-            .commandBufferCount = options.benchmark ? 2u : 1u,
+            .commandBufferCount = run.benchmark ? 2u : 1u,
             .pCommandBuffers = lighting,
             .signalSemaphoreCount = 1,
             .pSignalSemaphores = &target.renderFinished[imageIndex],
         };
         VK_CHECK(vkQueueSubmit(device.queue, 1, &lightingSubmit, sync.inFlight));
 
-        if (lastFrame && !options.screenshot.empty())
-            common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
-                                   target.presentLayout, options.screenshot);
+        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
         bool current = common::presentTargetImage(target, device, imageIndex);
-        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
-        common::addCpuFrame(
-            stats, frame,
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+        common::endFrame(run, frame);
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
-    if (options.benchmark) {
-        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
-            common::readGpuTimer(device, gpuTimer, slot, stats);
-        common::reportBenchmark(stats, common::benchmarkInfo(kChapter, options, device, target));
-    }
+    common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
 
     //> teardown
-    common::destroyGpuTimer(device, gpuTimer);
+    common::destroyRunControl(device, run);
     common::savePipelineCache(device, pipelineCache);
     destroyLightingPass(device, lightingPass);
     destroyGeometryPass(device, geometryPass);
     common::destroyPipelineCache(device, pipelineCache);
     common::destroyGpuScene(device, gpuScene);
-    for (GeometrySync& sync : geometrySync) {
-        vkDestroySemaphore(device.handle, sync.geometryComplete, nullptr);
-        vkDestroyCommandPool(device.handle, sync.commandPool, nullptr);
-    }
-    common::destroyFrameSync(device, frames);
+    destroyFrames(device, frames);
     common::destroyTargetImages(target, device);
     common::destroyDevice(device);
     common::destroyTargetSurface(target, instance);

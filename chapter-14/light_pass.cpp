@@ -4,6 +4,7 @@
 #include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
+#include "common/texture.hpp"
 
 namespace {
 
@@ -13,24 +14,20 @@ common::Image createOutput(const common::Device& device, VkExtent2D extent) {
                                VK_IMAGE_ASPECT_COLOR_BIT);
 }
 
-// The G-buffer attachments, one binding each in attachment order, then depth.
-void writeAttachments(const common::Device& device, LightPass& pass, const common::GBuffer& gbuffer) {
-    uint32_t binding = 0;
-    for (const common::Image& color : gbuffer.colors)
-        common::writeImageDescriptor(device, pass.attachmentsSet, binding++, pass.sampler, color.view,
-                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
-    common::writeImageDescriptor(device, pass.attachmentsSet, binding, pass.sampler, gbuffer.depth.view,
+// The G-buffer, as light.frag samples it: binding 0 albedo, binding 1 depth.
+void writeAttachments(const common::Device& device, LightPass& pass, const GBuffer& gbuffer) {
+    common::writeImageDescriptor(device, pass.attachmentsSet, 0, pass.sampler, gbuffer.albedo.view,
+                                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    common::writeImageDescriptor(device, pass.attachmentsSet, 1, pass.sampler, gbuffer.depth.view,
                                  VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
 }
 
 }  // namespace
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer) {
+                          const GBuffer& gbuffer) {
     LightPass pass;
     pass.output = createOutput(device, extent);
-    static_assert(kGBufferColorFormats.size() == 1,
-                  "light.frag samples albedo (binding 0) and depth (binding 1)");
     pass.attachmentsLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
@@ -39,15 +36,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // One texel per pixel: nearest filtering, which depth formats always support.
-    VkSamplerCreateInfo samplerInfo{
-        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
-        .magFilter = VK_FILTER_NEAREST,
-        .minFilter = VK_FILTER_NEAREST,
-        .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-        .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-        .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-    };
-    VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    pass.sampler = common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     writeAttachments(device, pass, gbuffer);
     pass.pipeline =
         common::createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,
@@ -56,7 +45,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
 }
 
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
-                     const common::GBuffer& gbuffer) {
+                     const GBuffer& gbuffer) {
     common::destroyImage(device, pass.output);
     pass.output = createOutput(device, extent);
     writeAttachments(device, pass, gbuffer);
@@ -65,14 +54,35 @@ void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D e
 //> record-light
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView& view) {
     // renderInit: the output to ATTACHMENT_OPTIMAL, once the previous frame's post pass has
-    // finished sampling it (write after read).
+    // finished sampling it (write after read). common::imageBarrier fills in the same
+    // VkImageMemoryBarrier2 that scene_pass.cpp writes out.
     VkImageMemoryBarrier2 init = common::imageBarrier(
         pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
         VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     common::pipelineBarrier(cmd, &init, 1);
 
-    common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
+    // One colour attachment, no depth; not loaded: the triangle covers every pixel.
+    VkRenderingAttachmentInfo output{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = pass.output.view,
+        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+    };
+    VkExtent2D extent = pass.output.extent;
+    VkRenderingInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+        .renderArea = {{0, 0}, extent},
+        .layerCount = 1,
+        .colorAttachmentCount = 1,
+        .pColorAttachments = &output,
+    };
+    vkCmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 1,
                             &pass.attachmentsSet, 0, nullptr);

@@ -29,8 +29,8 @@ struct LightPass {
 };
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer);
+                          const GBuffer& gbuffer);
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
-                     const common::GBuffer& gbuffer);
+                     const GBuffer& gbuffer);
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView& view);
 void destroyLightPass(const common::Device& device, LightPass& pass);

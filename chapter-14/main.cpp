@@ -10,7 +10,6 @@
 //   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional).
 #include <vulkan/vulkan.h>
 
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -25,8 +24,8 @@
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/post_pass.hpp"
+#include "common/run_control.hpp"
 #include "common/scene.hpp"
-#include "common/screenshot.hpp"
 #include "common/target.hpp"
 #include "light_pass.hpp"
 #include "scene_pass.hpp"
@@ -73,10 +72,8 @@ void run(const common::Options& options) {
     LightView lightView{int(options.view), scene.camera.near, scene.camera.far};
     bool fxaa = options.switches.count("fxaa") != 0;
 
-    // --benchmark: timestamps around the three passes, and the frame statistics.
-    common::GpuTimer gpuTimer =
-        common::createGpuTimer(device, options.framesInFlight, {"scene", "light", "post"});
-    common::FrameStats stats = common::createFrameStats(options, gpuTimer.passes);
+    // --frames, --resize, --benchmark (the three passes timed), --screenshot.
+    common::RunControl run = common::createRunControl(options, device, {"scene", "light", "post"});
     //< setup
 
     //> resize
@@ -91,10 +88,9 @@ void run(const common::Options& options) {
 
     //> frame-loop
     double lastTime = glfwGetTime();
-    bool viewKeyDown = false, fxaaKeyDown = false;
+    common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
     for (uint32_t frame = 0;;) {
-        auto frameStart = std::chrono::steady_clock::now();
-        bool lastFrame = common::pollTarget(target, frame);
+        bool lastFrame = common::beginFrame(run, target, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 
@@ -103,16 +99,13 @@ void run(const common::Options& options) {
             float speed = glm::length(gpuScene.boundsMax - gpuScene.boundsMin) * 0.15f;
             common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed);
             lastTime = now;
-            bool viewKey = glfwGetKey(target.window, GLFW_KEY_V) == GLFW_PRESS;
-            if (viewKey && !viewKeyDown) lightView.view = (lightView.view + 1) % int(kChapter.views.size());
-            viewKeyDown = viewKey;
-            bool fxaaKey = glfwGetKey(target.window, GLFW_KEY_F) == GLFW_PRESS;
-            if (fxaaKey && !fxaaKeyDown) fxaa = !fxaa;
-            fxaaKeyDown = fxaaKey;
+            if (common::pressedOnce(target.window, viewKey))
+                lightView.view = (lightView.view + 1) % int(kChapter.views.size());
+            if (common::pressedOnce(target.window, fxaaKey)) fxaa = !fxaa;
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        if (options.benchmark) common::readGpuTimer(device, gpuTimer, slot, stats);
+        common::collectGpuTimes(run, device, slot);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
             if (!recreateTarget()) break;
@@ -129,13 +122,13 @@ void run(const common::Options& options) {
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-        if (options.benchmark) common::beginGpuTimer(gpuTimer, sync.commandBuffer, slot, frame);
+        common::timeFrameStart(run, sync.commandBuffer, slot, frame);
         recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
-        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 0);
+        common::timePassEnd(run, sync.commandBuffer, slot, 0);
         recordLightPass(sync.commandBuffer, lightPass, lightView);
-        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 1);
+        common::timePassEnd(run, sync.commandBuffer, slot, 1);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
-        if (options.benchmark) common::markGpuPass(gpuTimer, sync.commandBuffer, slot, 2);
+        common::timePassEnd(run, sync.commandBuffer, slot, 2);
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
@@ -166,28 +159,19 @@ void run(const common::Options& options) {
         };
         VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
 
-        if (lastFrame && !options.screenshot.empty())
-            common::saveScreenshot(device, target.images[imageIndex], target.format, target.extent,
-                                   target.presentLayout, options.screenshot);
+        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
         bool current = common::presentTargetImage(target, device, imageIndex);
-        if (frame == 0) stats.startupMs = common::millisecondsSinceStart();
-        common::addCpuFrame(
-            stats, frame,
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+        common::endFrame(run, frame);
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;
         ++frame;
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
-    if (options.benchmark) {
-        for (uint32_t slot = 0; slot < options.framesInFlight; ++slot)
-            common::readGpuTimer(device, gpuTimer, slot, stats);
-        common::reportBenchmark(stats, common::benchmarkInfo(kChapter, options, device, target));
-    }
+    common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
 
     //> teardown
-    common::destroyGpuTimer(device, gpuTimer);
+    common::destroyRunControl(device, run);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);

@@ -1,9 +1,7 @@
 // chapter-14: the scene pass.
 #include "scene_pass.hpp"
 
-#include <cstring>
 
-#include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -12,15 +10,29 @@
 
 namespace {
 
-struct CameraUniform {
-    glm::mat4 projection;
-    glm::mat4 view;
-};
+//> create-gbuffer
+// The attachments are written by this pass (COLOR_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT) and
+// sampled by the light pass (SAMPLED).
+GBuffer createGBuffer(const common::Device& device, VkExtent2D extent) {
+    return {
+        .albedo = common::createImage(device, extent, kAlbedoFormat,
+                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                      VK_IMAGE_ASPECT_COLOR_BIT),
+        .depth = common::createImage(device, extent, kDepthFormat,
+                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     VK_IMAGE_ASPECT_DEPTH_BIT),
+    };
+}
+//< create-gbuffer
+
+void destroyGBuffer(const common::Device& device, GBuffer& gbuffer) {
+    common::destroyImage(device, gbuffer.depth);
+    common::destroyImage(device, gbuffer.albedo);
+}
 
 void createDescriptors(const common::Device& device, ScenePass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
-    pass.cameraLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+    pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)});
     pass.textureLayout = common::createDescriptorSetLayout(
@@ -33,15 +45,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textures}});
 
-    for (uint32_t i = 0; i < framesInFlight; ++i) {
-        pass.cameras.push_back(
-            common::createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT));
-        pass.cameraSets.push_back(
-            common::allocateDescriptorSet(device, pass.descriptorPool, pass.cameraLayout));
-        common::writeBufferDescriptor(device, pass.cameraSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                      pass.cameras.back().handle, sizeof(CameraUniform));
-    }
+    pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 
     // The materials never change: one device-local storage buffer, filled through staging.
     std::vector<glm::vec4> diffuse;
@@ -54,7 +58,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                   pass.materials.handle, VK_WHOLE_SIZE);
 
-    pass.sampler = common::createSampler(device, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    pass.sampler = common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
     for (const common::Image& texture : scene.textures) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
@@ -85,8 +89,8 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     // attachment (each gets its own blend state), plus depth.
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
-        .pColorAttachmentFormats = kGBufferColorFormats.data(),
+        .colorAttachmentCount = 1,
+        .pColorAttachmentFormats = &kAlbedoFormat,
         .depthAttachmentFormat = kDepthFormat,
     };
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-14/scene.vert");
@@ -101,7 +105,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
             .vertexInput = &vertexInput.state,
             .depthTest = true,
             .depthWrite = true,
-            .colorAttachmentCount = uint32_t(kGBufferColorFormats.size()),
+            .colorAttachmentCount = 1,
             .layout = pass.pipelineLayout,
             .renderPass = VK_NULL_HANDLE,
             .pNext = &rendering,
@@ -111,33 +115,151 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 }
 //< scene-pipeline
 
+//> render-init
+// The book's renderInit: every attachment to ATTACHMENT_OPTIMAL before drawing. The old contents
+// are cleared, so the old layout is UNDEFINED; but the previous frame's light pass may still be
+// sampling them in its fragment shader, so the transition waits for that stage (a write after a
+// read needs only this execution dependency: no access to make available).
+void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    VkImageMemoryBarrier2 barriers[] = {
+        {
+            .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+            .srcStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            .srcAccessMask = VK_ACCESS_2_NONE,
+            .dstStageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            .dstAccessMask = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+            .oldLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+            .newLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .image = gbuffer.albedo.handle,
+            .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+        },
+        {
+            .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+            .srcStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            .srcAccessMask = VK_ACCESS_2_NONE,
+            // The depth test reads and writes depth in both fragment-test stages.
+            .dstStageMask =
+                VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            .dstAccessMask =
+                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            .oldLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+            .newLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .image = gbuffer.depth.handle,
+            .subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1},
+        },
+    };
+    VkDependencyInfo dependency{
+        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+        .imageMemoryBarrierCount = 2,
+        .pImageMemoryBarriers = barriers,
+    };
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+//< render-init
+
+//> render-finish
+// The book's renderFinish: every attachment to READ_ONLY_OPTIMAL after drawing, its writes made
+// available and visible to the light pass's fragment shader (a read after a write).
+void renderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    VkImageMemoryBarrier2 barriers[] = {
+        {
+            .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+            .srcStageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            .srcAccessMask = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+            .dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            .dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+            .oldLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .newLayout = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .image = gbuffer.albedo.handle,
+            .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+        },
+        {
+            .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+            .srcStageMask = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,  // where the last depth write is
+            .srcAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            .dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            .dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+            .oldLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .newLayout = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .image = gbuffer.depth.handle,
+            .subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1},
+        },
+    };
+    VkDependencyInfo dependency{
+        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+        .imageMemoryBarrierCount = 2,
+        .pImageMemoryBarriers = barriers,
+    };
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+//< render-finish
+
+//> begin-rendering
+// What a framebuffer and the render pass's attachment descriptions used to say, now given when
+// rendering begins: the image view of each attachment, its layout, and what happens to its
+// contents at the start (cleared) and at the end (stored: the light pass reads them).
+void beginRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
+    VkRenderingAttachmentInfo albedo{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = gbuffer.albedo.view,
+        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+        .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 0.0f}}},  // alpha 0: no surface here
+    };
+    VkRenderingAttachmentInfo depth{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = gbuffer.depth.view,
+        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the light pass shows it (--view depth)
+        .clearValue = {.depthStencil = {1.0f, 0}},
+    };
+    VkRenderingInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+        .renderArea = {{0, 0}, gbuffer.depth.extent},
+        .layerCount = 1,
+        .colorAttachmentCount = 1,
+        .pColorAttachments = &albedo,
+        .pDepthAttachment = &depth,
+    };
+    vkCmdBeginRendering(cmd, &rendering);
+}
+//< begin-rendering
+
 }  // namespace
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight) {
     ScenePass pass;
-    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+    pass.gbuffer = createGBuffer(device, extent);
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
     return pass;
 }
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
-    common::destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = common::createGBuffer(device, extent, kGBufferColorFormats, kDepthFormat);
+    destroyGBuffer(device, pass.gbuffer);
+    pass.gbuffer = createGBuffer(device, extent);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
-    CameraUniform camera{projection, view};
-    std::memcpy(pass.cameras[frame].mapped, &camera, sizeof(camera));
+    common::writeCamera(pass.cameras[frame], projection, view);
 }
 
 //> record-scene
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame) {
-    // renderInit: the attachments to ATTACHMENT_OPTIMAL, then rendering begins on them.
-    common::gbufferRenderInit(cmd, pass.gbuffer);
-    common::beginGBufferRendering(cmd, pass.gbuffer);
+    renderInit(cmd, pass.gbuffer);
+    beginRendering(cmd, pass.gbuffer);
     VkExtent2D extent = pass.gbuffer.depth.extent;
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
@@ -145,7 +267,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    std::array<VkDescriptorSet, 2> shared{pass.cameraSets[frame], pass.materialsSet};
+    std::array<VkDescriptorSet, 2> shared{pass.cameras[frame].set, pass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
     for (const common::Draw& draw : scene.draws) {
@@ -163,7 +285,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     }
 
     vkCmdEndRendering(cmd);
-    common::gbufferRenderFinish(cmd, pass.gbuffer);  // renderFinish: to READ_ONLY_OPTIMAL for the light pass
+    renderFinish(cmd, pass.gbuffer);
 }
 //< record-scene
 
@@ -173,10 +295,10 @@ void destroyScenePass(const common::Device& device, ScenePass& pass) {
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);
-    for (common::Buffer& camera : pass.cameras) common::destroyBuffer(device, camera);
+    common::destroyCameraFrames(device, pass.cameras);
     vkDestroyDescriptorSetLayout(device.handle, pass.textureLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.materialsLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.cameraLayout, nullptr);
-    common::destroyGBuffer(device, pass.gbuffer);
+    destroyGBuffer(device, pass.gbuffer);
     pass = {};
 }

@@ -1,33 +1,41 @@
 // chapter-14: the scene pass -- the scene into the G-buffer with dynamic rendering: no render
-// pass and no framebuffer, layout transitions by barriers before and after. The book's RenderScn
-// (chapter 14).
+// pass and no framebuffer; the attachments are named when rendering begins, and barriers move
+// them between layouts before and after. The book's RenderScn (chapter 14), with its
+// renderInit / renderFinish.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
-#include <array>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "common/buffer.hpp"
+#include "common/camera.hpp"
 #include "common/device.hpp"
-#include "common/gbuffer.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/image.hpp"
 
-// The G-buffer's colour attachments, in attachment order (only albedo until chapter-15), and depth.
-inline constexpr std::array<VkFormat, 1> kGBufferColorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
+//> gbuffer
+// This chapter's G-buffer: albedo and depth (chapter-15 adds position, normal and PBR data). One,
+// shared by all frames in flight: the scene pass of a frame and the light pass that reads it are
+// in the same command buffer, and the barriers order every frame's use after the previous one's.
+inline constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+struct GBuffer {
+    common::Image albedo;
+    common::Image depth;
+};
+//< gbuffer
+
 struct ScenePass {
-    common::GBuffer gbuffer;  // one, shared by all frames in flight (see common/gbuffer.hpp)
+    GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
     VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;    // set 2: one per texture
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-    std::vector<common::Buffer> cameras;
-    std::vector<VkDescriptorSet> cameraSets;
+    std::vector<common::CameraFrame> cameras;  // per frame in flight
     common::Buffer materials;
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> textureSets;

@@ -49,7 +49,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * materials}});
-    pass.sampler = common::createSampler(device, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    pass.sampler = common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
     for (const common::GpuMaterial& material : scene.materials) {
         VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
         uint32_t textures[3] = {material.albedoTexture, material.normalTexture, material.metalRoughTexture};

@@ -1,10 +1,13 @@
-// Camera matrices and window controls.
+// Camera matrices, the camera uniform buffers and window controls.
 #include "common/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "common/descriptors.hpp"
 
 namespace common {
 
@@ -46,6 +49,42 @@ void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float se
     input.dragging = dragging;
     input.lastX = x;
     input.lastY = y;
+}
+
+bool pressedOnce(GLFWwindow* window, KeyPress& press) {
+    bool down = glfwGetKey(window, press.key) == GLFW_PRESS;
+    bool pressed = down && !press.down;
+    press.down = down;
+    return pressed;
+}
+
+VkDescriptorSetLayout createCameraSetLayout(const Device& device) {
+    return createDescriptorSetLayout(device,
+                                     {binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+}
+
+std::vector<CameraFrame> createCameraFrames(const Device& device, VkDescriptorPool pool,
+                                            VkDescriptorSetLayout layout, uint32_t framesInFlight) {
+    std::vector<CameraFrame> frames(framesInFlight);
+    for (CameraFrame& frame : frames) {
+        frame.buffer =
+            createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        frame.set = allocateDescriptorSet(device, pool, layout);
+        writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.buffer.handle,
+                              sizeof(CameraUniform));
+    }
+    return frames;
+}
+
+void writeCamera(CameraFrame& frame, const glm::mat4& projection, const glm::mat4& view) {
+    CameraUniform camera{projection, view};
+    std::memcpy(frame.buffer.mapped, &camera, sizeof(camera));
+}
+
+void destroyCameraFrames(const Device& device, std::vector<CameraFrame>& frames) {
+    for (CameraFrame& frame : frames) destroyBuffer(device, frame.buffer);  // the sets go with their pool
+    frames.clear();
 }
 
 }  // namespace common

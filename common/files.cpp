@@ -46,12 +46,17 @@ std::string readInputFile(const std::filesystem::path& path) {
     return text;
 }
 
-VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
+std::vector<char> readSpirv(std::string_view name) {
     std::filesystem::path path = executableDir() / "shaders" / (std::string(name) + ".spv");
     if (!std::filesystem::exists(path))
         throw Failure("missing shader '" + path.string() + "' (is the build complete?)");
     std::vector<char> code = readFile(path);
     if (code.empty() || code.size() % 4 != 0) throw Failure("'" + path.string() + "' is not SPIR-V");
+    return code;
+}
+
+VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
+    std::vector<char> code = readSpirv(name);
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
         .codeSize = code.size(),

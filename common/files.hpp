@@ -30,7 +30,11 @@ inline constexpr uintmax_t kMaxInputFileBytes = uintmax_t{2} << 30;  // 2 GiB
 // could be endless: /dev/zero), is larger than kMaxInputFileBytes, or cannot be read.
 std::string readInputFile(const std::filesystem::path& path);
 
-// Loads <executableDir>/shaders/<name>.spv, e.g. loadShaderModule(device, "chapter-06/triangle.vert").
+// The SPIR-V words of <executableDir>/shaders/<name>.spv (compiled at build time), e.g.
+// readSpirv("chapter-06/triangle.vert"); throws Failure when the file is missing or not SPIR-V.
+std::vector<char> readSpirv(std::string_view name);
+
+// readSpirv, then vkCreateShaderModule (written out in chapter-06, which introduces it).
 VkShaderModule loadShaderModule(const Device& device, std::string_view name);
 
 // $XDG_CACHE_HOME/vulkan-book-cpp or ~/.cache/vulkan-book-cpp; empty when neither is set.

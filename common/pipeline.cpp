@@ -36,35 +36,39 @@ void warn(const std::string& message) {
 
 }  // namespace
 
-PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
-    PipelineCache cache;
+PipelineCacheFile readPipelineCacheFile(const Device& device, std::string_view name) {
+    PipelineCacheFile file;
     if (std::filesystem::path dir = cacheDir(); !dir.empty()) {
         char suffix[32];
         std::snprintf(suffix, sizeof(suffix), "-%04x-%04x.bin", device.properties.vendorID,
                       device.properties.deviceID);
-        cache.file = dir / (std::string(name) + suffix);
+        file.path = dir / (std::string(name) + suffix);
     }
 
-    std::vector<char> data;
     std::error_code ec;
-    if (!cache.file.empty() && std::filesystem::exists(cache.file, ec)) {
+    if (!file.path.empty() && std::filesystem::exists(file.path, ec)) {
         std::string why;
         try {
-            data = readFile(cache.file);
-            why = cacheMismatch(device, data);
+            file.data = readFile(file.path);
+            why = cacheMismatch(device, file.data);
         } catch (const Failure& error) {
             why = error.what();
         }
         if (!why.empty()) {
-            warn("ignoring pipeline cache '" + cache.file.string() + "': " + why);
-            data.clear();
+            warn("ignoring pipeline cache '" + file.path.string() + "': " + why);
+            file.data.clear();
         }
     }
+    return file;
+}
 
+PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
+    PipelineCacheFile file = readPipelineCacheFile(device, name);
+    PipelineCache cache{.file = file.path};
     VkPipelineCacheCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO,
-        .initialDataSize = data.size(),
-        .pInitialData = data.data(),
+        .initialDataSize = file.data.size(),
+        .pInitialData = file.data.data(),
     };
     if (vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle) != VK_SUCCESS) {
         warn("the driver refused pipeline cache '" + cache.file.string() + "'; starting empty");

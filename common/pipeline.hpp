@@ -17,8 +17,17 @@ struct PipelineCache {
     std::filesystem::path file;  // where it is loaded from and saved to; empty: not persisted
 };
 
-// Loads <cacheDir>/<name>-<vendor>-<device>.bin when it exists and was written by this very
-// device and driver; a damaged or foreign file is ignored with a warning on stderr.
+// Where the cache of chapter `name` on this device lives, <cacheDir>/<name>-<vendor>-<device>.bin
+// (empty when there is no cache directory), and its bytes when the file exists and was written by
+// this very device and driver; a damaged or foreign file is ignored with a warning on stderr.
+struct PipelineCacheFile {
+    std::filesystem::path path;
+    std::vector<char> data;  // empty: start with an empty cache
+};
+PipelineCacheFile readPipelineCacheFile(const Device& device, std::string_view name);
+
+// readPipelineCacheFile, then vkCreatePipelineCache with its bytes (written out in chapter-06,
+// which introduces it); a cache the driver refuses is replaced by an empty one, with a warning.
 PipelineCache loadPipelineCache(const Device& device, std::string_view name);
 // Writes the cache atomically (temporary file, then rename); a failure is only a warning.
 void savePipelineCache(const Device& device, const PipelineCache& cache);

@@ -156,8 +156,6 @@ void releaseImages(Target& target, const Device& device) {
 Target openTarget(const Options& options, const char* title) {
     Target target;
     target.requestedExtent = {options.width, options.height};
-    target.frameLimit = frameCount(options);
-    target.scriptedResize = options.resizeTo;
     target.vsync = !options.benchmark;
     if (options.headless) return target;
 
@@ -204,30 +202,26 @@ void createTargetImages(Target& target, const Device& device) {
     target.resized = false;
 }
 
-bool pollTarget(Target& target, uint32_t frame) {
-    if (target.scriptedResize && frame == target.frameLimit / 2) {
-        VkExtent2D size = *target.scriptedResize;
-        target.scriptedResize.reset();
-        if (target.window) {
-            // Goes through the window system; the framebuffer callback sets `resized` when the
-            // new size arrives, exactly as when a user drags the window border.
-            glfwSetWindowSize(target.window, static_cast<int>(size.width), static_cast<int>(size.height));
-        } else {
-            target.requestedExtent = size;
-            target.resized = true;
-        }
-    }
-    bool closing = false;
+void requestTargetSize(Target& target, VkExtent2D size) {
     if (target.window) {
-        glfwPollEvents();
-        // Minimised: nothing is visible, so nothing is drawn; sleep until the window comes back
-        // (or is closed) instead of rendering frames nobody sees. Where minimising also makes the
-        // framebuffer 0x0 (Windows), recreateTargetImages waits the same way.
-        while (glfwGetWindowAttrib(target.window, GLFW_ICONIFIED) && !glfwWindowShouldClose(target.window))
-            glfwWaitEvents();
-        closing = glfwWindowShouldClose(target.window);
+        // Goes through the window system; the framebuffer callback sets `resized` when the new
+        // size arrives, exactly as when a user drags the window border.
+        glfwSetWindowSize(target.window, static_cast<int>(size.width), static_cast<int>(size.height));
+    } else {
+        target.requestedExtent = size;
+        target.resized = true;
     }
-    return closing || (target.frameLimit != 0 && frame + 1 >= target.frameLimit);
+}
+
+bool pollTarget(Target& target) {
+    if (!target.window) return false;
+    glfwPollEvents();
+    // Minimised: nothing is visible, so nothing is drawn; sleep until the window comes back (or
+    // is closed) instead of rendering frames nobody sees. Where minimising also makes the
+    // framebuffer 0x0 (Windows), recreateTargetImages waits the same way.
+    while (glfwGetWindowAttrib(target.window, GLFW_ICONIFIED) && !glfwWindowShouldClose(target.window))
+        glfwWaitEvents();
+    return glfwWindowShouldClose(target.window);
 }
 
 bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
@@ -315,6 +309,29 @@ void closeTarget(Target& target) {
         glfwTerminate();
     }
     target.window = nullptr;
+}
+
+std::vector<VkFramebuffer> createTargetFramebuffers(const Device& device, VkRenderPass renderPass,
+                                                    const Target& target) {
+    std::vector<VkFramebuffer> framebuffers(target.views.size());
+    for (size_t i = 0; i < target.views.size(); ++i) {
+        VkFramebufferCreateInfo info{
+            .sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO,
+            .renderPass = renderPass,
+            .attachmentCount = 1,
+            .pAttachments = &target.views[i],
+            .width = target.extent.width,
+            .height = target.extent.height,
+            .layers = 1,
+        };
+        VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
+    }
+    return framebuffers;
+}
+
+void destroyFramebuffers(const Device& device, std::vector<VkFramebuffer>& framebuffers) {
+    for (VkFramebuffer framebuffer : framebuffers) vkDestroyFramebuffer(device.handle, framebuffer, nullptr);
+    framebuffers.clear();
 }
 
 }  // namespace common

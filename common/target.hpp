@@ -5,6 +5,8 @@
 //   openTarget -> createInstance(targetInstanceExtensions) -> createTargetSurface -> createDevice
 //   -> createTargetImages; per frame: pollTarget, acquireTargetImage, (record, submit),
 //   presentTargetImage, recreateTargetImages when either says so; teardown in reverse.
+// A Target is presentation only: how many frames a run draws, and when --resize strikes, are run
+// control (common/run_control.hpp).
 //
 // The book's Window, Surface and SwapChain (chapters 1-5).
 #pragma once
@@ -12,7 +14,6 @@
 #include <GLFW/glfw3.h>
 #include <vulkan/vulkan.h>
 
-#include <optional>
 #include <vector>
 
 #include "common/cli.hpp"
@@ -42,8 +43,6 @@ struct Target {
 
     bool resized = false;          // the window or the requested size changed since the images were made
     VkExtent2D requestedExtent{};  // headless: size of the images; window: size asked for
-    uint32_t frameLimit = 0;       // 0: until the window is closed
-    std::optional<VkExtent2D> scriptedResize;  // --resize, applied at frame frameLimit / 2
     uint32_t nextOffscreen = 0;
     bool vsync = true;  // false with --benchmark: MAILBOX or IMMEDIATE when the surface offers one
 };
@@ -57,9 +56,12 @@ void createTargetSurface(Target& target, const Instance& instance);
 // size exceeds the device's limit.
 void createTargetImages(Target& target, const Device& device);
 
-// Processes window events and scripted resizes. Returns true when frame `frame` is the last one:
-// --frames reached, or the window asked to close.
-bool pollTarget(Target& target, uint32_t frame);
+// Processes window events (sleeping while the window is minimised). Returns true when the
+// window asks to close.
+bool pollTarget(Target& target);
+// Asks for a new size, as a user dragging the window border would (--resize): the window is
+// resized through the window system; headless images are remade at the next acquire.
+void requestTargetSize(Target& target, VkExtent2D size);
 // Gets the next image to draw into; `imageAvailable` is signalled when it may be written.
 // Returns false when the target is out of date: call recreateTargetImages and try again.
 bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
@@ -72,6 +74,12 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
 bool recreateTargetImages(Target& target, const Device& device);
 
 void destroyTargetImages(Target& target, const Device& device);
+
+// One framebuffer per target image, for a render pass whose only attachment is that image
+// (chapter-10's lighting pass; chapter-06 writes the same out, as the chapter that teaches it).
+std::vector<VkFramebuffer> createTargetFramebuffers(const Device& device, VkRenderPass renderPass,
+                                                    const Target& target);
+void destroyFramebuffers(const Device& device, std::vector<VkFramebuffer>& framebuffers);
 void destroyTargetSurface(Target& target, const Instance& instance);
 void closeTarget(Target& target);
 

@@ -29,7 +29,9 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension);
 // SHADER_READ_ONLY_OPTIMAL. Usable after endStaging(batch).
 Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format);
 
-// Linear filtering with mipmaps, repeating coordinates (or clamped, for G-buffer attachments).
-VkSampler createSampler(const Device& device, VkSamplerAddressMode addressMode, float maxLod);
+// A sampler. Textures: LINEAR filtering between texels and mip levels, REPEAT, maxLod
+// VK_LOD_CLAMP_NONE. G-buffer attachments, read one texel per pixel: NEAREST (which every depth
+// format supports; linear filtering of D32_SFLOAT is optional), CLAMP_TO_EDGE, maxLod 0.
+VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode, float maxLod);
 
 }  // namespace common

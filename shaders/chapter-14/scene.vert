@@ -8,7 +8,7 @@ layout(location = 4) in vec2 inUv;
 
 layout(location = 0) out vec2 outUv;
 
-layout(set = 0, binding = 0) uniform Camera {
+layout(set = 0, binding = 0) uniform CameraUniform {
     mat4 projection;
     mat4 view;
 } camera;

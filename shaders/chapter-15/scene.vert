@@ -14,7 +14,7 @@ layout(location = 2) out vec3 outTangent;
 layout(location = 3) out vec3 outBitangent;
 layout(location = 4) out vec2 outUv;
 
-layout(set = 0, binding = 0) uniform Camera {
+layout(set = 0, binding = 0) uniform CameraUniform {
     mat4 projection;
     mat4 view;
 } camera;

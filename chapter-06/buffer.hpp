@@ -1,0 +1,28 @@
+// chapter-06: buffers -- the book's VulkanBuffer: a VkBuffer, the memory behind it (of a type
+// chosen from what the buffer allows and what we need), bound, and mapped when the CPU writes it.
+//
+// Deliberate repetition: common/buffer.cpp holds the same code for the later chapters, which
+// use it without spelling it out again. This chapter introduces it, so here it is written out.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include "common/device.hpp"
+
+// The book's VulkanBuffer.
+struct Buffer {
+    VkBuffer handle = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    void* mapped = nullptr;  // set when the memory is host-visible: mapped for the buffer's whole life
+};
+
+// The index of the first memory type that `typeBits` allows and that has every property in
+// `required`; throws common::Failure when there is none.
+uint32_t findMemoryType(const common::Device& device, uint32_t typeBits, VkMemoryPropertyFlags required);
+
+Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+                    VkMemoryPropertyFlags memoryFlags);
+void destroyBuffer(const common::Device& device, Buffer& buffer);

@@ -1,0 +1,67 @@
+// Run control and per-frame bookkeeping.
+#include "common/run_control.hpp"
+
+#include "common/screenshot.hpp"
+
+namespace common {
+
+RunControl createRunControl(const Options& options, const Device& device, std::vector<std::string> passes) {
+    RunControl run;
+    run.frameLimit = frameCount(options);
+    run.scriptedResize = options.resizeTo;
+    run.benchmark = options.benchmark;
+    run.screenshot = options.screenshot;
+    run.gpuTimer = createGpuTimer(device, options.framesInFlight, passes);
+    run.stats = createFrameStats(options, std::move(passes));
+    return run;
+}
+
+void destroyRunControl(const Device& device, RunControl& run) {
+    destroyGpuTimer(device, run.gpuTimer);
+    run = {};
+}
+
+bool beginFrame(RunControl& run, Target& target, uint32_t frame) {
+    run.frameStart = std::chrono::steady_clock::now();
+    if (run.scriptedResize && frame == run.frameLimit / 2) {
+        requestTargetSize(target, *run.scriptedResize);
+        run.scriptedResize.reset();
+    }
+    bool closing = pollTarget(target);
+    return closing || (run.frameLimit != 0 && frame + 1 >= run.frameLimit);
+}
+
+void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot) {
+    if (run.benchmark) readGpuTimer(device, run.gpuTimer, slot, run.stats);
+}
+
+void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame) {
+    if (run.benchmark) beginGpuTimer(run.gpuTimer, cmd, slot, frame);
+}
+
+void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
+    if (run.benchmark) markGpuPass(run.gpuTimer, cmd, slot, pass);
+}
+
+void screenshotLastFrame(const RunControl& run, const Device& device, const Target& target,
+                         uint32_t imageIndex) {
+    if (run.screenshot.empty()) return;
+    saveScreenshot(device, target.images[imageIndex], target.format, target.extent, target.presentLayout,
+                   run.screenshot);
+}
+
+void endFrame(RunControl& run, uint32_t frame) {
+    if (frame == 0) run.stats.startupMs = millisecondsSinceStart();
+    addCpuFrame(run.stats, frame,
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart)
+                    .count());
+}
+
+void reportRun(RunControl& run, const Device& device, const std::vector<std::pair<std::string, std::string>>& info) {
+    if (!run.benchmark) return;
+    for (uint32_t slot = 0; slot < run.gpuTimer.written.size(); ++slot)
+        readGpuTimer(device, run.gpuTimer, slot, run.stats);
+    reportBenchmark(run.stats, info);
+}
+
+}  // namespace common
