@@ -92,8 +92,8 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
         .dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT,
     };
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1, &barrier,
-                         0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1,
+                         &barrier, 0, nullptr, 0, nullptr);
     VK_CHECK(vkEndCommandBuffer(cmd));
 
     // Submit, and wait on a fence until the GPU has run the copies; then the staging buffers go.

@@ -161,7 +161,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
                                       pass.views.back().handle, sizeof(glm::mat4));
     }
 
-    pass.sampler = common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
     for (const common::Image& texture : scene.textures) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));

@@ -82,7 +82,8 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // Attachments are read one texel per pixel: nearest filtering, which every depth format
     // supports (linear filtering of D32_SFLOAT is optional).
-    pass.sampler = common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     writeAttachments(device, pass, gbuffer);
 
     VkPushConstantRange show{

@@ -36,7 +36,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // One texel per pixel: nearest filtering, which depth formats always support.
-    pass.sampler = common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     writeAttachments(device, pass, gbuffer);
     pass.pipeline =
         common::createFullscreenPipeline(device, cache, "chapter-14/light.frag", kLightOutputFormat,

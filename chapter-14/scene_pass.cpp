@@ -1,7 +1,6 @@
 // chapter-14: the scene pass.
 #include "scene_pass.hpp"
 
-
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -58,7 +57,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                   pass.materials.handle, VK_WHOLE_SIZE);
 
-    pass.sampler = common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
     for (const common::Image& texture : scene.textures) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
@@ -142,8 +142,8 @@ void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
             // The depth test reads and writes depth in both fragment-test stages.
             .dstStageMask =
                 VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-            .dstAccessMask =
-                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            .dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
             .oldLayout = VK_IMAGE_LAYOUT_UNDEFINED,
             .newLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
             .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,

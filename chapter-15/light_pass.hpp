@@ -1,7 +1,7 @@
 // chapter-15: the light pass -- Cook-Torrance lighting of the G-buffer by the scene's lights into
 // an R32G32B32A32_SFLOAT image; the post pass (common/post_pass.cpp) presents it. The book's
-// LightRender (chapter 15): a full-screen triangle. With --light-pass compute the same shading
-// runs as a compute dispatch that stores into the image instead.
+// LightRender (chapter 15): a full-screen triangle. Beyond the book, --light-pass compute runs
+// the same shading as a compute dispatch (beyond/compute_light_pass.cpp).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -15,15 +15,15 @@
 #include "common/fullscreen.hpp"
 #include "common/gbuffer.hpp"
 #include "common/image.hpp"
+#include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
-#include "scene_pass.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
 // How the light pass runs: the book's full-screen triangle, or a compute dispatch.
 enum class LightPassKind { Fragment, Compute };
 
-// The push constants (light_shading.glsl's Show block, 112 bytes).
+// The push constants, the twin of light_shading.glsl's LightView block (112 bytes).
 struct LightView {
     glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
     glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
@@ -31,9 +31,18 @@ struct LightView {
     int view = 0;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
     float near = 0.1f;  // the projection's planes
     float far = 100.0f;
-    int reversedZ = 0;
+    int reversedZ = 0;  // the G-buffer layout's reversedZ
 };
 static_assert(sizeof(LightView) == 112);
+
+// What the light pass owns per frame in flight: this frame's lights and scene info, host-visible
+// (the keys move the lights, the camera moves), and the descriptor sets that bind them.
+struct LightFrame {
+    common::Buffer lights;  // scalar layout, ShaderLight[lightCapacity]
+    common::Buffer scene;   // scalar layout, ShaderSceneInfo
+    VkDescriptorSet lightsSet = VK_NULL_HANDLE;
+    VkDescriptorSet sceneSet = VK_NULL_HANDLE;
+};
 
 struct LightPass {
     common::Image output;
@@ -42,14 +51,12 @@ struct LightPass {
     VkDescriptorSetLayout sceneLayout = VK_NULL_HANDLE;        // set 2: scene info, per frame
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkDescriptorSet attachmentsSet = VK_NULL_HANDLE;
-    std::vector<common::Buffer> lights;  // scalar layout, ShaderLight[lightCapacity]
-    std::vector<common::Buffer> scenes;  // scalar layout, ShaderSceneInfo
-    std::vector<VkDescriptorSet> lightSets, sceneSets;
+    std::vector<LightFrame> frames;
     uint32_t lightCapacity = 0;
     VkSampler sampler = VK_NULL_HANDLE;
     LightPassKind kind = LightPassKind::Fragment;
     common::FullscreenPipeline pipeline;  // Fragment
-    // Compute: the output as a storage image (set 3) and the compute pipeline.
+    // Compute (beyond/compute_light_pass.cpp): the output as a storage image (set 3), the pipeline.
     VkDescriptorSetLayout outputLayout = VK_NULL_HANDLE;
     VkDescriptorSet outputSet = VK_NULL_HANDLE;
     VkPipelineLayout computeLayout = VK_NULL_HANDLE;
@@ -58,7 +65,7 @@ struct LightPass {
 
 // `lightCapacity`: the scene's number of lights (the buffers are sized from it).
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, GBufferLayout layout, LightPassKind kind,
+                          const common::GBuffer& gbuffer, const GBufferLayout& layout, LightPassKind kind,
                           uint32_t framesInFlight, uint32_t lightCapacity);
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);

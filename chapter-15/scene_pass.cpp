@@ -2,7 +2,6 @@
 #include "scene_pass.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 #include <string>
 
@@ -15,13 +14,9 @@
 
 namespace {
 
-struct CameraUniform {
-    glm::mat4 projection;
-    glm::mat4 view;
-};
-
-// The vertex stage's push constants: the model matrix and its inverse-transpose (a mat3 is
-// three 16-byte columns in a push constant block). The material index follows at byte 112.
+// The vertex stage's push constants, the twin of scene.vert's DrawConstants block: the model
+// matrix and its inverse-transpose (a mat3 is three 16-byte columns in a push constant block).
+// The material index follows at byte 112.
 struct DrawConstants {
     glm::mat4 model;
     glm::vec4 normalMatrix[3];
@@ -30,8 +25,7 @@ static_assert(sizeof(DrawConstants) == 112);
 
 void createDescriptors(const common::Device& device, ScenePass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
-    pass.cameraLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+    pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)});
     pass.texturesLayout = common::createDescriptorSetLayout(
@@ -49,7 +43,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * materials}});
-    pass.sampler = common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
     for (const common::GpuMaterial& material : scene.materials) {
         VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
         uint32_t textures[3] = {material.albedoTexture, material.normalTexture, material.metalRoughTexture};
@@ -61,15 +56,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     }
     //< material-sets
 
-    for (uint32_t i = 0; i < framesInFlight; ++i) {
-        pass.cameras.push_back(
-            common::createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT));
-        pass.cameraSets.push_back(
-            common::allocateDescriptorSet(device, pass.descriptorPool, pass.cameraLayout));
-        common::writeBufferDescriptor(device, pass.cameraSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                      pass.cameras.back().handle, sizeof(CameraUniform));
-    }
+    pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 
     std::vector<ShaderMaterial> shaderMaterials;
     for (const common::GpuMaterial& m : scene.materials)
@@ -107,21 +94,20 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 
     //> scene-pipeline
     // Four colour attachments (three in the compact layout): as many formats and blend states.
-    std::vector<VkFormat> formats = gbufferColorFormats(pass.layout);
+    std::vector<VkFormat> formats = common::colorFormats(pass.layout->formats);
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
         .colorAttachmentCount = uint32_t(formats.size()),
         .pColorAttachmentFormats = formats.data(),
-        .depthAttachmentFormat = kDepthFormat,
+        .depthAttachmentFormat = pass.layout->formats.depth,
     };
     common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
                                                       common::kBitangent | common::kUv);
     //< scene-pipeline
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, pass.layout == GBufferLayout::Compact
-                                                                   ? "chapter-15/scene-compact.frag"
-                                                                   : "chapter-15/scene.frag");
+    VkShaderModule fragment = common::loadShaderModule(
+        device, std::string("chapter-15/scene") + pass.layout->shaderSuffix + ".frag");
     for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE}) {
         VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
         VkSpecializationInfo specialization{
@@ -142,7 +128,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
                 .depthWrite = true,
                 // Reversed-Z: nearer is larger.
                 .depthCompare =
-                    reversedZ(pass.layout) ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                    pass.layout->reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
                 .colorAttachmentCount = uint32_t(formats.size()),
                 .layout = pass.pipelineLayout,
                 .pNext = &rendering,
@@ -155,10 +141,11 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
 }  // namespace
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight, GBufferLayout layout) {
+                          const common::GpuScene& scene, uint32_t framesInFlight,
+                          const GBufferLayout& layout) {
     ScenePass pass;
-    pass.layout = layout;
-    for (VkFormat format : gbufferColorFormats(layout)) {
+    pass.layout = &layout;
+    for (VkFormat format : common::colorFormats(layout.formats)) {
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
         VkFormatFeatureFlags needed =
@@ -167,7 +154,7 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
             throw common::Failure("this device cannot render to and sample format " + std::to_string(format) +
                                   ", which this G-buffer layout needs");
     }
-    pass.gbuffer = common::createGBuffer(device, extent, gbufferColorFormats(layout), kDepthFormat);
+    pass.gbuffer = common::createGBuffer(device, extent, layout.formats);
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
     return pass;
@@ -175,25 +162,24 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
     common::destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = common::createGBuffer(device, extent, gbufferColorFormats(pass.layout), kDepthFormat);
+    pass.gbuffer = common::createGBuffer(device, extent, pass.layout->formats);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
-    CameraUniform camera{projection, view};
-    std::memcpy(pass.cameras[frame].mapped, &camera, sizeof(camera));
+    common::writeCamera(pass.cameras[frame], projection, view);
 }
 
 //> record-scene
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame, glm::vec3 cameraPosition) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
-    common::beginGBufferRendering(cmd, pass.gbuffer, reversedZ(pass.layout) ? 0.0f : 1.0f);
+    common::beginGBufferRendering(cmd, pass.gbuffer, pass.layout->reversedZ ? 0.0f : 1.0f);
     VkExtent2D extent = pass.gbuffer.depth.extent;
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    std::array<VkDescriptorSet, 2> shared{pass.cameraSets[frame], pass.materialsSet};
+    std::array<VkDescriptorSet, 2> shared{pass.cameras[frame].set, pass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
 
@@ -244,7 +230,7 @@ void destroyScenePass(const common::Device& device, ScenePass& pass) {
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);
-    for (common::Buffer& camera : pass.cameras) common::destroyBuffer(device, camera);
+    common::destroyCameraFrames(device, pass.cameras);
     vkDestroyDescriptorSetLayout(device.handle, pass.texturesLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.materialsLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.cameraLayout, nullptr);

@@ -59,8 +59,8 @@ bool pressedOnce(GLFWwindow* window, KeyPress& press) {
 }
 
 VkDescriptorSetLayout createCameraSetLayout(const Device& device) {
-    return createDescriptorSetLayout(device,
-                                     {binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+    return createDescriptorSetLayout(
+        device, {binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
 }
 
 std::vector<CameraFrame> createCameraFrames(const Device& device, VkDescriptorPool pool,

@@ -2,19 +2,59 @@
 #include "common/gbuffer.hpp"
 
 #include "common/barriers.hpp"
+#include "common/check.hpp"
 
 namespace common {
 
-GBuffer createGBuffer(const Device& device, VkExtent2D extent, std::span<const VkFormat> colorFormats,
-                      VkFormat depthFormat) {
+std::vector<VkFormat> colorFormats(const GBufferFormats& formats) {
+    std::vector<VkFormat> result;
+    for (VkFormat format : {formats.position, formats.albedo, formats.normal, formats.pbr})
+        if (format != VK_FORMAT_UNDEFINED) result.push_back(format);
+    return result;
+}
+
+uint32_t bytesPerPixel(const GBufferFormats& formats) {
+    auto bytes = [](VkFormat format) -> uint32_t {
+        switch (format) {
+            case VK_FORMAT_UNDEFINED:
+                return 0;
+            case VK_FORMAT_R32G32B32A32_SFLOAT:
+                return 16;
+            case VK_FORMAT_R16G16B16A16_SFLOAT:
+                return 8;
+            case VK_FORMAT_D32_SFLOAT:
+            case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+            case VK_FORMAT_R16G16_UNORM:
+                return 4;
+            default:
+                throw Failure("bytesPerPixel: a G-buffer format it does not know");
+        }
+    };
+    return bytes(formats.position) + bytes(formats.albedo) + bytes(formats.normal) + bytes(formats.pbr) +
+           bytes(formats.depth);
+}
+
+std::vector<const Image*> colorAttachments(const GBuffer& gbuffer) {
+    std::vector<const Image*> result;
+    for (const Image* image : {&gbuffer.position, &gbuffer.albedo, &gbuffer.normal, &gbuffer.pbr})
+        if (image->handle != VK_NULL_HANDLE) result.push_back(image);
+    return result;
+}
+
+GBuffer createGBuffer(const Device& device, VkExtent2D extent, const GBufferFormats& formats) {
+    auto color = [&](VkFormat format) {
+        if (format == VK_FORMAT_UNDEFINED) return Image{};
+        return createImage(device, extent, format,
+                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                               VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                           VK_IMAGE_ASPECT_COLOR_BIT);
+    };
     GBuffer gbuffer;
-    for (VkFormat format : colorFormats)
-        // TRANSFER_SRC: the accuracy tools read G-buffers back (chapter-15 --dump).
-        gbuffer.colors.push_back(createImage(device, extent, format,
-                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                             VK_IMAGE_ASPECT_COLOR_BIT));
-    gbuffer.depth = createImage(device, extent, depthFormat,
+    gbuffer.position = color(formats.position);
+    gbuffer.albedo = color(formats.albedo);
+    gbuffer.normal = color(formats.normal);
+    gbuffer.pbr = color(formats.pbr);
+    gbuffer.depth = createImage(device, extent, formats.depth,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                 VK_IMAGE_ASPECT_DEPTH_BIT);
@@ -22,7 +62,8 @@ GBuffer createGBuffer(const Device& device, VkExtent2D extent, std::span<const V
 }
 
 void destroyGBuffer(const Device& device, GBuffer& gbuffer) {
-    for (Image& image : gbuffer.colors) destroyImage(device, image);
+    for (Image* image : {&gbuffer.position, &gbuffer.albedo, &gbuffer.normal, &gbuffer.pbr})
+        if (image->handle != VK_NULL_HANDLE) destroyImage(device, *image);
     destroyImage(device, gbuffer.depth);
     gbuffer = {};
 }
@@ -35,12 +76,12 @@ constexpr VkPipelineStageFlags2 kReaders =
 //> gbuffer-render-init
 // Before drawing: every attachment to ATTACHMENT_OPTIMAL. The old contents are cleared, so the
 // old layout is UNDEFINED; but the previous frame's light pass may still be sampling them in its
-// fragment shader (or, in chapter-15, its compute shader: kReaders), so the transition waits for
+// fragment shader (or its compute shader, with --light-pass compute: kReaders), so the transition waits for
 // that stage (a write-after-read hazard needs only this execution dependency).
 void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
-    for (const Image& color : gbuffer.colors)
-        barriers.push_back(imageBarrier(color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+    for (const Image* color : colorAttachments(gbuffer))
+        barriers.push_back(imageBarrier(color->handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                                         VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, kReaders, VK_ACCESS_2_NONE,
                                         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
@@ -56,9 +97,9 @@ void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 // pass's fragment shader (read after write).
 void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
     std::vector<VkImageMemoryBarrier2> barriers;
-    for (const Image& color : gbuffer.colors)
+    for (const Image* color : colorAttachments(gbuffer))
         barriers.push_back(imageBarrier(
-            color.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            color->handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, kReaders, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
     barriers.push_back(imageBarrier(
@@ -74,10 +115,10 @@ void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float de
     // What a framebuffer and the render pass's attachment descriptions used to say, now given
     // at record time: one VkRenderingAttachmentInfo per colour attachment, and the depth one.
     std::vector<VkRenderingAttachmentInfo> colors;
-    for (const Image& color : gbuffer.colors)
+    for (const Image* color : colorAttachments(gbuffer))
         colors.push_back({
             .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = color.view,
+            .imageView = color->view,
             .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
             .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
             .storeOp = VK_ATTACHMENT_STORE_OP_STORE,

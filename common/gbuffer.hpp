@@ -1,12 +1,12 @@
-// A G-buffer for dynamic rendering: colour attachments in attachment order plus depth, one set
-// shared by all frames in flight, and the barriers that move it between being written (scene
-// pass) and being sampled (light pass). Introduced by chapter-14 (the book's RenderScn
-// renderInit / renderFinish); chapter-15 uses it with four colour attachments.
+// chapter-15's G-buffer for dynamic rendering: named attachments (position, albedo, normal, PBR
+// data, depth), one set shared by all frames in flight, and the barriers that move it between
+// being written (scene pass) and being sampled (light pass). chapter-14 introduces all of this,
+// written out for its two attachments in chapter-14/scene_pass.cpp (the book's RenderScn
+// renderInit / renderFinish); this is the same for any set of attachments, for chapter-15.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
-#include <span>
 #include <vector>
 
 #include "common/device.hpp"
@@ -14,13 +14,36 @@
 
 namespace common {
 
+// The format of each attachment; VK_FORMAT_UNDEFINED: the layout has no such attachment (a
+// layout that reconstructs position from depth stores none).
+struct GBufferFormats {
+    VkFormat position = VK_FORMAT_UNDEFINED;
+    VkFormat albedo = VK_FORMAT_UNDEFINED;
+    VkFormat normal = VK_FORMAT_UNDEFINED;
+    VkFormat pbr = VK_FORMAT_UNDEFINED;  // ambient occlusion, roughness, metallic
+    VkFormat depth = VK_FORMAT_D32_SFLOAT;
+};
+
+// The colour formats that exist, in attachment order: position, albedo, normal, pbr. That order
+// is the scene fragment shader's output locations and the light pass's bindings (depth last).
+std::vector<VkFormat> colorFormats(const GBufferFormats& formats);
+// Bytes per pixel of all attachments, depth included.
+uint32_t bytesPerPixel(const GBufferFormats& formats);
+
 struct GBuffer {
-    std::vector<Image> colors;
+    Image position;  // no handle when the layout has no position attachment
+    Image albedo;    // alpha: 1 where a surface was drawn, 0 (the clear value) where none was
+    Image normal;
+    Image pbr;
     Image depth;
 };
 
-GBuffer createGBuffer(const Device& device, VkExtent2D extent, std::span<const VkFormat> colorFormats,
-                      VkFormat depthFormat);
+// The colour attachments that exist, in attachment order (see colorFormats).
+std::vector<const Image*> colorAttachments(const GBuffer& gbuffer);
+
+// Every attachment sampled by the light pass and copyable (TRANSFER_SRC: chapter-15's --dump
+// reads them back).
+GBuffer createGBuffer(const Device& device, VkExtent2D extent, const GBufferFormats& formats);
 void destroyGBuffer(const Device& device, GBuffer& gbuffer);
 
 // Before the scene pass: every attachment to ATTACHMENT_OPTIMAL, after the previous frame's
@@ -30,6 +53,6 @@ void gbufferRenderInit(VkCommandBuffer cmd, const GBuffer& gbuffer);
 void gbufferRenderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer);
 // vkCmdBeginRendering on all attachments, cleared to zero (depth to `depthClear`: 1, or 0 with
 // reversed-Z) and stored.
-void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float depthClear = 1.0f);
+void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float depthClear);
 
 }  // namespace common

@@ -52,12 +52,13 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
 
 void endFrame(RunControl& run, uint32_t frame) {
     if (frame == 0) run.stats.startupMs = millisecondsSinceStart();
-    addCpuFrame(run.stats, frame,
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart)
-                    .count());
+    addCpuFrame(
+        run.stats, frame,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count());
 }
 
-void reportRun(RunControl& run, const Device& device, const std::vector<std::pair<std::string, std::string>>& info) {
+void reportRun(RunControl& run, const Device& device,
+               const std::vector<std::pair<std::string, std::string>>& info) {
     if (!run.benchmark) return;
     for (uint32_t slot = 0; slot < run.gpuTimer.written.size(); ++slot)
         readGpuTimer(device, run.gpuTimer, slot, run.stats);

@@ -50,6 +50,7 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
 void endFrame(RunControl& run, uint32_t frame);
 // After the loop and vkDeviceWaitIdle: the remaining GPU times and the --benchmark report, with
 // `info` saying what was measured (common::benchmarkInfo, plus anything chapter-specific).
-void reportRun(RunControl& run, const Device& device, const std::vector<std::pair<std::string, std::string>>& info);
+void reportRun(RunControl& run, const Device& device,
+               const std::vector<std::pair<std::string, std::string>>& info);
 
 }  // namespace common

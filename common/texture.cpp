@@ -132,12 +132,14 @@ Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pix
     return image;
 }
 
-VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode, float maxLod) {
+VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,
+                        float maxLod) {
     VkSamplerCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
         .magFilter = filter,
         .minFilter = filter,
-        .mipmapMode = filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST,
+        .mipmapMode =
+            filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST,
         .addressModeU = addressMode,
         .addressModeV = addressMode,
         .addressModeW = addressMode,

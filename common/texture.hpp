@@ -32,6 +32,7 @@ Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pix
 // A sampler. Textures: LINEAR filtering between texels and mip levels, REPEAT, maxLod
 // VK_LOD_CLAMP_NONE. G-buffer attachments, read one texel per pixel: NEAREST (which every depth
 // format supports; linear filtering of D32_SFLOAT is optional), CLAMP_TO_EDGE, maxLod 0.
-VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode, float maxLod);
+VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,
+                        float maxLod);
 
 }  // namespace common

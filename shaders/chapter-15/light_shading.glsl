@@ -28,13 +28,13 @@ layout(set = 0, binding = 4) uniform sampler2D depthAttachment;
 #endif
 
 layout(scalar, set = 1, binding = 0) readonly buffer Lights {
-    Light lights[];
+    ShaderLight lights[];
 };
 layout(scalar, set = 2, binding = 0) uniform Scene {
-    SceneInfo scene;
+    ShaderSceneInfo scene;
 };
 
-layout(push_constant) uniform Show {
+layout(push_constant) uniform LightView {
     mat4 clipToCameraRelative;  // inverse of projection x (view without its translation)
     vec4 boundsMin;             // xyz: the scene's bounds, to show positions as colours
     vec4 boundsMax;
@@ -88,7 +88,7 @@ vec4 shadePixel(vec2 uv) {
         vec3 V = viewDirection(position, vec3(0.0), N);  // the camera is the origin here
         vec3 color = scene.ambientColor * scene.ambientIntensity * albedo;
         for (uint i = 0u; i < scene.lightCount; ++i) {
-            Light light = lights[i];
+            ShaderLight light = lights[i];
             bool directional = light.directional != 0u;
             vec3 lightPosition = directional ? light.position : light.position - scene.cameraPosition;
             color += evaluateLight(directional, lightPosition, light.color, light.intensity, position, N, V, albedo,

@@ -32,7 +32,7 @@ layout(location = 3) out vec4 outPbr;
 #endif
 
 layout(std430, set = 1, binding = 0) readonly buffer Materials {
-    Material materials[];
+    ShaderMaterial materials[];
 };
 // The draw's material's textures (defaults: white, a flat normal map, white).
 layout(set = 2, binding = 0) uniform sampler2D albedoTexture;
@@ -44,7 +44,7 @@ layout(push_constant) uniform Draw {
 } draw;
 
 void main() {
-    Material material = materials[draw.materialIndex];
+    ShaderMaterial material = materials[draw.materialIndex];
     vec4 albedo = material.diffuse * texture(albedoTexture, inUv);
     // A G-buffer pixel holds one surface: cut-outs are all or nothing (docs: transparency).
     if (ALPHA_TEST && albedo.a < 0.5) discard;

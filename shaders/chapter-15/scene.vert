@@ -19,7 +19,7 @@ layout(set = 0, binding = 0) uniform CameraUniform {
     mat4 view;
 } camera;
 
-layout(push_constant) uniform Draw {
+layout(push_constant) uniform DrawConstants {
     mat4 model;         // bytes 0..63
     mat3 normalMatrix;  // bytes 64..111: inverse-transpose of the model matrix, made on the CPU
 } draw;

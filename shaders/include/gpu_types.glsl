@@ -7,7 +7,7 @@
 //> gpu-types
 // Lights: a storage buffer with scalar layout (GL_EXT_scalar_block_layout): vec3 takes 12 bytes
 // and aligns to 4, so this struct is 32 bytes with no padding.
-struct Light {
+struct ShaderLight {
     vec3 position;  // a point light's position; a directional light's travel direction
     uint directional;
     float intensity;
@@ -15,7 +15,7 @@ struct Light {
 };
 
 // Per-frame scene information: a uniform buffer, scalar layout too. 32 bytes.
-struct SceneInfo {
+struct ShaderSceneInfo {
     vec3 cameraPosition;
     float ambientIntensity;
     vec3 ambientColor;
@@ -25,7 +25,7 @@ struct SceneInfo {
 // Materials: a storage buffer, std430 layout. 32 bytes.
 const uint MATERIAL_NORMAL_MAP = 1u;       // flags: the material has a normal map
 const uint MATERIAL_METAL_ROUGH_MAP = 2u;  //        ... a metal-rough map
-struct Material {
+struct ShaderMaterial {
     vec4 diffuse;
     float roughness;  // factors, multiplied by the metal-rough texture's when there is one
     float metallic;

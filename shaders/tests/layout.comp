@@ -8,9 +8,9 @@
 
 layout(local_size_x = 1) in;
 
-layout(scalar, set = 0, binding = 0) readonly buffer Lights { Light lights[2]; };
-layout(scalar, set = 0, binding = 1) uniform Scene { SceneInfo scene; };
-layout(std430, set = 0, binding = 2) readonly buffer Materials { Material materials[2]; };
+layout(scalar, set = 0, binding = 0) readonly buffer Lights { ShaderLight lights[2]; };
+layout(scalar, set = 0, binding = 1) uniform Scene { ShaderSceneInfo scene; };
+layout(std430, set = 0, binding = 2) readonly buffer Materials { ShaderMaterial materials[2]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Fields { float fields[]; };
 
 void main() {

@@ -1,7 +1,7 @@
 // pbr_numeric_test SHADER.spv --check finite|random|hard [--samples N] [--device NAME] [--validation]
 //
 // The shading math of shaders/include/pbr.glsl, run on the GPU (shaders/tests/pbr_numeric.comp,
-// which includes that very file) and compared with its fp64 twin (common/pbr_reference.cpp) on
+// which includes that very file) and compared with its fp64 twin (tests/pbr_reference.cpp) on
 // the same inputs (the fp32 values the GPU reads, widened to double).
 //
 // Inputs: N random valid samples (default 100,000) and named hard cases. Outputs compared: the GGX
@@ -34,7 +34,7 @@
 #include "common/cli.hpp"
 #include "common/device.hpp"
 #include "common/instance.hpp"
-#include "common/pbr_reference.hpp"
+#include "tests/pbr_reference.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // fp64 twin of shaders/include/pbr.glsl.
-#include "common/pbr_reference.hpp"
+#include "tests/pbr_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
