@@ -79,7 +79,7 @@ Measured on **$device** ($driver), $(date -u +%Y-%m-%d), by \`bench/accuracy.sh\
 ### G-buffer layouts: bytes, frame time and error
 
 Frame time: median GPU frame time over 30 frames after 5 warm-up frames (\`--benchmark\`), 1280x720,
-on this shared 2-core machine (compare within one run). Error: the GPU's final image against the
+on a 2-core machine shared with other jobs (compare within one run). Error: the GPU's final image against the
 fp64 reference shading of the \`reference\` layout's fp32 G-buffer, on displayed values (clamped,
 sRGB-encoded, not quantised), per channel in 1/255: the worst pixel, the RMSE, and PSNR, over the
 pixels where the layout shows the same surface as the reference (the others are counted in the

@@ -5,7 +5,7 @@
 #                                            chapter at 1280x720 and 1920x1080, chapter-15 per
 #                                            G-buffer layout, windowed under Xvfb too when
 #                                            xvfb-run is there; writes the "lavapipe" section
-#   bench/run.sh --gpu BUILD_DIR OUT_DIR     on a lent GPU machine (../shared/GPU.md): the same at
+#   bench/run.sh --gpu BUILD_DIR OUT_DIR     on a machine with an NVIDIA GPU (headless): the same at
 #                                            1920x1080 and 3840x2160 on the NVIDIA device, plus the
 #                                            bandwidth probe; leaves OUT_DIR/gpu.tar of JSON reports
 #   bench/run.sh --gpu-report TAR [BUILD_DIR]  writes the "gpu" section from that gpu.tar
@@ -133,8 +133,8 @@ case "${1:-}" in
     mapfile -t layouts < <(for size in 1920x1080 3840x2160; do names $size "" | grep /15-; done)
     section=$(cat <<MARKDOWN
 Measured on **$(field device)** ($(field driver); host: $(cat "$work/machine.txt")), $(date -u +%Y-%m-%d), by
-\`bench/run.sh --gpu\` (binaries built here, run headless on the lent machine as ../shared/GPU.md
-says; every command below also had \`--json FILE\`).
+\`bench/run.sh --gpu\` (Release binaries built on the lavapipe machine, copied to this one and run
+headless; every command below also had \`--json FILE\`).
 
 $(results "bandwidth --device NVIDIA --mib 1024")
 MARKDOWN

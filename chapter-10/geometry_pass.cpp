@@ -152,13 +152,13 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
                                   pass.projection.handle, sizeof(glm::mat4));
     // One view matrix per frame in flight: the CPU writes frame N+1's while the GPU may still
     // read frame N's.
-    for (uint32_t i = 0; i < framesInFlight; ++i) {
-        pass.views.push_back(
-            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible));
-        pass.viewSets.push_back(
-            common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout));
-        common::writeBufferDescriptor(device, pass.viewSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                      pass.views.back().handle, sizeof(glm::mat4));
+    pass.views.resize(framesInFlight);
+    for (ViewFrame& view : pass.views) {
+        view.buffer =
+            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+        view.set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
+        common::writeBufferDescriptor(device, view.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      view.buffer.handle, sizeof(glm::mat4));
     }
 
     pass.sampler =
@@ -247,7 +247,7 @@ void setProjection(GeometryPass& pass, const glm::mat4& projection) {
 }
 
 void setView(GeometryPass& pass, uint32_t frame, const glm::mat4& view) {
-    std::memcpy(pass.views[frame].mapped, &view, sizeof(view));
+    std::memcpy(pass.views[frame].buffer.mapped, &view, sizeof(view));
 }
 
 //> record-geometry
@@ -273,7 +273,7 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 
     // Sets 0 and 1 are the same for every draw; 2 and 3 change with the material.
-    std::array<VkDescriptorSet, 2> matrices{pass.projectionSet, pass.viewSets[frame]};
+    std::array<VkDescriptorSet, 2> matrices{pass.projectionSet, pass.views[frame].set};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, matrices.data(),
                             0, nullptr);
     for (const common::Draw& draw : scene.draws) {
@@ -301,7 +301,7 @@ void destroyGeometryPass(const common::Device& device, GeometryPass& pass) {
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);  // frees its sets
     common::destroyBuffer(device, pass.materials);
-    for (common::Buffer& view : pass.views) common::destroyBuffer(device, view);
+    for (ViewFrame& view : pass.views) common::destroyBuffer(device, view.buffer);
     common::destroyBuffer(device, pass.projection);
     vkDestroyDescriptorSetLayout(device.handle, pass.materialLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.textureLayout, nullptr);

@@ -21,6 +21,13 @@ struct GBuffer {
     common::Image depth;   // D32_SFLOAT
 };
 
+// The view matrix of one frame in flight: a host-visible uniform buffer written every frame (the
+// camera moves), and the descriptor set (set 1) that binds it.
+struct ViewFrame {
+    common::Buffer buffer;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
 struct GeometryPass {
     VkRenderPass renderPass = VK_NULL_HANDLE;
     GBuffer gbuffer;
@@ -33,11 +40,10 @@ struct GeometryPass {
     VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     common::Buffer projection;
-    std::vector<common::Buffer> views;
+    std::vector<ViewFrame> views;  // per frame in flight
     common::Buffer materials;
     VkDeviceSize materialStride = 0;  // sizeof(vec4) rounded up to minUniformBufferOffsetAlignment
     VkDescriptorSet projectionSet = VK_NULL_HANDLE;
-    std::vector<VkDescriptorSet> viewSets;
     std::vector<VkDescriptorSet> textureSets;
     VkDescriptorSet materialSet = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;

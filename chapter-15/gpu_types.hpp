@@ -45,3 +45,26 @@ static_assert(sizeof(ShaderMaterial) == 32);
 static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20 &&
               offsetof(ShaderMaterial, flags) == 24);
 //< gpu-types
+
+// The scene pass's vertex-stage push constants: the model matrix and its inverse-transpose (a
+// mat3 is three 16-byte columns, std430). The fragment stage's material index follows at byte 112.
+struct DrawConstants {
+    glm::mat4 model;
+    glm::vec4 normalMatrix[3];
+};
+static_assert(sizeof(DrawConstants) == 112 && offsetof(DrawConstants, normalMatrix) == 64);
+
+// The light pass's push constants: 112 bytes.
+struct LightView {
+    glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
+    glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
+    glm::vec4 boundsMax{1.0f};
+    int view = 0;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
+    float near = 0.1f;  // the projection's planes
+    float far = 100.0f;
+    int reversedZ = 0;  // the G-buffer layout's reversedZ
+};
+static_assert(sizeof(LightView) == 112 && offsetof(LightView, boundsMin) == 64 &&
+              offsetof(LightView, view) == 96 && offsetof(LightView, reversedZ) == 108);
+
+// CameraUniform, shared with chapter-14, is common::CameraUniform (common/camera.hpp).

@@ -23,18 +23,6 @@ inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 // How the light pass runs: the book's full-screen triangle, or a compute dispatch.
 enum class LightPassKind { Fragment, Compute };
 
-// The push constants, the twin of light_shading.glsl's LightView block (112 bytes).
-struct LightView {
-    glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
-    glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
-    glm::vec4 boundsMax{1.0f};
-    int view = 0;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
-    float near = 0.1f;  // the projection's planes
-    float far = 100.0f;
-    int reversedZ = 0;  // the G-buffer layout's reversedZ
-};
-static_assert(sizeof(LightView) == 112);
-
 // What the light pass owns per frame in flight: this frame's lights and scene info, host-visible
 // (the keys move the lights, the camera moves), and the descriptor sets that bind them.
 struct LightFrame {

@@ -14,15 +14,6 @@
 
 namespace {
 
-// The vertex stage's push constants, the twin of scene.vert's DrawConstants block: the model
-// matrix and its inverse-transpose (a mat3 is three 16-byte columns in a push constant block).
-// The material index follows at byte 112.
-struct DrawConstants {
-    glm::mat4 model;
-    glm::vec4 normalMatrix[3];
-};
-static_assert(sizeof(DrawConstants) == 112);
-
 void createDescriptors(const common::Device& device, ScenePass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createCameraSetLayout(device);

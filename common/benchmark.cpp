@@ -15,8 +15,7 @@ GpuTimer createGpuTimer(const Device& device, uint32_t framesInFlight, std::vect
     GpuTimer timer;
     timer.passes = std::move(passes);
     timer.queriesPerFrame = uint32_t(timer.passes.size()) + 1;
-    timer.written.assign(framesInFlight, false);
-    timer.frameOf.assign(framesInFlight, 0);
+    timer.slots.assign(framesInFlight, {});
     timer.supported = device.timestampValidBits > 0 && device.properties.limits.timestampPeriod > 0.0f;
     if (!timer.supported) return timer;
     timer.nanosecondsPerTick = device.properties.limits.timestampPeriod;
@@ -37,12 +36,12 @@ void destroyGpuTimer(const Device& device, GpuTimer& timer) {
 
 void beginGpuTimer(GpuTimer& timer, VkCommandBuffer cmd, uint32_t slot, uint32_t frame) {
     if (!timer.supported) return;
-    timer.frameOf[slot] = frame;
+    timer.slots[slot].frame = frame;
     uint32_t first = slot * timer.queriesPerFrame;
     vkCmdResetQueryPool(cmd, timer.pool, first, timer.queriesPerFrame);
     // TOP_OF_PIPE: written once everything before it on the queue has started, i.e. the frame's start.
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timer.pool, first);
-    timer.written[slot] = true;
+    timer.slots[slot].written = true;
 }
 
 void markGpuPass(const GpuTimer& timer, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
@@ -53,18 +52,18 @@ void markGpuPass(const GpuTimer& timer, VkCommandBuffer cmd, uint32_t slot, uint
 }
 
 void readGpuTimer(const Device& device, GpuTimer& timer, uint32_t slot, FrameStats& stats) {
-    if (!timer.supported || !timer.written[slot]) return;
+    if (!timer.supported || !timer.slots[slot].written) return;
     std::vector<uint64_t> ticks(timer.queriesPerFrame);
     VkResult result = vkGetQueryPoolResults(device.handle, timer.pool, slot * timer.queriesPerFrame,
                                             timer.queriesPerFrame, ticks.size() * sizeof(uint64_t),
                                             ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
-    timer.written[slot] = false;
+    timer.slots[slot].written = false;
     if (result == VK_NOT_READY) return;
     VK_CHECK_RESULT(result, "vkGetQueryPoolResults");
     auto ms = [&](uint64_t from, uint64_t to) {
         return double((to - from) & timer.validMask) * timer.nanosecondsPerTick * 1e-6;
     };
-    if (timer.frameOf[slot] < stats.warmup) return;
+    if (timer.slots[slot].frame < stats.warmup) return;
     std::vector<double> milliseconds{ms(ticks.front(), ticks.back())};
     for (size_t pass = 0; pass < timer.passes.size(); ++pass)
         milliseconds.push_back(ms(ticks[pass], ticks[pass + 1]));

@@ -27,9 +27,12 @@ struct GpuTimer {
     uint64_t validMask = ~0ull;
     VkQueryPool pool = VK_NULL_HANDLE;
     std::vector<std::string> passes;
-    uint32_t queriesPerFrame = 0;   // one before the first pass, one after each
-    std::vector<bool> written;      // per frame in flight: queries recorded since the last read
-    std::vector<uint32_t> frameOf;  // per frame in flight: the frame whose queries these are
+    uint32_t queriesPerFrame = 0;  // one before the first pass, one after each
+    struct Slot {
+        bool written = false;  // queries recorded since the last read
+        uint32_t frame = 0;    // the frame whose queries these are
+    };
+    std::vector<Slot> slots;  // per frame in flight
 };
 
 GpuTimer createGpuTimer(const Device& device, uint32_t framesInFlight, std::vector<std::string> passes);

@@ -60,7 +60,7 @@ void endFrame(RunControl& run, uint32_t frame) {
 void reportRun(RunControl& run, const Device& device,
                const std::vector<std::pair<std::string, std::string>>& info) {
     if (!run.benchmark) return;
-    for (uint32_t slot = 0; slot < run.gpuTimer.written.size(); ++slot)
+    for (uint32_t slot = 0; slot < run.gpuTimer.slots.size(); ++slot)
         readGpuTimer(device, run.gpuTimer, slot, run.stats);
     reportBenchmark(run.stats, info);
 }

@@ -1,4 +1,4 @@
-# Fault tests (issue 8): out of GPU memory and device loss, injected by our Vulkan layer
+# Fault tests: out of GPU memory and device loss, injected by our Vulkan layer
 # (fault_layer/fault_layer.cpp), since lavapipe never fails that way. Each chapter must stop with
 # one line on stderr naming the failed call and what happened, exit code 1, promptly (no wait on a
 # fence that will never signal) and without a crash or a validation message.

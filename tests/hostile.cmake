@@ -1,4 +1,4 @@
-# Hostile inputs (issue 8, docs/reliability.md): empty, binary, huge and lying files, values at and
+# Hostile inputs (docs/reliability.md): empty, binary, huge and lying files, values at and
 # beyond their limits. Each ends in exit 2 with one line naming the file (and line or key), or in
 # a documented fallback with one warning line; never a crash, hang or validation message.
 # The inputs are written at test time by tools/hostile_inputs.cpp (tests/data/README.md lists them).

@@ -1,14 +1,17 @@
-// layout_test SHADER.spv: C++ and GLSL agree on the layout of chapter-15's shared structs. C++
-// fills two ShaderLights, a ShaderSceneInfo and two ShaderMaterials with distinct values; a
-// compute shader that includes the same gpu_types.glsl as the chapter reads them and writes each
-// field back; every field must come back as written. A wrong size or offset on either side puts
-// some other field's value there. Exit 0 when all agree.
+// layout_test SHADER.spv: C++ and GLSL agree on the layout of every struct chapter-15 shares with
+// its shaders. C++ fills two ShaderLights, a ShaderSceneInfo, two ShaderMaterials, a
+// CameraUniform and a DrawConstants (in buffers of the layouts the chapter uses) and a LightView
+// (as push constants) with distinct values; a compute shader that includes the same
+// gpu_types.glsl as the chapter reads them and writes each field back; every field must come back
+// as written. A wrong size or offset on either side puts some other field's value there. Exit 0
+// when all agree.
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
 #include "../chapter-15/gpu_types.hpp"
 #include "common/buffer.hpp"
+#include "common/camera.hpp"
 #include "common/check.hpp"
 #include "common/cli.hpp"
 #include "common/device.hpp"
@@ -34,39 +37,78 @@ void run(const common::Options& options) {
     for (const ShaderMaterial& m : materials)
         expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
                                          m.metallic, float(m.flags)});
+    // Matrices: every element a distinct value, read back column by column.
+    float next = 100.0f;
+    auto fill = [&](float* values, int count) {
+        for (int k = 0; k < count; ++k) values[k] = next++;
+    };
+    common::CameraUniform camera;
+    fill(&camera.projection[0][0], 16);
+    fill(&camera.view[0][0], 16);
+    DrawConstants draw;
+    fill(&draw.model[0][0], 16);
+    for (glm::vec4& column : draw.normalMatrix) fill(&column[0], 3), column.w = 0.0f;
+    LightView view;
+    fill(&view.clipToCameraRelative[0][0], 16);
+    fill(&view.boundsMin[0], 4);
+    fill(&view.boundsMax[0], 4);
+    view.view = 7;
+    view.near = next++;
+    view.far = next++;
+    view.reversedZ = 1;
+    auto columns = [&](const float* values, int count, int rows, int stride) {
+        for (int c = 0; c < count; ++c)
+            for (int r = 0; r < rows; ++r) expected.push_back(values[c * stride + r]);
+    };
+    columns(&camera.projection[0][0], 4, 4, 4);
+    columns(&camera.view[0][0], 4, 4, 4);
+    columns(&draw.model[0][0], 4, 4, 4);
+    columns(&draw.normalMatrix[0][0], 3, 3, 4);
+    columns(&view.clipToCameraRelative[0][0], 4, 4, 4);
+    columns(&view.boundsMin[0], 1, 4, 4);
+    columns(&view.boundsMax[0], 1, 4, 4);
+    expected.insert(expected.end(), {float(view.view), view.near, view.far, float(view.reversedZ)});
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
                                                  {.scalarBlockLayout = true, .maintenance4 = true});
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    common::Buffer buffers[4] = {
+    common::Buffer buffers[6] = {
         common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
         common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
         common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
+        common::createBuffer(device, sizeof(camera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
+        common::createBuffer(device, sizeof(draw), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
         common::createBuffer(device, expected.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              host),
     };
     std::memcpy(buffers[0].mapped, lights, sizeof(lights));
     std::memcpy(buffers[1].mapped, &scene, sizeof(scene));
     std::memcpy(buffers[2].mapped, materials, sizeof(materials));
-    std::memset(buffers[3].mapped, 0xff, expected.size() * sizeof(float));  // NaN until written
+    std::memcpy(buffers[3].mapped, &camera, sizeof(camera));
+    std::memcpy(buffers[4].mapped, &draw, sizeof(draw));
+    std::memset(buffers[5].mapped, 0xff, expected.size() * sizeof(float));  // NaN until written
 
     runCompute(device, gShaderPath,
                {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[0].handle},
                 {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers[1].handle},
                 {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[2].handle},
-                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[3].handle}},
-               nullptr, 0, 1);
+                {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers[3].handle},
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[4].handle},
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[5].handle}},
+               &view, sizeof(view), 1);
 
-    const float* fields = static_cast<const float*>(buffers[3].mapped);
+    const float* fields = static_cast<const float*>(buffers[5].mapped);
     size_t wrong = 0;
     for (size_t i = 0; i < expected.size(); ++i)
         if (fields[i] != expected[i]) {
             std::printf("field %zu: the shader read %g, C++ wrote %g\n", i, fields[i], expected[i]);
             ++wrong;
         }
-    std::printf("%zu fields of ShaderLight, ShaderSceneInfo and ShaderMaterial checked, %zu disagree\n",
-                expected.size(), wrong);
+    std::printf(
+        "%zu fields of ShaderLight, ShaderSceneInfo, ShaderMaterial, CameraUniform, DrawConstants and "
+        "LightView checked, %zu disagree\n",
+        expected.size(), wrong);
 
     for (common::Buffer& buffer : buffers) common::destroyBuffer(device, buffer);
     common::destroyDevice(device);

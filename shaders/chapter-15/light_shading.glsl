@@ -34,15 +34,9 @@ layout(scalar, set = 2, binding = 0) uniform Scene {
     ShaderSceneInfo scene;
 };
 
-layout(push_constant) uniform LightView {
-    mat4 clipToCameraRelative;  // inverse of projection x (view without its translation)
-    vec4 boundsMin;             // xyz: the scene's bounds, to show positions as colours
-    vec4 boundsMax;
-    int view;  // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
-    float near;  // the projection's near and far planes
-    float far;
-    int reversedZ;  // depth 1 at near, 0 at far
-} show;
+layout(push_constant) uniform LightViewBlock {
+    LightView show;  // gpu_types.glsl
+};
 
 // The pixel at `uv` (0..1 across the image, texel centres): lit, or the attachment --view asks for.
 // textureLod: the attachments have one level, and a compute shader has no implicit level.

@@ -1,5 +1,7 @@
 #version 450
 // chapter-15 scene pass: positions, and the tangent frame in world space for normal mapping.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.glsl"
 
 //> scene-vert
 layout(location = 0) in vec3 inPosition;
@@ -14,15 +16,13 @@ layout(location = 2) out vec3 outTangent;
 layout(location = 3) out vec3 outBitangent;
 layout(location = 4) out vec2 outUv;
 
-layout(set = 0, binding = 0) uniform CameraUniform {
-    mat4 projection;
-    mat4 view;
-} camera;
+layout(set = 0, binding = 0) uniform CameraBlock {
+    CameraUniform camera;  // gpu_types.glsl
+};
 
-layout(push_constant) uniform DrawConstants {
-    mat4 model;         // bytes 0..63
-    mat3 normalMatrix;  // bytes 64..111: inverse-transpose of the model matrix, made on the CPU
-} draw;
+layout(push_constant) uniform DrawBlock {
+    DrawConstants draw;  // gpu_types.glsl; the normal matrix is made on the CPU
+};
 
 void main() {
     vec4 worldPosition = draw.model * vec4(inPosition, 1.0);

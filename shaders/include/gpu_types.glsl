@@ -34,4 +34,28 @@ struct ShaderMaterial {
 };
 //< gpu-types
 
+// The camera: one uniform buffer per frame in flight (std140), set 0 of the scene pass. C++:
+// common::CameraUniform (common/camera.hpp).
+struct CameraUniform {
+    mat4 projection;
+    mat4 view;
+};
+
+// The scene pass's vertex-stage push constants (std430): 112 bytes.
+struct DrawConstants {
+    mat4 model;         // bytes 0..63
+    mat3 normalMatrix;  // bytes 64..111 (three 16-byte columns): inverse-transpose of the model matrix
+};
+
+// The light pass's push constants (std430): 112 bytes.
+struct LightView {
+    mat4 clipToCameraRelative;  // inverse of projection x (view without its translation)
+    vec4 boundsMin;             // xyz: the scene's bounds, to show positions as colours
+    vec4 boundsMax;
+    int view;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
+    float near;     // the projection's near and far planes
+    float far;
+    int reversedZ;  // depth 1 at near, 0 at far
+};
+
 #endif

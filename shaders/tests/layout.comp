@@ -11,7 +11,11 @@ layout(local_size_x = 1) in;
 layout(scalar, set = 0, binding = 0) readonly buffer Lights { ShaderLight lights[2]; };
 layout(scalar, set = 0, binding = 1) uniform Scene { ShaderSceneInfo scene; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { ShaderMaterial materials[2]; };
-layout(std430, set = 0, binding = 3) writeonly buffer Fields { float fields[]; };
+layout(std140, set = 0, binding = 3) uniform Camera { CameraUniform camera; };
+layout(std430, set = 0, binding = 4) readonly buffer Draws { DrawConstants draw; };
+layout(std430, set = 0, binding = 5) writeonly buffer Fields { float fields[]; };
+// As the light pass receives it: push constants (std430, as push constant blocks are by default).
+layout(push_constant) uniform LightViewBlock { LightView show; };
 
 void main() {
     int i = 0;
@@ -42,4 +46,20 @@ void main() {
         fields[i++] = materials[m].metallic;
         fields[i++] = float(materials[m].flags);
     }
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) fields[i++] = camera.projection[c][r];
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) fields[i++] = camera.view[c][r];
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) fields[i++] = draw.model[c][r];
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) fields[i++] = draw.normalMatrix[c][r];
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) fields[i++] = show.clipToCameraRelative[c][r];
+    for (int k = 0; k < 4; ++k) fields[i++] = show.boundsMin[k];
+    for (int k = 0; k < 4; ++k) fields[i++] = show.boundsMax[k];
+    fields[i++] = float(show.view);
+    fields[i++] = show.near;
+    fields[i++] = show.far;
+    fields[i++] = float(show.reversedZ);
 }

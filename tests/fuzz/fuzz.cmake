@@ -1,4 +1,4 @@
-# Fuzzing (issue 8, docs/reliability.md): tests/fuzz/run.sh builds the libFuzzer targets of
+# Fuzzing (docs/reliability.md): tests/fuzz/run.sh builds the libFuzzer targets of
 # tests/fuzz/ (the OBJ/MTL loader with tangents, the scene JSON reader) with clang, in a build tree
 # of their own, and runs each for 20 s over a copy of its committed corpus, which holds the
 # regression inputs. A crash, hang, leak, sanitizer report or any exception but InputError fails.

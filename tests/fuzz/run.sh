@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the loaders (issue 8, docs/reliability.md): builds the libFuzzer targets of tests/fuzz/
+# Fuzzes the loaders (docs/reliability.md): builds the libFuzzer targets of tests/fuzz/
 # with clang (into build-fuzz/ unless FUZZ_BUILD_DIR says otherwise) and runs each target for
 # SECONDS (default 60), one after the other, over a copy of its committed corpus
 # (tests/fuzz/corpus/<obj|scene>/), which is never written to unless --merge is given.
