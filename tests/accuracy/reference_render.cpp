@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "common/check.hpp"
-#include "tests/pbr_reference.hpp"
 #include "common/scene.hpp"
+#include "tests/pbr_reference.hpp"
 
 namespace {
 
