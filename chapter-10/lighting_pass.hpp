@@ -6,6 +6,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstddef>
+
 #include <vector>
 
 #include "common/device.hpp"
@@ -13,11 +15,15 @@
 #include "geometry_pass.hpp"
 
 // What the lighting pass shows (a push constant recorded into its command buffers).
+// The twin of lighting.frag's LightingView push-constant block (std430: three 4-byte scalars; the
+// --view depth golden images would show a mismatch of near or far).
 struct LightingView {
     int view = 0;  // index into the chapter's --view names
     float near = 0.1f;
     float far = 100.0f;
 };
+static_assert(sizeof(LightingView) == 12 && offsetof(LightingView, near) == 4 &&
+              offsetof(LightingView, far) == 8);
 
 struct LightingPass {
     VkRenderPass renderPass = VK_NULL_HANDLE;

@@ -5,6 +5,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstddef>
+
 #include "common/device.hpp"
 #include "common/fullscreen.hpp"
 #include "common/image.hpp"
@@ -13,11 +15,14 @@
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
 // What the light pass shows (a fragment push constant).
+// The twin of light.frag's LightView push-constant block (std430: three 4-byte scalars; the
+// --view depth golden images would show a mismatch of near or far).
 struct LightView {
     int view = 0;  // index into the chapter's --view names
     float near = 0.1f;
     float far = 100.0f;
 };
+static_assert(sizeof(LightView) == 12 && offsetof(LightView, near) == 4 && offsetof(LightView, far) == 8);
 
 struct LightPass {
     common::Image output;  // one, shared by the frames in flight, like the G-buffer
