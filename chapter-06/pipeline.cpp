@@ -41,7 +41,7 @@ common::PipelineCache createPipelineCache(const common::Device& device) {
     };
     if (vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle) != VK_SUCCESS) {
         std::fprintf(stderr, "warning: the driver refused pipeline cache '%s'; starting empty\n",
-                     file.path.string().c_str());
+                     common::utf8(file.path).c_str());
         info.initialDataSize = 0;
         info.pInitialData = nullptr;
         VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 
 namespace common {
 
@@ -73,7 +74,7 @@ void readGpuTimer(const Device& device, GpuTimer& timer, uint32_t slot, FrameSta
 FrameStats createFrameStats(const Options& options, std::vector<std::string> passes) {
     FrameStats stats;
     stats.warmup = options.warmup;
-    stats.json = options.json.string();
+    stats.json = options.json;
     stats.passes = std::move(passes);
     return stats;
 }
@@ -138,7 +139,7 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     if (!stats.json.empty()) {
         std::ofstream out(stats.json);
         out << report.dump(2) << "\n";
-        if (!out) throw Failure("cannot write '" + stats.json + "'");
+        if (!out) throw Failure("cannot write '" + utf8(stats.json) + "'");
     }
 }
 

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,8 @@ void readGpuTimer(const Device& device, GpuTimer& timer, uint32_t slot, FrameSta
 
 // Collects the measured frames of a run.
 struct FrameStats {
-    uint32_t warmup = 0;  // frames before the measured ones
-    std::string json;     // where to write the JSON report; empty: none
+    uint32_t warmup = 0;         // frames before the measured ones
+    std::filesystem::path json;  // where to write the JSON report; empty: none
     std::vector<std::string> passes;
     std::vector<double> cpuMs;               // per measured frame
     std::vector<std::vector<double>> gpuMs;  // per measured frame: whole frame, then each pass

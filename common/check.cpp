@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "common/files.hpp"
+
 namespace common {
 
 const char* resultName(VkResult result) {
@@ -64,7 +66,7 @@ const char* plainWords(VkResult result) {
 
 void throwVkError(VkResult result, const char* expression, const char* file, int line) {
     std::string message = plainWords(result) + std::string(expression) + " failed with " +
-                          resultName(result) + " (" + std::filesystem::path(file).filename().string() + ":" +
+                          resultName(result) + " (" + utf8(std::filesystem::path(file).filename()) + ":" +
                           std::to_string(line) + ")";
     throw Failure(message);
 }

@@ -1,14 +1,13 @@
 // Command-line parsing shared by every chapter, and the mapping of failures to exit codes.
 #include "common/cli.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <string_view>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 #include "common/instance.hpp"
 
 namespace common {
@@ -68,22 +67,21 @@ VkExtent2D parseExtent(std::string_view flag, std::string_view text) {
 // existing file is never left half-written). `what` names it: "screenshot", "benchmark report".
 void checkOutputPath(const std::filesystem::path& path, const std::string& what) {
     namespace fs = std::filesystem;
-    std::string name = "cannot write " + what + " '" + path.string() + "': ";
+    std::string name = "cannot write " + what + " '" + utf8(path) + "': ";
     fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::error_code ec;
     if (!fs::is_directory(directory, ec))
-        throw InputError(name + "directory '" + directory.string() + "' does not exist");
+        throw InputError(name + "directory '" + utf8(directory) + "' does not exist");
     if (fs::is_directory(path, ec)) throw InputError(name + "it is a directory");
-    if (access(directory.c_str(), W_OK) != 0)
-        throw InputError(name + "directory '" + directory.string() + "' is not writable");
-    if (fs::exists(path, ec) && access(path.c_str(), W_OK) != 0)
-        throw InputError(name + "the file is not writable");
+    if (!isWritable(directory))
+        throw InputError(name + "directory '" + utf8(directory) + "' is not writable");
+    if (fs::exists(path, ec) && !isWritable(path)) throw InputError(name + "the file is not writable");
 }
 
 void checkScreenshotPath(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
+    std::string extension = utf8(path.extension());
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png") throw InputError("--screenshot '" + path.string() + "' must end in .png");
+    if (extension != ".png") throw InputError("--screenshot '" + utf8(path) + "' must end in .png");
     checkOutputPath(path, "screenshot");
 }
 
@@ -114,7 +112,7 @@ std::string oneLine(std::string message) {
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
     Options options;
     bool framesGiven = false, warmupGiven = false;
-    options.command = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : chapter.name;
+    options.command = argc > 0 ? utf8(std::filesystem::path(argv[0]).filename()) : chapter.name;
     for (int i = 1; i < argc; ++i) options.command += std::string(" ") + argv[i];
     for (int i = 1; i < argc; ++i) {
         std::string_view arg = argv[i];

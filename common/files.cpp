@@ -5,53 +5,110 @@
 #include <fstream>
 #include <string>
 
+#if defined(_WIN32)
+#include <io.h>
+#include <process.h>
+#include <windows.h>
+#elif defined(__APPLE__)
+#include <mach-o/dyld.h>
+#include <unistd.h>
+#else
+#include <unistd.h>
+#endif
+
 #include "common/check.hpp"
 
 namespace common {
 
 std::filesystem::path executableDir() {
+#if defined(_WIN32)
+    std::wstring name(MAX_PATH, L'\0');
+    for (;;) {  // the path may be longer than MAX_PATH: grow until it fits
+        DWORD length = GetModuleFileNameW(nullptr, name.data(), DWORD(name.size()));
+        if (length == 0) throw Failure("cannot locate the running executable (GetModuleFileNameW failed)");
+        if (length < name.size()) {
+            name.resize(length);
+            break;
+        }
+        name.resize(name.size() * 2);
+    }
+    return std::filesystem::path(name).parent_path();
+#elif defined(__APPLE__)
+    uint32_t size = 0;
+    _NSGetExecutablePath(nullptr, &size);  // asks for the size
+    std::string name(size, '\0');
+    if (_NSGetExecutablePath(name.data(), &size) != 0)
+        throw Failure("cannot locate the running executable (_NSGetExecutablePath failed)");
+    std::error_code ec;
+    std::filesystem::path exe = std::filesystem::canonical(name.c_str(), ec);  // resolves symlinks
+    return (ec ? std::filesystem::path(name.c_str()) : exe).parent_path();
+#else
     std::error_code ec;
     std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (ec) throw Failure("cannot locate the running executable (/proc/self/exe): " + ec.message());
     return exe.parent_path();
+#endif
+}
+
+std::string utf8(const std::filesystem::path& path) {
+    std::u8string text = path.u8string();
+    return std::string(text.begin(), text.end());
+}
+
+std::filesystem::path temporarySibling(const std::filesystem::path& path) {
+#if defined(_WIN32)
+    int pid = _getpid();
+#else
+    int pid = int(getpid());
+#endif
+    std::filesystem::path temporary = path;
+    temporary += ".tmp" + std::to_string(pid);
+    return temporary;
+}
+
+bool isWritable(const std::filesystem::path& path) {
+#if defined(_WIN32)
+    return _waccess(path.c_str(), 2) == 0;  // 2: write permission
+#else
+    return access(path.c_str(), W_OK) == 0;
+#endif
 }
 
 std::vector<char> readFile(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary | std::ios::ate);
-    if (!file) throw Failure("cannot read '" + path.string() + "'");
+    if (!file) throw Failure("cannot read '" + utf8(path) + "'");
     std::streamsize size = file.tellg();
     std::vector<char> bytes(static_cast<size_t>(size));
     file.seekg(0);
-    if (!file.read(bytes.data(), size)) throw Failure("cannot read '" + path.string() + "'");
+    if (!file.read(bytes.data(), size)) throw Failure("cannot read '" + utf8(path) + "'");
     return bytes;
 }
 
 std::string readInputFile(const std::filesystem::path& path) {
     std::error_code ec;
     std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) throw InputError(path.string() + ": no such file");
-    if (std::filesystem::is_directory(status))
-        throw InputError(path.string() + ": is a directory, not a file");
+    if (!std::filesystem::exists(status)) throw InputError(utf8(path) + ": no such file");
+    if (std::filesystem::is_directory(status)) throw InputError(utf8(path) + ": is a directory, not a file");
     if (!std::filesystem::is_regular_file(status))
-        throw InputError(path.string() + ": not a regular file (a device, a pipe or a socket)");
+        throw InputError(utf8(path) + ": not a regular file (a device, a pipe or a socket)");
     uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec) throw InputError(path.string() + ": cannot read (" + ec.message() + ")");
+    if (ec) throw InputError(utf8(path) + ": cannot read (" + ec.message() + ")");
     if (size > kMaxInputFileBytes)
-        throw InputError(path.string() + ": " + std::to_string(size >> 20) + " MiB, more than the " +
+        throw InputError(utf8(path) + ": " + std::to_string(size >> 20) + " MiB, more than the " +
                          std::to_string(kMaxInputFileBytes >> 20) + " MiB an input file may have");
     std::ifstream file(path, std::ios::binary);
     std::string text(static_cast<size_t>(size), '\0');
     if (!file || !file.read(text.data(), static_cast<std::streamsize>(size)))
-        throw InputError(path.string() + ": cannot read");
+        throw InputError(utf8(path) + ": cannot read");
     return text;
 }
 
 std::vector<char> readSpirv(std::string_view name) {
     std::filesystem::path path = executableDir() / "shaders" / (std::string(name) + ".spv");
     if (!std::filesystem::exists(path))
-        throw Failure("missing shader '" + path.string() + "' (is the build complete?)");
+        throw Failure("missing shader '" + utf8(path) + "' (is the build complete?)");
     std::vector<char> code = readFile(path);
-    if (code.empty() || code.size() % 4 != 0) throw Failure("'" + path.string() + "' is not SPIR-V");
+    if (code.empty() || code.size() % 4 != 0) throw Failure("'" + utf8(path) + "' is not SPIR-V");
     return code;
 }
 

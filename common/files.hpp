@@ -15,8 +15,22 @@
 
 namespace common {
 
-// The directory holding the running executable (from /proc/self/exe), e.g. <build>/bin.
+// The directory holding the running executable, e.g. <build>/bin: asked of the system
+// (GetModuleFileNameW on Windows, _NSGetExecutablePath on macOS, /proc/self/exe on Linux), so it
+// does not depend on the working directory or on how the program was started.
 std::filesystem::path executableDir();
+
+// The path as UTF-8 text: for messages, and for C libraries that take a char* file name (stb,
+// built with STBI_WINDOWS_UTF8 on Windows). path::string() would use the Windows code page there,
+// which cannot hold every character a user's path may have.
+std::string utf8(const std::filesystem::path& path);
+
+// `path` with a suffix unique to this process: write a file there, then rename it over `path`,
+// so that no reader ever sees it half-written.
+std::filesystem::path temporarySibling(const std::filesystem::path& path);
+
+// Whether this process may write the file or directory `path` (which must exist).
+bool isWritable(const std::filesystem::path& path);
 
 // The whole file; throws Failure naming the file when it cannot be read.
 std::vector<char> readFile(const std::filesystem::path& path);

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 #include "common/texture.hpp"
 
 namespace common {
@@ -94,7 +95,7 @@ private:
         if (!std::filesystem::exists(path, ec)) {
             if (warned_.insert(path).second)
                 std::fprintf(stderr, "warning: texture '%s' not found; using the default texture\n",
-                             path.c_str());
+                             utf8(path).c_str());
             return std::nullopt;
         }
         return loadPixels(path, device_.properties.limits.maxImageDimension2D);
@@ -156,7 +157,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
             bool known = false;
             for (const MaterialData& m : model.materials) known = known || m.name == name;
             if (!known)
-                throw InputError(instance.file.string() + ": has no material '" + name +
+                throw InputError(utf8(instance.file) + ": has no material '" + name +
                                  "' (named in the scene's material overrides)");
         }
         uint32_t materialBase = uint32_t(gpu.materials.size());

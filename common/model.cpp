@@ -39,7 +39,7 @@ std::string shortQuote(const std::string& token) {
 }
 
 std::string at(const std::filesystem::path& file, int lineNumber) {
-    return file.string() + ":" + std::to_string(lineNumber) + ": ";
+    return utf8(file) + ":" + std::to_string(lineNumber) + ": ";
 }
 
 // tinyobjloader reads numbers with its own parser and turns text it cannot read into 0 without
@@ -73,7 +73,7 @@ void checkNumbers(const std::filesystem::path& file, int lineNumber, std::istrin
 std::string readText(const std::filesystem::path& file) {
     std::string text = readInputFile(file);
     if (text.starts_with("\xff\xfe") || text.starts_with("\xfe\xff"))
-        throw InputError(file.string() + ": UTF-16 text; save it as UTF-8 or ASCII");
+        throw InputError(utf8(file) + ": UTF-16 text; save it as UTF-8 or ASCII");
     if (text.starts_with("\xef\xbb\xbf")) text.erase(0, 3);
     // tinyobjloader ends a line at "\n", "\r\n" or a lone "\r" (old Mac files); our checks split at
     // "\n", so they would miss a line that tinyobjloader reads. Both get "\n" only.
@@ -188,8 +188,8 @@ ObjText checkObjText(const std::filesystem::path& obj, const std::string& text) 
                 std::filesystem::path mtl = obj.parent_path() / file;
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(mtl, ec))
-                    throw InputError(obj.string() + ": a material library it names cannot be read (" +
-                                     mtl.string() + ")");
+                    throw InputError(utf8(obj) + ": a material library it names cannot be read (" +
+                                     utf8(mtl) + ")");
                 checkMtl(mtl, result.stated);
                 result.libraries.insert(file);
             }
@@ -207,7 +207,7 @@ public:
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
         if (name.empty()) return false;  // "mtllib" and blanks: tinyobjloader uses the default material
         if (!checked_.count(name))
-            throw InputError(obj_.string() + ": material library '" + name + "' was not read as named");
+            throw InputError(utf8(obj_) + ": material library '" + name + "' was not read as named");
         std::istringstream text(readText(obj_.parent_path() / name));
         tinyobj::LoadMtl(names, materials, &text, warning, error);
         return true;
@@ -296,7 +296,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
         for (char& c : why)
             if (c == '\n') c = ' ';
-        throw InputError(path.string() + ": " + (why.empty() ? "cannot parse OBJ" : why));
+        throw InputError(utf8(path) + ": " + (why.empty() ? "cannot parse OBJ" : why));
     }
 
     ModelData model;
@@ -353,7 +353,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
                 v.uv = {t[0], 1.0f - t[1]};  // OBJ's v runs up, Vulkan's image rows run down
             }
             if (!finite(v.position) || !finite(v.normal) || !std::isfinite(v.uv.x) || !std::isfinite(v.uv.y))
-                throw InputError(path.string() + ": a vertex has a non-finite coordinate");
+                throw InputError(utf8(path) + ": a vertex has a non-finite coordinate");
             out.vertices.push_back(v);
         }
         out.indices.push_back(it->second);
@@ -365,14 +365,14 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         for (size_t face = 0; face < mesh.num_face_vertices.size(); ++face) {
             const size_t count = mesh.num_face_vertices[face];
             if (count < 3 || offset + count > mesh.indices.size())
-                throw InputError(path.string() + ": a face has fewer than 3 corners or too many");
+                throw InputError(utf8(path) + ": a face has fewer than 3 corners or too many");
             std::vector<glm::dvec3> corners;
             for (size_t corner = offset; corner < offset + count; ++corner) {
                 const tinyobj::index_t& index = mesh.indices[corner];
                 if (index.vertex_index < 0 || size_t(index.vertex_index) >= positions ||
                     (index.normal_index >= 0 && size_t(index.normal_index) >= normals) ||
                     (index.texcoord_index >= 0 && size_t(index.texcoord_index) >= uvs))
-                    throw InputError(path.string() +
+                    throw InputError(utf8(path) +
                                      ": a face refers to a vertex, normal or texture coordinate "
                                      "that does not exist");
                 const float* p = &attrib.vertices[3 * size_t(index.vertex_index)];
@@ -415,7 +415,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
         computeTangents(mesh);
         model.meshes.push_back(std::move(mesh));
     }
-    if (model.meshes.empty()) throw InputError(path.string() + ": the model has no triangles");
+    if (model.meshes.empty()) throw InputError(utf8(path) + ": the model has no triangles");
     // Faces whose usemtl names no material of the MTL files get the default (white) material.
     std::set<std::string> warned;
     for (const auto& [name, line] : checked.usemtl)
@@ -423,7 +423,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
             std::fprintf(
                 stderr,
                 "warning: %s:%d: material '%s' is in none of its MTL files; using the default material\n",
-                path.c_str(), line, name.c_str());
+                utf8(path).c_str(), line, name.c_str());
     return model;
 }
 

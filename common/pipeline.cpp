@@ -1,8 +1,6 @@
 // Pipeline cache persistence and graphics pipeline creation.
 #include "common/pipeline.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -55,7 +53,7 @@ PipelineCacheFile readPipelineCacheFile(const Device& device, std::string_view n
             why = error.what();
         }
         if (!why.empty()) {
-            warn("ignoring pipeline cache '" + file.path.string() + "': " + why);
+            warn("ignoring pipeline cache '" + utf8(file.path) + "': " + why);
             file.data.clear();
         }
     }
@@ -71,7 +69,7 @@ PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
         .pInitialData = file.data.data(),
     };
     if (vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle) != VK_SUCCESS) {
-        warn("the driver refused pipeline cache '" + cache.file.string() + "'; starting empty");
+        warn("the driver refused pipeline cache '" + utf8(cache.file) + "'; starting empty");
         info.initialDataSize = 0;
         info.pInitialData = nullptr;
         VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));
@@ -91,20 +89,19 @@ void savePipelineCache(const Device& device, const PipelineCache& cache) {
     // bytes go to a file of our own first, which then replaces the old one in one rename().
     std::error_code ec;
     std::filesystem::create_directories(cache.file.parent_path(), ec);
-    std::filesystem::path temporary = cache.file;
-    temporary += ".tmp" + std::to_string(getpid());
+    std::filesystem::path temporary = temporarySibling(cache.file);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out.write(data.data(), static_cast<std::streamsize>(data.size()));
         if (!out.flush()) {
-            warn("cannot write pipeline cache '" + temporary.string() + "'");
+            warn("cannot write pipeline cache '" + utf8(temporary) + "'");
             std::filesystem::remove(temporary, ec);
             return;
         }
     }
     std::filesystem::rename(temporary, cache.file, ec);
     if (ec) {
-        warn("cannot write pipeline cache '" + cache.file.string() + "': " + ec.message());
+        warn("cannot write pipeline cache '" + utf8(cache.file) + "': " + ec.message());
         std::filesystem::remove(temporary, ec);
     }
 }

@@ -237,14 +237,14 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
-    return parseScene(readInputFile(path), path.string(), path.parent_path());
+    return parseScene(readInputFile(path), utf8(path), path.parent_path());
 }
 
 std::string sceneToJson(const Scene& scene) {
     json root;
     root["models"] = json::array();
     for (const ModelInstance& m : scene.models) {
-        json model{{"file", m.file.string()},
+        json model{{"file", utf8(m.file)},
                    {"position", vec(m.transform.position)},
                    {"rotation", vec(m.transform.rotation)},
                    {"scale", vec(m.transform.scale)}};
@@ -311,8 +311,7 @@ Scene sceneFromOptions(const Options& options, ModelCache& models) {
     std::filesystem::path defaultScene = executableDir() / "scenes" / "default" / "scene.json";
     std::error_code ec;
     if (!std::filesystem::exists(defaultScene, ec))
-        throw Failure("the default scene '" + defaultScene.string() +
-                      "' is missing (is the build complete?)");
+        throw Failure("the default scene '" + utf8(defaultScene) + "' is missing (is the build complete?)");
     return loadSceneFile(defaultScene);
 }
 

@@ -2,7 +2,6 @@
 #include "common/screenshot.hpp"
 
 #include <stb_image_write.h>
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstring>
@@ -13,6 +12,7 @@
 #include "common/buffer.hpp"
 #include "common/check.hpp"
 #include "common/commands.hpp"
+#include "common/files.hpp"
 
 #include <glm/gtc/packing.hpp>
 
@@ -145,7 +145,7 @@ void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height
                     rgba[(size_t(y) * width + x) * 4 + size_t(firstChannel + c)];
         out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
     }
-    if (!out) throw Failure("cannot write '" + path.string() + "'");
+    if (!out) throw Failure("cannot write '" + utf8(path) + "'");
 }
 
 void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
@@ -159,16 +159,15 @@ void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExte
     for (size_t i = 0, n = size_t{extent.width} * extent.height; i < n; ++i)
         for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = texels[i * 4 + size_t(offsets[c])];
 
-    std::filesystem::path temporary = path;
-    temporary += ".tmp" + std::to_string(getpid());
-    if (!stbi_write_png(temporary.c_str(), static_cast<int>(extent.width), static_cast<int>(extent.height), 3,
-                        rgb.data(), static_cast<int>(extent.width * 3)))
-        throw Failure("cannot write screenshot '" + temporary.string() + "'");
+    std::filesystem::path temporary = temporarySibling(path);
+    if (!stbi_write_png(utf8(temporary).c_str(), static_cast<int>(extent.width),
+                        static_cast<int>(extent.height), 3, rgb.data(), static_cast<int>(extent.width * 3)))
+        throw Failure("cannot write screenshot '" + utf8(temporary) + "'");
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) {
         std::filesystem::remove(temporary, ec);
-        throw Failure("cannot write screenshot '" + path.string() + "'");
+        throw Failure("cannot write screenshot '" + utf8(path) + "'");
     }
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 
 namespace common {
 namespace {
@@ -35,9 +36,9 @@ VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLa
 
 Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such image file");
+    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(utf8(path) + ": no such image file");
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info(path.c_str(), &width, &height, &channels)) {
+    if (!stbi_info(utf8(path).c_str(), &width, &height, &channels)) {
         // stb_image refuses a PNG header of more than 2^30 bytes of pixels, then tries the other
         // formats and reports "unknown image type": read the size from the PNG header ourselves.
         unsigned char header[24] = {};
@@ -47,19 +48,18 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
                 return uint32_t(b[0]) << 24 | b[1] << 16 | b[2] << 8 | b[3];
             };
             if (be32(header + 16) > maxDimension || be32(header + 20) > maxDimension)
-                throw InputError(path.string() + ": image size " + std::to_string(be32(header + 16)) + "x" +
+                throw InputError(utf8(path) + ": image size " + std::to_string(be32(header + 16)) + "x" +
                                  std::to_string(be32(header + 20)) + " exceeds the device limit of " +
                                  std::to_string(maxDimension));
         }
-        throw InputError(path.string() + ": not a readable image (" + stbi_failure_reason() + ")");
+        throw InputError(utf8(path) + ": not a readable image (" + stbi_failure_reason() + ")");
     }
     // Checked before decoding: a header that claims 100000 x 100000 must not allocate 40 GB.
     if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
-        throw InputError(path.string() + ": image size " + std::to_string(width) + "x" +
-                         std::to_string(height) + " exceeds the device limit of " +
-                         std::to_string(maxDimension));
-    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
-    if (!data) throw InputError(path.string() + ": corrupt image (" + stbi_failure_reason() + ")");
+        throw InputError(utf8(path) + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                         " exceeds the device limit of " + std::to_string(maxDimension));
+    stbi_uc* data = stbi_load(utf8(path).c_str(), &width, &height, &channels, 4);
+    if (!data) throw InputError(utf8(path) + ": corrupt image (" + stbi_failure_reason() + ")");
     Pixels pixels{uint32_t(width), uint32_t(height), {}};
     pixels.rgba.assign(data, data + size_t(width) * size_t(height) * 4);
     stbi_image_free(data);

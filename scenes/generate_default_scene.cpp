@@ -19,6 +19,7 @@
 
 #include <glm/glm.hpp>
 
+#include "common/files.hpp"
 #include "common/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -75,9 +76,9 @@ struct Image {
 };
 
 void writePng(const fs::path& path, const Image& image) {
-    if (!stbi_write_png(path.c_str(), image.size, image.size, image.channels, image.pixels.data(),
-                        image.size * image.channels))
-        throw std::runtime_error("cannot write " + path.string());
+    if (!stbi_write_png(common::utf8(path).c_str(), image.size, image.size, image.channels,
+                        image.pixels.data(), image.size * image.channels))
+        throw std::runtime_error("cannot write " + common::utf8(path));
 }
 
 // A tangent-space normal map from a height field (OpenGL convention: green points up the image).
@@ -299,14 +300,14 @@ struct Obj {
                 out << "\n";
             }
         }
-        if (!out) throw std::runtime_error("cannot write " + path.string());
+        if (!out) throw std::runtime_error("cannot write " + common::utf8(path));
     }
 };
 
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;
-    if (!out) throw std::runtime_error("cannot write " + path.string());
+    if (!out) throw std::runtime_error("cannot write " + common::utf8(path));
 }
 
 }  // namespace
