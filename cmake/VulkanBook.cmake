@@ -18,10 +18,15 @@ set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
 
 option(VKBOOK_WERROR "Treat compiler warnings as errors" ON)
 
+include(${CMAKE_CURRENT_LIST_DIR}/Dependencies.cmake)
+
 # -DVKBOOK_SANITIZE=ON: AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer on
 # every target, the first report ending the program. scripts/setup.sh test builds this into
 # build-sanitize/ and runs the headless tests there (docs/reliability.md).
 option(VKBOOK_SANITIZE "Build with AddressSanitizer, LeakSanitizer and UndefinedBehaviorSanitizer" OFF)
+if(VKBOOK_SANITIZE AND (MSVC OR WIN32))
+    message(FATAL_ERROR "VKBOOK_SANITIZE is for GCC or Clang on Linux (AddressSanitizer, LeakSanitizer, UBSan)")
+endif()
 if(VKBOOK_SANITIZE)
     add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
     add_link_options(-fsanitize=address,undefined)
@@ -30,21 +35,25 @@ if(VKBOOK_SANITIZE)
     link_libraries(vkbook_keep_libraries_loaded)
 endif()
 
-# All dependencies come from the system (Debian packages); nothing is downloaded.
-find_package(Vulkan 1.3 REQUIRED COMPONENTS glslangValidator)
-find_package(glfw3 3.3 REQUIRED)
-find_package(glm REQUIRED)
-find_package(tinyobjloader REQUIRED)
-find_package(nlohmann_json 3 REQUIRED)
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # Debian's libstb-dev ships no CMake config
-
 # vkbook_warnings(target): the warning set every target of ours builds with.
 function(vkbook_warnings target)
-    # Vulkan structs are filled with C++20 designated initializers, which zero every member they
-    # leave out; that is the point, so GCC's -Wmissing-field-initializers is off.
+    if(MSVC)
+        # /utf-8: the sources are UTF-8; /permissive-: standard C++; 4324: padding by alignas.
+        target_compile_options(${target} PRIVATE /W4 /utf-8 /permissive- /wd4324)
+        target_compile_definitions(${target} PRIVATE NOMINMAX WIN32_LEAN_AND_MEAN _CRT_SECURE_NO_WARNINGS)
+        if(VKBOOK_WERROR)
+            target_compile_options(${target} PRIVATE /WX)
+        endif()
+        return()
+    endif()
+    # GCC and Clang (MinGW-w64 included). Vulkan structs are filled with C++20 designated
+    # initializers, which zero every member they leave out; that is the point, so
+    # -Wmissing-field-initializers is off.
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                              -Wno-sign-conversion -Wno-missing-field-initializers)
+    if(WIN32)
+        target_compile_definitions(${target} PRIVATE NOMINMAX WIN32_LEAN_AND_MEAN)
+    endif()
     if(VKBOOK_WERROR)
         target_compile_options(${target} PRIVATE -Werror)
     endif()

@@ -6,6 +6,11 @@
 #include <cstdio>
 #include <string_view>
 
+#if defined(_WIN32)
+#include <fcntl.h>
+#include <io.h>
+#endif
+
 #include "common/check.hpp"
 #include "common/files.hpp"
 #include "common/instance.hpp"
@@ -220,6 +225,11 @@ double millisecondsSinceStart() {
 int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
                const std::function<void(const Options&)>& chapter) {
     const char* name = info.name;
+#if defined(_WIN32)
+    // "\n", not "\r\n": the same bytes on stdout and stderr as on the other systems.
+    _setmode(_fileno(stdout), _O_BINARY);
+    _setmode(_fileno(stderr), _O_BINARY);
+#endif
     try {
         Options options = parseCommandLine(argc, argv, info);
         if (options.help) {

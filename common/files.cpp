@@ -125,6 +125,10 @@ VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
 }
 
 std::filesystem::path cacheDir() {
+#if defined(_WIN32)
+    if (const wchar_t* local = _wgetenv(L"LOCALAPPDATA"); local && *local)
+        return std::filesystem::path(local) / "vulkan-book-cpp";
+#endif
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
         return std::filesystem::path(xdg) / "vulkan-book-cpp";
     if (const char* home = std::getenv("HOME"); home && *home)

@@ -51,7 +51,8 @@ std::vector<char> readSpirv(std::string_view name);
 // readSpirv, then vkCreateShaderModule (written out in chapter-06, which introduces it).
 VkShaderModule loadShaderModule(const Device& device, std::string_view name);
 
-// $XDG_CACHE_HOME/vulkan-book-cpp or ~/.cache/vulkan-book-cpp; empty when neither is set.
+// %LOCALAPPDATA%\vulkan-book-cpp on Windows; elsewhere $XDG_CACHE_HOME/vulkan-book-cpp or
+// ~/.cache/vulkan-book-cpp; empty when none of them is set.
 std::filesystem::path cacheDir();
 
 }  // namespace common

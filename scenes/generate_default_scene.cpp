@@ -413,7 +413,7 @@ int main(int argc, char** argv) {
 
         size_t triangles =
             courtyard.triangles() + 14 * sphere.triangles() + grille.triangles() + cube.triangles();
-        std::printf("default scene: %zu triangles in %s\n", triangles, dir.c_str());
+        std::printf("default scene: %zu triangles in %s\n", triangles, common::utf8(dir).c_str());
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "generate_default_scene: %s\n", error.what());

@@ -4,7 +4,10 @@
 #   scripts/setup.sh run [chapter-NN] [options...]   install, build (Release), run a chapter
 #   scripts/setup.sh test                            install, build (Release), run every test;
 #                                                    then build with the sanitizers and run the
-#                                                    headless tests again (docs/reliability.md)
+#                                                    headless tests again (docs/reliability.md);
+#                                                    then build the Windows .exe files with
+#                                                    MinGW-w64 and test them under Wine
+#                                                    (scripts/windows-cross.sh)
 #
 # Installs only the Debian packages that are missing (with sudo when not root), configures
 # build/ in Release and builds it. `run` opens a window when a display is available, otherwise
@@ -84,6 +87,9 @@ case "$command" in
         started=$SECONDS
         ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs" -E "$sanitize_skip"
         echo "setup: sanitizer test stage took $((SECONDS - started)) s"
+        started=$SECONDS
+        "$root/scripts/windows-cross.sh" test
+        echo "setup: Windows stage (packages, sources, build, tests under Wine) took $((SECONDS - started)) s"
         ;;
     *)
         echo "usage: scripts/setup.sh run [chapter-NN] [options...] | scripts/setup.sh test" >&2

@@ -3,7 +3,7 @@
 # a documented fallback with one warning line; never a crash, hang or validation message.
 # The inputs are written at test time by tools/hostile_inputs.cpp (tests/data/README.md lists them).
 add_executable(hostile_inputs tools/hostile_inputs.cpp)
-target_link_libraries(hostile_inputs PRIVATE PkgConfig::stb)
+target_link_libraries(hostile_inputs PRIVATE vkbook::stb)
 vkbook_warnings(hostile_inputs)
 set_target_properties(hostile_inputs PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/bin)
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/files.hpp"
 #include "common/screenshot.hpp"
 
 // --check-output: every value of the light output must be a finite, non-negative number.
@@ -86,5 +87,5 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
         if (image == &scenePass.gbuffer.albedo)  // its alpha: 1 where a surface is
             common::writePfm(directory / "coverage.pfm", extent.width, extent.height, texels, 1, 3);
     }
-    std::printf("chapter-15: wrote %s\n", directory.c_str());
+    std::printf("chapter-15: wrote %s\n", common::utf8(directory).c_str());
 }

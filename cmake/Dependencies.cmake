@@ -1,0 +1,107 @@
+# The libraries every chapter uses, found the same way on every system: a system or SDK package
+# first (Debian's -dev packages, vcpkg, the LunarG SDK, Homebrew), otherwise CMake fetches the
+# pinned upstream release itself (FetchContent), so a reader needs no package manager. Nothing is
+# vendored into the repository.
+#
+# Offline builds point FetchContent at local sources instead of downloading, e.g.
+#   -DFETCHCONTENT_SOURCE_DIR_GLFW3=/src/glfw3-3.3.8
+# which is how the windows-cross preset builds from Debian's source packages
+# (scripts/windows-cross.sh).
+#
+# After this file, these targets exist whichever way they came: glfw, glm::glm,
+# tinyobjloader::tinyobjloader, nlohmann_json::nlohmann_json, vkbook::stb (stb_image,
+# stb_image_write, stb_image_resize, with their implementations) and Vulkan::Vulkan with
+# Vulkan::glslangValidator (the Vulkan SDK on Windows and macOS; not fetched).
+include_guard(GLOBAL)
+include(FetchContent)
+
+find_package(Vulkan 1.3 REQUIRED COMPONENTS glslangValidator)
+
+# The same versions as Debian 12's packages, which the Linux build uses.
+set(GLFW_BUILD_EXAMPLES OFF CACHE BOOL "")
+set(GLFW_BUILD_TESTS OFF CACHE BOOL "")
+set(GLFW_BUILD_DOCS OFF CACHE BOOL "")
+set(GLFW_INSTALL OFF CACHE BOOL "")
+set(JSON_BuildTests OFF CACHE BOOL "")
+set(JSON_Install OFF CACHE BOOL "")
+set(CMAKE_POLICY_DEFAULT_CMP0063 NEW)  # tinyobjloader's CMakeLists predates it
+if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.24)
+    FetchContent_Declare(glfw3
+        GIT_REPOSITORY https://github.com/glfw/glfw.git
+        GIT_TAG 3.3.8
+        FIND_PACKAGE_ARGS 3.3)
+    FetchContent_Declare(glm
+        GIT_REPOSITORY https://github.com/g-truc/glm.git
+        GIT_TAG 0.9.9.8
+        FIND_PACKAGE_ARGS)
+    FetchContent_Declare(tinyobjloader
+        GIT_REPOSITORY https://github.com/tinyobjloader/tinyobjloader.git
+        GIT_TAG v2.0.0rc10
+        FIND_PACKAGE_ARGS)
+    FetchContent_Declare(nlohmann_json
+        GIT_REPOSITORY https://github.com/nlohmann/json.git
+        GIT_TAG v3.11.2
+        FIND_PACKAGE_ARGS 3)
+    FetchContent_MakeAvailable(glfw3 glm tinyobjloader nlohmann_json)
+else()
+    # CMake before 3.24 cannot try a package first: the packages must be installed (Ubuntu 22.04:
+    # apt-get install libglfw3-dev libglm-dev libtinyobjloader-dev nlohmann-json3-dev).
+    find_package(glfw3 3.3 REQUIRED)
+    find_package(glm REQUIRED)
+    find_package(tinyobjloader REQUIRED)
+    find_package(nlohmann_json 3 REQUIRED)
+endif()
+# Debian's tinyobjloader source builds its test programs with the library: not here.
+if(tinyobjloader_SOURCE_DIR AND EXISTS ${tinyobjloader_SOURCE_DIR}/tests/CMakeLists.txt)
+    get_property(tinyobjloader_tests DIRECTORY ${tinyobjloader_SOURCE_DIR}/tests PROPERTY BUILDSYSTEM_TARGETS)
+    if(tinyobjloader_tests)
+        set_target_properties(${tinyobjloader_tests} PROPERTIES EXCLUDE_FROM_ALL ON)
+    endif()
+endif()
+# A fetched library's headers are included as system headers, as an installed package's are: our
+# warnings (and -Werror) are for our code, not for theirs.
+foreach(target glfw glm tinyobjloader nlohmann_json)
+    if(TARGET ${target})
+        get_target_property(aliased ${target} ALIASED_TARGET)
+        if(aliased)
+            set(target ${aliased})
+        endif()
+        get_target_property(imported ${target} IMPORTED)
+        get_target_property(includes ${target} INTERFACE_INCLUDE_DIRECTORIES)
+        if(NOT imported AND includes)
+            set_property(TARGET ${target} APPEND PROPERTY INTERFACE_SYSTEM_INCLUDE_DIRECTORIES ${includes})
+        endif()
+    endif()
+endforeach()
+# The names a package's CMake config gives, also for the targets a fetched source defines.
+if(NOT TARGET glm::glm)
+    add_library(glm::glm ALIAS glm)
+endif()
+if(NOT TARGET tinyobjloader::tinyobjloader)
+    add_library(tinyobjloader::tinyobjloader ALIAS tinyobjloader)
+endif()
+
+# stb has no CMake package. Debian's libstb-dev is found through pkg-config and brings the
+# implementations compiled (libstb.so); anywhere else the headers are fetched (the commit of
+# Debian's snapshot) and compiled here, once, by stb_implementation.cpp.
+find_package(PkgConfig QUIET)
+if(PKG_CONFIG_FOUND)
+    pkg_check_modules(stb QUIET IMPORTED_TARGET stb)
+endif()
+if(TARGET PkgConfig::stb)
+    add_library(vkbook_stb INTERFACE)
+    target_link_libraries(vkbook_stb INTERFACE PkgConfig::stb)
+else()
+    FetchContent_Declare(stb
+        GIT_REPOSITORY https://github.com/nothings/stb.git
+        GIT_TAG 8b5f1f37b5b75829fc72d38e7b5d4bcbf8a26d55)
+    FetchContent_GetProperties(stb)
+    if(NOT stb_POPULATED)
+        FetchContent_Populate(stb)
+    endif()
+    add_library(vkbook_stb STATIC ${CMAKE_CURRENT_LIST_DIR}/stb_implementation.cpp)
+    target_include_directories(vkbook_stb SYSTEM PUBLIC ${stb_SOURCE_DIR})
+    # File names given to stb are UTF-8 (common::utf8); on Windows stb converts them itself.
+    target_compile_definitions(vkbook_stb PRIVATE STBI_WINDOWS_UTF8 STBIW_WINDOWS_UTF8)
+endif()
+add_library(vkbook::stb ALIAS vkbook_stb)
