@@ -13,6 +13,12 @@ endif()
 # Every chapter lands in <build>/bin with its shaders in <build>/bin/shaders/<chapter>/, so an
 # executable finds its data next to itself, whatever the working directory.
 set(CMAKE_RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+# Multi-configuration generators (Visual Studio, Xcode) would put them in bin/Release/ and so on,
+# away from the shaders and the scene: every configuration goes to bin/ too.
+foreach(config IN LISTS CMAKE_CONFIGURATION_TYPES)
+    string(TOUPPER ${config} config)
+    set(CMAKE_RUNTIME_OUTPUT_DIRECTORY_${config} ${CMAKE_BINARY_DIR}/bin)
+endforeach()
 cmake_path(GET CMAKE_CURRENT_LIST_DIR PARENT_PATH VKBOOK_ROOT)
 set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
 
