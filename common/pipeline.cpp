@@ -1,10 +1,12 @@
 // Pipeline cache persistence and graphics pipeline creation.
 #include "common/pipeline.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "common/check.hpp"
 #include "common/files.hpp"
@@ -99,7 +101,14 @@ void savePipelineCache(const Device& device, const PipelineCache& cache) {
             return;
         }
     }
-    std::filesystem::rename(temporary, cache.file, ec);
+    // On Windows a file cannot be replaced while another process has it open: a second run of
+    // the same chapter may be reading the cache right now. That lasts milliseconds; try again a
+    // few times before giving up (on Linux and macOS the first rename succeeds).
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        std::filesystem::rename(temporary, cache.file, ec);
+        if (!ec) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     if (ec) {
         warn("cannot write pipeline cache '" + utf8(cache.file) + "': " + ec.message());
         std::filesystem::remove(temporary, ec);
