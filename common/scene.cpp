@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -83,6 +84,20 @@ private:
 };
 
 constexpr float kHuge = 1e30f;  // finite, but nothing a scene can sensibly exceed
+// A light's radiance is colour x intensity. Each may be large, but the shading multiplies their
+// product by 1/d^2 (d down to 1 cm), by the BRDF's peak and sums it over lights: beyond 1e20 that
+// can exceed the largest 32-bit float (3.4e38) and turn pixels infinite.
+constexpr double kMaxRadiance = 1e20;
+
+void checkRadiance(const Reader& r, const std::string& where, glm::vec3 color, float intensity) {
+    double radiance = double(std::max({color.r, color.g, color.b})) * double(intensity);
+    if (radiance > kMaxRadiance) {
+        char text[64];
+        std::snprintf(text, sizeof(text), "%g", radiance);
+        r.fail(where, std::string("color x intensity is ") + text +
+                          ", more than 1e20: the shading would overflow 32-bit floats");
+    }
+}
 
 Transform readTransform(const Reader& r, const json& model, const std::string& where) {
     Transform t;
@@ -192,6 +207,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         if (a.contains("color")) scene.ambientColor = r.vector<3>(a["color"], "ambient.color", 0.0f, kHuge);
         if (a.contains("intensity"))
             scene.ambientIntensity = r.number(a["intensity"], "ambient.intensity", 0.0f, kHuge);
+        checkRadiance(r, "ambient", scene.ambientColor, scene.ambientIntensity);
     }
 
     if (root.contains("lights")) {
@@ -223,6 +239,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (l.contains("color")) light.color = r.vector<3>(l["color"], where + ".color", 0.0f, kHuge);
             if (l.contains("intensity"))
                 light.intensity = r.number(l["intensity"], where + ".intensity", 0.0f, kHuge);
+            checkRadiance(r, where, light.color, light.intensity);
             if (l.contains("marker")) {
                 if (light.type != Light::Type::Point)
                     r.fail(where + ".marker", "only a point light has a marker");

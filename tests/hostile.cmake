@@ -125,6 +125,11 @@ hostile_test(json-negative-ambient 15 2 "${H}/scene_negative_ambient.json: ambie
     --scene ${H}/scene_negative_ambient.json)
 hostile_test(json-negative-color 15 2 "${H}/scene_negative_color.json: lights\\[0\\].color\\[0\\]: must be between 0"
     --scene ${H}/scene_negative_color.json)
+# Colour and intensity each in range, their product not: refused before it renders infinite pixels.
+hostile_test(json-radiance-overflow 15 2 "${H}/scene_radiance_overflow.json: lights\\[0\\]: color x intensity is 1e\\+40, more than 1e20: the shading would overflow 32-bit floats"
+    --scene ${H}/scene_radiance_overflow.json)
+hostile_test(json-ambient-overflow 15 2 "${H}/scene_ambient_overflow.json: ambient: color x intensity is 1e\\+50, more than 1e20"
+    --scene ${H}/scene_ambient_overflow.json)
 hostile_test(json-no-lights 15 0 " 0 lights" --scene ${H}/scene_no_lights.json)
 hostile_test(json-no-models 15 2 ".*no_models.json: models: expected a non-empty array" --scene ${DATA}/no_models.json)
 hostile_test(json-deep-nesting 15 2 "${H}/scene_deep.json: models\\[0\\]: expected an object" --scene ${H}/scene_deep.json)

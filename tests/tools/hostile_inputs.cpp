@@ -238,6 +238,12 @@ int main(int argc, char** argv) {
         write("scene_negative_color.json",
               scene(R"("lights": [{"type": "point", "position": [0, 1, 0], "color": [-1, 0, 0]}])"));
         write("scene_no_lights.json", scene(R"("lights": [])"));
+        write(
+            "scene_radiance_overflow.json",
+            scene(
+                R"("lights": [{"type": "point", "position": [0, 1, 0], "color": [1e20, 1, 1], "intensity": 1e20}])"));
+        write("scene_ambient_overflow.json",
+              scene(R"("ambient": {"color": [1, 1, 1e25], "intensity": 1e25})"));
         write("scene_deep.json",
               R"({"models": )" + std::string(100000, '[') + std::string(100000, ']') + "}");
         write("scene_lights_100000.json", manyLights(100000));
