@@ -1,5 +1,5 @@
 // libFuzzer target: OBJ + MTL text through common::loadObjModel (tinyobjloader, our number checks,
-// de-duplication, generated normals, computeTangents). Reliability work (issue 8), run by
+// de-duplication, generated normals, computeTangents). Run by
 // tests/fuzz/run.sh. The one acceptable failure is an InputError with a one-line message; any other
 // exception, crash, sanitizer report or a model breaking ModelData's promises aborts the run.
 //

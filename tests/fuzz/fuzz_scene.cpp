@@ -1,6 +1,6 @@
 // libFuzzer target: scene JSON through common::parseScene (what loadSceneFile does after reading
 // the file), then the round trip sceneToJson -> parseScene, which must give the same scene.
-// Reliability work (issue 8), run by tests/fuzz/run.sh. The one acceptable failure is an
+// Run by tests/fuzz/run.sh. The one acceptable failure is an
 // InputError with a one-line message; anything else aborts the run. The models a scene names are
 // not read (parseScene never opens them).
 #include <cstdint>
