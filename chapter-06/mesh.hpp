@@ -1,6 +1,8 @@
 // chapter-06: meshes -- the book's VertexBufferStructure (how the pipeline reads a vertex),
 // MeshData (a mesh on the CPU) and VulkanMesh with loadMeshes (the same mesh in device-local
-// buffers, copied there through host-visible staging buffers).
+// buffers, copied there through host-visible staging buffers). Deliberate repetition: later
+// chapters upload through common/buffer.cpp (beginStaging, uploadStaged, endStaging), the same
+// calls wrapped.
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -63,7 +63,8 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView
         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     common::pipelineBarrier(cmd, &init, 1);
 
-    // One colour attachment, no depth; not loaded: the triangle covers every pixel.
+    // One colour attachment, no depth; not loaded: the triangle covers every pixel. (Deliberate
+    // repetition: common::beginFullscreen does the same for chapter-15's light pass.)
     VkRenderingAttachmentInfo output{
         .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
         .imageView = pass.output.view,
