@@ -40,12 +40,15 @@ void writeAttachments(const common::Device& device, LightPass& pass, const commo
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GBuffer& gbuffer, const GBufferLayout& layout, LightPassKind kind,
-                          uint32_t framesInFlight, uint32_t lightCapacity) {
+                          uint32_t framesInFlight, uint32_t lightCapacity, VkDescriptorSetLayout tileLists) {
     LightPass pass;
     pass.kind = kind;
+    pass.tileLists = tileLists;
     pass.output = createOutput(device, extent, kind);
+    // Beyond the book: with tile lists, the culling passes (compute) read these sets too.
     VkShaderStageFlags stage =
-        kind == LightPassKind::Compute ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+        kind == LightPassKind::Compute || tileLists ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+    if (kind == LightPassKind::Fragment) stage |= VK_SHADER_STAGE_FRAGMENT_BIT;
     std::vector<VkDescriptorSetLayoutBinding> attachmentBindings;
     size_t colorCount = common::colorAttachments(gbuffer).size();
     for (uint32_t i = 0; i <= colorCount; ++i)  // the colour attachments, then depth
@@ -98,9 +101,12 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         createComputeLightPipeline(device, cache, pass, layout);
         return pass;
     }
+    std::vector<VkDescriptorSetLayout> sets{pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout};
+    if (tileLists) sets.push_back(tileLists);  // set 3: the tile lists (beyond/light_culling.cpp)
     pass.pipeline = common::createFullscreenPipeline(
-        device, cache, (std::string("chapter-15/light") + layout.shaderSuffix + ".frag").c_str(),
-        kLightOutputFormat, {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout}, sizeof(LightView));
+        device, cache,
+        (std::string("chapter-15/light") + layout.shaderSuffix + (tileLists ? "-tiled" : "") + ".frag").c_str(),
+        kLightOutputFormat, sets, sizeof(LightView));
     return pass;
 }
 
@@ -124,11 +130,10 @@ void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight
 }
 
 //> record-light
-void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view) {
-    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet,
-                              pass.outputSet};
+void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
+                     VkDescriptorSet tileLists) {
     if (pass.kind == LightPassKind::Compute) {
-        recordComputeLightPass(cmd, pass, sets, view);
+        recordComputeLightPass(cmd, pass, frame, view, tileLists);
         return;
     }
     // The output to ATTACHMENT_OPTIMAL once the previous frame's post pass has sampled it, the
@@ -142,8 +147,10 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
 
     common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0,
-                            nullptr);  // sets 0-2: the fourth is the compute form's
+    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet,
+                              tileLists};  // set 3: beyond the book, --light-culling tiled only
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, pass.tileLists ? 4 : 3,
+                            sets, 0, nullptr);
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);

@@ -49,16 +49,22 @@ struct LightPass {
     VkDescriptorSet outputSet = VK_NULL_HANDLE;
     VkPipelineLayout computeLayout = VK_NULL_HANDLE;
     VkPipeline computePipeline = VK_NULL_HANDLE;
+    // --light-culling tiled (beyond/light_culling.cpp): the tile lists' set layout, else null.
+    VkDescriptorSetLayout tileLists = VK_NULL_HANDLE;
 };
 
-// `lightCapacity`: the scene's number of lights (the buffers are sized from it).
+// `lightCapacity`: the scene's number of lights (the buffers are sized from it). `tileLists`:
+// beyond the book, the tile lists' set layout for --light-culling tiled, else VK_NULL_HANDLE.
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GBuffer& gbuffer, const GBufferLayout& layout, LightPassKind kind,
-                          uint32_t framesInFlight, uint32_t lightCapacity);
+                          uint32_t framesInFlight, uint32_t lightCapacity,
+                          VkDescriptorSetLayout tileLists = VK_NULL_HANDLE);
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
 // Writes this frame's lights and scene info (lights.size() <= lightCapacity).
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
                   const ShaderSceneInfo& scene);
-void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view);
+// `tileLists`: this frame's tile lists (--light-culling tiled), else VK_NULL_HANDLE.
+void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
+                     VkDescriptorSet tileLists = VK_NULL_HANDLE);
 void destroyLightPass(const common::Device& device, LightPass& pass);

@@ -8,8 +8,8 @@
 //     ambient light, into an R32G32B32A32_SFLOAT image;
 //   post pass (common/post_pass.cpp): into the presentation image, FXAA optional.
 // What goes beyond the book -- the reference and compact G-buffer layouts with reversed-Z, the
-// light pass as a compute dispatch, --check-output and --dump -- is in beyond/, and enters this
-// file only where an option selects it.
+// light pass as a compute dispatch, --check-output and --dump, light ranges and tiled light
+// culling -- is in beyond/, and enters this file only where an option selects it.
 #include <vulkan/vulkan.h>
 
 #include <cmath>
@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "beyond/gbuffer_layouts.hpp"
+#include "beyond/light_culling.hpp"
 #include "beyond/output_dump.hpp"
 #include "common/benchmark.hpp"
 #include "common/camera.hpp"
@@ -52,7 +53,16 @@ const common::ChapterInfo kChapter{
       "light pass: the book's full-screen triangle, or a compute dispatch (the same shading)"},
      {"dump",
       {},
-      "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"}},
+      "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"},
+     {"light-culling",
+      {"none", "tiled"},
+      "none: every pixel loops over every light (the book's); tiled: over the lights whose range reaches "
+      "its 16x16 tile, listed by compute passes each frame"},
+     {"light-cutoff",
+      {},
+      "give each point light without a range the distance where its irradiance falls to this value "
+      "(a positive number)"},
+     {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"}},
 };
 
 //> light-controls
@@ -114,7 +124,7 @@ std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
     for (const common::Light& light : scene.lights) {
         bool directional = light.type == common::Light::Type::Directional;
         lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
-                          light.intensity, light.color});
+                          light.intensity, light.color, directional ? 0.0f : light.range});
     }
     return lights;
 }
@@ -124,6 +134,8 @@ void run(const common::Options& options) {
     //> setup
     common::ModelCache models;
     common::Scene scene = common::sceneFromOptions(options, models);
+    // Beyond the book: light ranges from --light-cutoff, tiled culling, the camera turning.
+    LightOptions lightOptions = readLightOptions(options, scene);
 
     common::Target target = common::openTarget(options, "chapter-15: deferred rendering II, PBR");
     common::Instance instance =
@@ -155,9 +167,14 @@ void run(const common::Options& options) {
                                           options.framesInFlight, layout);
     LightPassKind lightKind =
         LightPassKind(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0);
+    LightCullingPass culling;  // beyond the book: --light-culling tiled
+    if (lightOptions.culling == LightCulling::Tiled)
+        culling = createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
+                                     layout, gpuScene.boundsMin, gpuScene.boundsMax);
     LightPass lightPass =
         createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, layout, lightKind,
-                        options.framesInFlight, uint32_t(scene.lights.size()));
+                        options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
+    if (culling.setLayout) createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, layout);
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 
@@ -170,14 +187,18 @@ void run(const common::Options& options) {
                         .reversedZ = layout.reversedZ ? 1 : 0};
     bool fxaa = options.switches.count("fxaa") != 0;
 
-    // --frames, --resize, --benchmark (the three passes timed), --screenshot.
-    common::RunControl run = common::createRunControl(options, device, {"scene", "light", "post"});
+    // --frames, --resize, --benchmark (each pass timed), --screenshot.
+    bool tiled = lightOptions.culling == LightCulling::Tiled;
+    common::RunControl run = common::createRunControl(
+        options, device,
+        tiled ? std::vector<std::string>{"scene", "cull", "light", "post"} : std::vector<std::string>{"scene", "light", "post"});
     //< setup
 
     auto recreateTarget = [&] {
         if (!common::recreateTargetImages(target, device)) return false;
         resizeScenePass(device, scenePass, target.extent);
         resizeLightPass(device, lightPass, target.extent, scenePass.gbuffer);
+        if (tiled) resizeLightCulling(device, culling, target.extent);
         common::resizePostPass(device, postPass, lightPass.output);
         return true;
     };
@@ -201,6 +222,7 @@ void run(const common::Options& options) {
                 lightView.view = (lightView.view + 1) % int(kChapter.views.size());
             if (common::pressedOnce(target.window, fxaaKey)) fxaa = !fxaa;
         }
+        camera.yaw += lightOptions.orbitDegrees;  // --orbit (beyond the book): 0 unless asked
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
         common::collectGpuTimes(run, device, slot);
@@ -222,20 +244,27 @@ void run(const common::Options& options) {
         lightView.clipToCameraRelative = glm::inverse(projection.matrix * glm::mat4(glm::mat3(view)));
         lightView.near = projection.near;
         lightView.far = projection.far;
-        updateLights(lightPass, slot, shaderLights(scene),
-                     {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
+        std::vector<ShaderLight> lights = shaderLights(scene);
+        uint32_t unbounded = tiled ? putUnboundedFirst(lights) : 0u;  // beyond the book: tiled culling's order
+        updateLights(lightPass, slot, lights, {camera.position, scene.ambientIntensity, scene.ambientColor, 0u, unbounded});
+        if (tiled) updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near);
 
         VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
         common::timeFrameStart(run, sync.commandBuffer, slot, frame);
+        uint32_t pass = 0;
         recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
-        common::timePassEnd(run, sync.commandBuffer, slot, 0);
-        recordLightPass(sync.commandBuffer, lightPass, slot, lightView);
-        common::timePassEnd(run, sync.commandBuffer, slot, 1);
+        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        if (tiled) {  // beyond the book: this frame's tile lists, from this frame's G-buffer
+            recordLightCulling(sync.commandBuffer, culling, lightPass, slot, lightView);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        }
+        recordLightPass(sync.commandBuffer, lightPass, slot, lightView, tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
+        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
-        common::timePassEnd(run, sync.commandBuffer, slot, 2);
+        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -275,6 +304,7 @@ void run(const common::Options& options) {
         std::printf("chapter-15: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
                     lightControls.sunAngle, p.x, p.y, p.z);
     }
+    if (tiled) reportLightCulling(culling);
     // Beyond the book: the output read back (beyond/output_dump.cpp).
     if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
     if (options.values.count("dump"))
@@ -285,6 +315,7 @@ void run(const common::Options& options) {
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);
+    if (tiled) destroyLightCulling(device, culling);
     destroyScenePass(device, scenePass);
     common::destroyPipelineCache(device, pipelineCache);
     common::destroyGpuScene(device, gpuScene);

@@ -218,7 +218,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         for (size_t i = 0; i < root["lights"].size(); ++i) {
             const json& l = root["lights"][i];
             std::string where = "lights[" + std::to_string(i) + "]";
-            r.onlyKeys(l, where, {"type", "position", "direction", "color", "intensity", "marker"});
+            r.onlyKeys(l, where, {"type", "position", "direction", "color", "intensity", "marker", "range"});
             Light light;
             std::string type = l.contains("type") ? r.string(l["type"], where + ".type") : "";
             if (type == "directional") {
@@ -240,6 +240,11 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (l.contains("intensity"))
                 light.intensity = r.number(l["intensity"], where + ".intensity", 0.0f, kHuge);
             checkRadiance(r, where, light.color, light.intensity);
+            if (l.contains("range")) {
+                if (light.type != Light::Type::Point) r.fail(where + ".range", "only a point light has a range");
+                light.range = r.number(l["range"], where + ".range", 0.0f, kHuge);
+                if (!(light.range > 0.0f)) r.fail(where + ".range", "must be greater than 0");
+            }
             if (l.contains("marker")) {
                 if (light.type != Light::Type::Point)
                     r.fail(where + ".marker", "only a point light has a marker");
@@ -294,6 +299,7 @@ std::string sceneToJson(const Scene& scene) {
             light["type"] = "point";
             light["position"] = vec(l.position);
             if (l.marker >= 0) light["marker"] = l.marker;
+            if (l.range > 0.0f) light["range"] = l.range;
         }
         root["lights"].push_back(light);
     }

@@ -61,6 +61,10 @@ struct Light {
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
     int marker = -1;  // point lights: index of the model that marks the light and moves with it
+    // Point lights, beyond the book: how far the light reaches, in scene units ("range"); its
+    // falloff is windowed to reach zero there (pbr.glsl's rangeWindow). 0: no range, the book's
+    // unbounded inverse-square falloff.
+    float range = 0.0f;
     bool operator==(const Light&) const = default;
 };
 
@@ -74,7 +78,8 @@ struct Scene {
 };
 
 // What a scene file may hold. Every model is a draw call recorded each frame, every light is shaded
-// at every pixel (no light culling): 100,000 of each still renders (tests/hostile.cmake), and the
+// at every pixel unless culled (chapter-15 --light-culling tiled): 100,000 of each still renders
+// (tests/hostile.cmake), and the
 // lights buffer (32 bytes a light) stays far below the smallest maxStorageBufferRange (128 MiB).
 inline constexpr size_t kMaxSceneModels = 100000;
 inline constexpr size_t kMaxSceneLights = 100000;

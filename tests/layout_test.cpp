@@ -1,6 +1,6 @@
 // layout_test SHADER.spv: C++ and GLSL agree on the layout of every struct chapter-15 shares with
 // its shaders. C++ fills two ShaderLights, a ShaderSceneInfo, two ShaderMaterials, a
-// CameraUniform and a DrawConstants (in buffers of the layouts the chapter uses) and a LightView
+// CameraUniform, a DrawConstants and a CullView (in buffers of the layouts the chapter uses) and a LightView
 // (as push constants) with distinct values; a compute shader that includes the same
 // gpu_types.glsl as the chapter reads them and writes each field back; every field must come back
 // as written. A wrong size or offset on either side puts some other field's value there. Exit 0
@@ -24,16 +24,17 @@ namespace {
 const char* gShaderPath = nullptr;
 
 void run(const common::Options& options) {
-    ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}}, {{8, 9, 10}, 0u, 11, {12, 13, 14}}};
-    ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u};
+    ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}, 37}, {{8, 9, 10}, 0u, 11, {12, 13, 14}, 38}};
+    ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u, 39u};
     ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, 35u, 0}, {{29, 30, 31, 32}, 33, 34, 36u, 0}};
     std::vector<float> expected;
     for (const ShaderLight& l : lights)
         expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
-                                         l.intensity, l.color.x, l.color.y, l.color.z});
+                                         l.intensity, l.color.x, l.color.y, l.color.z, l.range});
     expected.insert(expected.end(), {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
                                      scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y,
-                                     scene.ambientColor.z, float(scene.lightCount)});
+                                     scene.ambientColor.z, float(scene.lightCount),
+                                     float(scene.unboundedLightCount)});
     for (const ShaderMaterial& m : materials)
         expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
                                          m.metallic, float(m.flags)});
@@ -68,12 +69,24 @@ void run(const common::Options& options) {
     columns(&view.boundsMin[0], 1, 4, 4);
     columns(&view.boundsMax[0], 1, 4, 4);
     expected.insert(expected.end(), {float(view.view), view.near, view.far, float(view.reversedZ)});
+    CullView cull;
+    fill(&cull.viewRotation[0][0], 16);
+    cull.projectionScale = {next, next + 1};
+    cull.near = next + 2;
+    cull.margin = next + 3;
+    cull.tileCount = {uint32_t(next + 4), uint32_t(next + 5)};
+    cull.extent = {uint32_t(next + 6), uint32_t(next + 7)};
+    cull.capacity = uint32_t(next + 8);
+    columns(&cull.viewRotation[0][0], 4, 4, 4);
+    expected.insert(expected.end(), {cull.projectionScale.x, cull.projectionScale.y, cull.near, cull.margin,
+                                     float(cull.tileCount.x), float(cull.tileCount.y), float(cull.extent.x),
+                                     float(cull.extent.y), float(cull.capacity)});
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
                                                  {.scalarBlockLayout = true, .maintenance4 = true});
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    common::Buffer buffers[6] = {
+    common::Buffer buffers[7] = {
         common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
         common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
         common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
@@ -81,12 +94,14 @@ void run(const common::Options& options) {
         common::createBuffer(device, sizeof(draw), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
         common::createBuffer(device, expected.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              host),
+        common::createBuffer(device, sizeof(cull), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
     };
     std::memcpy(buffers[0].mapped, lights, sizeof(lights));
     std::memcpy(buffers[1].mapped, &scene, sizeof(scene));
     std::memcpy(buffers[2].mapped, materials, sizeof(materials));
     std::memcpy(buffers[3].mapped, &camera, sizeof(camera));
     std::memcpy(buffers[4].mapped, &draw, sizeof(draw));
+    std::memcpy(buffers[6].mapped, &cull, sizeof(cull));
     std::memset(buffers[5].mapped, 0xff, expected.size() * sizeof(float));  // NaN until written
 
     runCompute(device, gShaderPath,
@@ -95,7 +110,8 @@ void run(const common::Options& options) {
                 {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[2].handle},
                 {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers[3].handle},
                 {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[4].handle},
-                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[5].handle}},
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[5].handle},
+                {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers[6].handle}},
                &view, sizeof(view), 1);
 
     const float* fields = static_cast<const float*>(buffers[5].mapped);
@@ -106,8 +122,8 @@ void run(const common::Options& options) {
             ++wrong;
         }
     std::printf(
-        "%zu fields of ShaderLight, ShaderSceneInfo, ShaderMaterial, CameraUniform, DrawConstants and "
-        "LightView checked, %zu disagree\n",
+        "%zu fields of ShaderLight, ShaderSceneInfo, ShaderMaterial, CameraUniform, DrawConstants, "
+        "LightView and CullView checked, %zu disagree\n",
         expected.size(), wrong);
 
     for (common::Buffer& buffer : buffers) common::destroyBuffer(device, buffer);

@@ -83,6 +83,13 @@ dvec3 evaluateLight(bool directional, dvec3 positionOrDirection, dvec3 color, do
     return cookTorrance(N, V, L, color * intensity * attenuation, albedo, metallic, roughness);
 }
 
+double rangeWindow(double distanceSquared, double range) {
+    if (range <= 0.0) return 1.0;
+    double ratioSquared = distanceSquared / (range * range);
+    double smoothed = std::clamp(1.0 - ratioSquared * ratioSquared, 0.0, 1.0);
+    return smoothed * smoothed;
+}
+
 dvec3 surfaceNormal(dvec3 stored) {
     return safeNormalize(stored, dvec3(0.0, 0.0, 1.0));
 }

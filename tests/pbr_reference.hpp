@@ -36,5 +36,7 @@ dvec3 surfaceNormal(dvec3 stored);
 dvec3 viewDirection(dvec3 worldPos, dvec3 cameraPosition, dvec3 N);
 dvec3 evaluateLight(bool directional, dvec3 positionOrDirection, dvec3 color, double intensity,
                     dvec3 worldPos, dvec3 N, dvec3 V, dvec3 albedo, double metallic, double roughness);
+// A point light's range window (pbr.glsl's rangeWindow): 1 for range 0 (no range).
+double rangeWindow(double distanceSquared, double range);
 
 }  // namespace common::pbr

@@ -31,16 +31,17 @@ void createComputeLightPipeline(const common::Device& device, VkPipelineCache ca
     pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
     writeComputeOutput(device, pass);
     VkDescriptorSetLayout setLayouts[] = {pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout,
-                                          pass.outputLayout};
+                                          pass.outputLayout, pass.tileLists};  // set 4: --light-culling tiled
     VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
     VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = 4,
+                                          .setLayoutCount = pass.tileLists ? 5u : 4u,
                                           .pSetLayouts = setLayouts,
                                           .pushConstantRangeCount = 1,
                                           .pPushConstantRanges = &pushRange};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.computeLayout));
     VkShaderModule module =
-        common::loadShaderModule(device, std::string("chapter-15/light") + layout.shaderSuffix + ".comp");
+        common::loadShaderModule(device, std::string("chapter-15/light") + layout.shaderSuffix +
+                                             (pass.tileLists ? "-tiled" : "") + ".comp");
     VkComputePipelineCreateInfo pipelineInfo{
         .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
         .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
@@ -55,8 +56,10 @@ void createComputeLightPipeline(const common::Device& device, VkPipelineCache ca
 //> record-compute-light
 // The output goes to GENERAL (a storage image), one 8x8 group per 8x8 pixels, then to READ_ONLY
 // for the post pass -- the same image, the same layouts after, as the fragment form.
-void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, const VkDescriptorSet (&sets)[4],
-                            const LightView& view) {
+void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
+                            VkDescriptorSet tileLists) {
+    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet,
+                              pass.outputSet, tileLists};
     VkImageMemoryBarrier2 init = common::imageBarrier(
         pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -64,7 +67,8 @@ void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, const Vk
     common::pipelineBarrier(cmd, &init, 1);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computePipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computeLayout, 0, 4, sets, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computeLayout, 0, pass.tileLists ? 5 : 4,
+                            sets, 0, nullptr);
     vkCmdPushConstants(cmd, pass.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView), &view);
     vkCmdDispatch(cmd, (pass.output.extent.width + 7) / 8, (pass.output.extent.height + 7) / 8, 1);
 

@@ -1,6 +1,7 @@
 // chapter-15, beyond the book: the light pass as a compute dispatch (--light-pass compute). The
 // same shading (light_shading.glsl) and the same descriptor sets 0-2 and push constants as the
-// book's full-screen triangle, plus set 3: the output as a storage image.
+// book's full-screen triangle, plus set 3: the output as a storage image (and set 4, the tile
+// lists, with --light-culling tiled).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -14,6 +15,7 @@ void createComputeLightPipeline(const common::Device& device, VkPipelineCache ca
                                 const GBufferLayout& layout);
 // Points set 3 at the (new) output image.
 void writeComputeOutput(const common::Device& device, LightPass& pass);
-void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, const VkDescriptorSet (&sets)[4],
-                            const LightView& view);
+// `tileLists`: --light-culling tiled's set (4), else VK_NULL_HANDLE.
+void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
+                            VkDescriptorSet tileLists);
 void destroyComputeLightPipeline(const common::Device& device, LightPass& pass);

@@ -5,6 +5,7 @@
 // rasterise (NVIDIA H100/H200), all of the chip's compute units take part.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
+#define TILE_SET 4  // --light-culling tiled: the tile lists (light_tiles.glsl); set 3 is the output
 #include "light_shading.glsl"
 
 //> light-comp
@@ -16,6 +17,6 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(lightOutput);
     if (pixel.x >= size.x || pixel.y >= size.y) return;  // the last row and column of groups overhang
-    imageStore(lightOutput, pixel, shadePixel((vec2(pixel) + 0.5) / vec2(size)));
+    imageStore(lightOutput, pixel, shadePixel((vec2(pixel) + 0.5) / vec2(size), pixel));
 }
 //< light-comp

@@ -3,7 +3,8 @@
 // scene bindings and the push constants, and shadePixel(): the light pass's colour of one pixel.
 // Compiled with COMPACT_GBUFFER for --gbuffer compact, which stores no position: it is
 // reconstructed from the (reversed-Z) depth; albedo comes as sqrt(albedo) in 10 bits, roughness
-// and metallic in 16.
+// and metallic in 16. Compiled with TILED_LIGHTS for --light-culling tiled (beyond the book): the
+// lights come from the pixel's tile list (light_tiles.glsl).
 //
 // Shading happens in coordinates relative to the camera: position - camera and light - camera
 // are small numbers where it matters (near the camera), however far the scene is from the world
@@ -38,56 +39,82 @@ layout(push_constant) uniform LightViewBlock {
     LightView show;  // gpu_types.glsl
 };
 
-// The pixel at `uv` (0..1 across the image, texel centres): lit, or the attachment --view asks for.
+// What the G-buffer holds at `uv` (0..1 across the image, texel centres), decoded: the same for
+// the light pass and (beyond the book) the tile bounds of --light-culling tiled.
 // textureLod: the attachments have one level, and a compute shader has no implicit level.
-vec4 shadePixel(vec2 uv) {
-    float depth = textureLod(depthAttachment, uv, 0.0).r;
+struct SurfaceSample {
+    bool surface;   // written 1 where a surface was drawn, cleared to 0
+    vec3 position;  // relative to the camera
+    vec3 albedo;
+    vec3 normal;    // as stored
+    vec3 pbr;       // AO, roughness, metallic
+    float depth;
+};
+
+SurfaceSample readGBuffer(vec2 uv) {
+    SurfaceSample s;
+    s.depth = textureLod(depthAttachment, uv, 0.0).r;
     vec4 albedoCoverage = textureLod(albedoAttachment, uv, 0.0);
-    bool surface = albedoCoverage.a > 0.5;  // written 1 where a surface was drawn, cleared to 0
+    s.surface = albedoCoverage.a > 0.5;
 #ifdef COMPACT_GBUFFER
-    vec3 albedo = albedoCoverage.rgb * albedoCoverage.rgb;  // stored as sqrt(albedo)
-    vec3 pbr = vec3(0.5, textureLod(pbrAttachment, uv, 0.0).rg);  // AO (fixed 0.5, not stored), roughness, metallic
-#else
-    vec3 albedo = albedoCoverage.rgb;
-    vec3 pbr = textureLod(pbrAttachment, uv, 0.0).rgb;  // AO, roughness, metallic
-#endif
-#ifdef COMPACT_GBUFFER
-    vec3 normal = decodeOctahedral(textureLod(normalAttachment, uv, 0.0).xy);
+    s.albedo = albedoCoverage.rgb * albedoCoverage.rgb;  // stored as sqrt(albedo)
+    s.pbr = vec3(0.5, textureLod(pbrAttachment, uv, 0.0).rg);  // AO (fixed 0.5, not stored), roughness, metallic
+    s.normal = decodeOctahedral(textureLod(normalAttachment, uv, 0.0).xy);
     // The pixel's clip-space point (y up under our flipped viewport) back to camera-relative space.
-    vec4 clip = vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
+    vec4 clip = vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, s.depth, 1.0);
     vec4 relative = show.clipToCameraRelative * clip;
-    vec3 position = relative.xyz / relative.w;
+    s.position = relative.xyz / relative.w;
 #else
-    vec3 normal = textureLod(normalAttachment, uv, 0.0).xyz;
-    vec3 position = textureLod(positionAttachment, uv, 0.0).xyz - scene.cameraPosition;
+    s.albedo = albedoCoverage.rgb;
+    s.pbr = textureLod(pbrAttachment, uv, 0.0).rgb;
+    s.normal = textureLod(normalAttachment, uv, 0.0).xyz;
+    s.position = textureLod(positionAttachment, uv, 0.0).xyz - scene.cameraPosition;
+#endif
+    return s;
+}
+
+// Light i's contribution to a surface point (camera-relative position, unit N and V).
+vec3 shadeLight(uint i, SurfaceSample s, vec3 N, vec3 V) {
+    ShaderLight light = lights[i];
+    bool directional = light.directional != 0u;
+    vec3 lightPosition = directional ? light.position : light.position - scene.cameraPosition;
+    return evaluateLightInRange(directional, lightPosition, light.color, light.intensity, light.range, s.position, N,
+                                V, s.albedo, s.pbr.b, s.pbr.g);
+}
+
+#ifdef TILED_LIGHTS
+#include "light_tiles.glsl"
 #endif
 
+// The pixel at `uv` (texel centres; `pixel` its integer coordinates): lit, or the attachment --view
+// asks for.
+vec4 shadePixel(vec2 uv, ivec2 pixel) {
+    SurfaceSample s = readGBuffer(uv);
     if (show.view == 1) {
-        vec3 world = position + scene.cameraPosition;
-        return vec4(surface ? clamp((world - show.boundsMin.xyz) / (show.boundsMax.xyz - show.boundsMin.xyz), 0.0, 1.0)
-                                : vec3(0.0), 1.0);
+        vec3 world = s.position + scene.cameraPosition;
+        return vec4(s.surface ? clamp((world - show.boundsMin.xyz) / (show.boundsMax.xyz - show.boundsMin.xyz), 0.0, 1.0)
+                              : vec3(0.0), 1.0);
     } else if (show.view == 2) {
-        return vec4(albedo, 1.0);
+        return vec4(s.albedo, 1.0);
     } else if (show.view == 3) {
-        return vec4(surface ? normal * 0.5 + 0.5 : vec3(0.0), 1.0);
+        return vec4(s.surface ? s.normal * 0.5 + 0.5 : vec3(0.0), 1.0);
     } else if (show.view == 4) {
-        return vec4(pbr, 1.0);
+        return vec4(s.pbr, 1.0);
     } else if (show.view == 5) {
-        float distance = show.reversedZ != 0 ? eyeDistance(depth, show.far, show.near) : eyeDistance(depth, show.near, show.far);
+        float distance = show.reversedZ != 0 ? eyeDistance(s.depth, show.far, show.near)
+                                             : eyeDistance(s.depth, show.near, show.far);
         return vec4(vec3(distanceToGrey(distance, show.near, show.far)), 1.0);
-    } else if (!surface) {
+    } else if (!s.surface) {
         return vec4(0.0, 0.0, 0.0, 1.0);  // nothing was drawn here: no surface to light
     } else {
-        vec3 N = surfaceNormal(normal);
-        vec3 V = viewDirection(position, vec3(0.0), N);  // the camera is the origin here
-        vec3 color = scene.ambientColor * scene.ambientIntensity * albedo;
-        for (uint i = 0u; i < scene.lightCount; ++i) {
-            ShaderLight light = lights[i];
-            bool directional = light.directional != 0u;
-            vec3 lightPosition = directional ? light.position : light.position - scene.cameraPosition;
-            color += evaluateLight(directional, lightPosition, light.color, light.intensity, position, N, V, albedo,
-                                   pbr.b, pbr.g);
-        }
+        vec3 N = surfaceNormal(s.normal);
+        vec3 V = viewDirection(s.position, vec3(0.0), N);  // the camera is the origin here
+        vec3 color = scene.ambientColor * scene.ambientIntensity * s.albedo;
+#ifdef TILED_LIGHTS
+        color += shadeTileLights(pixel, s, N, V);  // beyond the book: light_tiles.glsl
+#else
+        for (uint i = 0u; i < scene.lightCount; ++i) color += shadeLight(i, s, N, V);
+#endif
         return vec4(color, 1.0);
     }
 }

@@ -6,20 +6,22 @@
 
 //> gpu-types
 // Lights: a storage buffer with scalar layout (GL_EXT_scalar_block_layout): vec3 takes 12 bytes
-// and aligns to 4, so this struct is 32 bytes with no padding.
+// and aligns to 4, so this struct is 36 bytes with no padding.
 struct ShaderLight {
     vec3 position;  // a point light's position; a directional light's travel direction
     uint directional;
     float intensity;
     vec3 color;
+    float range;  // beyond the book: a point light's reach (0: unbounded, the book's falloff)
 };
 
-// Per-frame scene information: a uniform buffer, scalar layout too. 32 bytes.
+// Per-frame scene information: a uniform buffer, scalar layout too. 36 bytes.
 struct ShaderSceneInfo {
     vec3 cameraPosition;
     float ambientIntensity;
     vec3 ambientColor;
     uint lightCount;  // the loop runs over the scene's actual lights only
+    uint unboundedLightCount;  // beyond the book (tiled culling): the first lights, shaded everywhere
 };
 
 // Materials: a storage buffer, std430 layout. 32 bytes.
@@ -56,6 +58,20 @@ struct LightView {
     float near;     // the projection's near and far planes
     float far;
     int reversedZ;  // depth 1 at near, 0 at far
+};
+
+// Beyond the book, --light-culling tiled (chapter-15/beyond/light_culling.cpp): the culling
+// passes' view of the frame, one uniform buffer per frame in flight, scalar layout. 100 bytes.
+const uint LIGHT_TILE_SIZE = 16u;               // pixels per tile side
+const uint TILE_OVERFLOW = 0xffffffffu;         // a tile whose list did not fit: it loops over every light
+struct CullView {
+    mat4 viewRotation;     // camera-relative world space to view space (looking along -z)
+    vec2 projectionScale;  // the projection's [0][0] and [1][1]: view-space slope to NDC
+    float near;            // the near plane: nothing closer is drawn
+    float margin;          // how far a stored surface position may lie from its pixel's ray
+    uvec2 tileCount;       // tiles across and down
+    uvec2 extent;          // the G-buffer's size in pixels
+    uint capacity;         // light indices the tile lists can hold, all tiles together
 };
 
 #endif

@@ -137,4 +137,31 @@ vec3 viewDirection(vec3 worldPos, vec3 cameraPosition, vec3 N) {
 }
 //< pbr
 
+//> light-range
+// Beyond the book: a point light with a range r reaches no further than r. Its inverse-square
+// falloff is multiplied by a window that is 1 at the light, falls smoothly and reaches 0 with a
+// zero slope at d = r, so no edge shows: (1 - (d/r)^4)^2, clamped to 0..1 (Filament's
+// getSquareFalloff; Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course notes, uses
+// the same window). range 0 means no range: the book's unbounded falloff.
+float rangeWindow(float distanceSquared, float range) {
+    if (range <= 0.0) return 1.0;
+    float ratioSquared = distanceSquared / (range * range);
+    float smoothed = clamp(1.0 - ratioSquared * ratioSquared, 0.0, 1.0);
+    return smoothed * smoothed;
+}
+
+// evaluateLight for a light with a range: nothing at or beyond it (and no shading math spent).
+vec3 evaluateLightInRange(bool directional, vec3 positionOrDirection, vec3 color, float intensity, float range,
+                          vec3 worldPos, vec3 N, vec3 V, vec3 albedo, float metallic, float roughness) {
+    if (directional || range <= 0.0)
+        return evaluateLight(directional, positionOrDirection, color, intensity, worldPos, N, V, albedo, metallic,
+                             roughness);
+    vec3 toLight = positionOrDirection - worldPos;
+    float window = rangeWindow(dot(toLight, toLight), range);
+    if (!(window > 0.0)) return vec3(0.0);
+    return evaluateLight(false, positionOrDirection, color, intensity * window, worldPos, N, V, albedo, metallic,
+                         roughness);
+}
+//< light-range
+
 #endif

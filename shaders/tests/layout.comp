@@ -14,6 +14,7 @@ layout(std430, set = 0, binding = 2) readonly buffer Materials { ShaderMaterial 
 layout(std140, set = 0, binding = 3) uniform Camera { CameraUniform camera; };
 layout(std430, set = 0, binding = 4) readonly buffer Draws { DrawConstants draw; };
 layout(std430, set = 0, binding = 5) writeonly buffer Fields { float fields[]; };
+layout(scalar, set = 0, binding = 6) uniform Cull { CullView cull; };
 // As the light pass receives it: push constants (std430, as push constant blocks are by default).
 layout(push_constant) uniform LightViewBlock { LightView show; };
 
@@ -28,6 +29,7 @@ void main() {
         fields[i++] = lights[l].color.x;
         fields[i++] = lights[l].color.y;
         fields[i++] = lights[l].color.z;
+        fields[i++] = lights[l].range;
     }
     fields[i++] = scene.cameraPosition.x;
     fields[i++] = scene.cameraPosition.y;
@@ -37,6 +39,7 @@ void main() {
     fields[i++] = scene.ambientColor.y;
     fields[i++] = scene.ambientColor.z;
     fields[i++] = float(scene.lightCount);
+    fields[i++] = float(scene.unboundedLightCount);
     for (int m = 0; m < 2; ++m) {
         fields[i++] = materials[m].diffuse.x;
         fields[i++] = materials[m].diffuse.y;
@@ -62,4 +65,15 @@ void main() {
     fields[i++] = show.near;
     fields[i++] = show.far;
     fields[i++] = float(show.reversedZ);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) fields[i++] = cull.viewRotation[c][r];
+    fields[i++] = cull.projectionScale.x;
+    fields[i++] = cull.projectionScale.y;
+    fields[i++] = cull.near;
+    fields[i++] = cull.margin;
+    fields[i++] = float(cull.tileCount.x);
+    fields[i++] = float(cull.tileCount.y);
+    fields[i++] = float(cull.extent.x);
+    fields[i++] = float(cull.extent.y);
+    fields[i++] = float(cull.capacity);
 }

@@ -171,8 +171,10 @@ int main(int argc, char** argv) {
             for (const common::Light& light : scene.lights) {
                 bool directional = light.type == common::Light::Type::Directional;
                 dvec3 where = directional ? dvec3(light.direction) : dvec3(light.position) - camera;
-                color += ref::evaluateLight(directional, where, dvec3(light.color), light.intensity, P, N, V,
-                                            a, material.z, material.y);
+                // A point light's range (scene file "range"): the windowed falloff; none, unbounded.
+                double window = directional ? 1.0 : ref::rangeWindow(glm::dot(where - P, where - P), light.range);
+                color += ref::evaluateLight(directional, where, dvec3(light.color), light.intensity * window, P,
+                                            N, V, a, material.z, material.y);
             }
             image[p] = color;
         }

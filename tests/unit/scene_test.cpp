@@ -34,7 +34,8 @@ common::Scene everyField() {
                             .position = {5, 3.4f, 1.2f},
                             .color = {0, 1, 0},
                             .intensity = 10.0f,
-                            .marker = 1});
+                            .marker = 1,
+                            .range = 7.5f});
     return scene;
 }
 
@@ -102,6 +103,12 @@ TEST(SceneJson, RefusesBadFiles) {
     expectRefused(
         R"({"models": [{"file": "m.obj"}], "lights": [{"type": "directional", "direction": [0, -1, 0], "marker": 0}]})",
         "lights[0].marker: only a point light has a marker");
+    expectRefused(
+        R"({"models": [{"file": "m.obj"}], "lights": [{"type": "point", "position": [0, 0, 0], "range": 0}]})",
+        "lights[0].range: must be greater than 0");
+    expectRefused(
+        R"({"models": [{"file": "m.obj"}], "lights": [{"type": "directional", "direction": [0, -1, 0], "range": 2}]})",
+        "lights[0].range: only a point light has a range");
     expectRefused(R"({"models": [{"file": "m.obj"}], "camera": {"position": [0, 0, 1e999]}})",
                   "number overflow");
 }

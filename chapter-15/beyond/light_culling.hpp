@@ -1,0 +1,99 @@
+// chapter-15, beyond the book: light ranges and tiled light culling (--light-range, --light-cutoff,
+// --light-culling tiled).
+//
+// The book's light pass shades every pixel with every light, so a frame costs pixels x lights.
+// With a range, a point light reaches only so far (pbr.glsl's rangeWindow takes its falloff to
+// zero there), and a pixel need only be shaded by the lights that reach it. Tiled culling finds
+// them on the GPU each frame, per 16x16-pixel tile, in four compute passes:
+//   bounds (light_cull_bounds.comp): each tile's box of surface positions, from the G-buffer;
+//   count (light_cull.comp): each light with a range adds 1 to every tile of its screen rectangle
+//     whose box its sphere reaches -- work proportional to the tiles a light covers;
+//   scan (light_cull_scan.comp): counts to list offsets, exactly sized;
+//   fill (light_cull.comp again): each light writes its index into those tiles' lists.
+// The light pass (both forms) then loops over the unbounded lights and its tile's list.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "common/buffer.hpp"
+#include "common/cli.hpp"
+#include "common/device.hpp"
+#include "common/scene.hpp"
+#include "gbuffer_layout.hpp"
+#include "gpu_types.hpp"
+
+struct LightPass;
+
+enum class LightCulling { None, Tiled };
+
+// The options beyond the book that change the lights or the camera.
+struct LightOptions {
+    LightCulling culling = LightCulling::None;  // --light-culling
+    float orbitDegrees = 0.0f;                  // --orbit: the camera's yaw turns this much a frame
+};
+// Reads --light-culling, --orbit and --light-cutoff (applied to the scene's lights here, with a
+// line saying so). A bad number is an InputError naming the option.
+LightOptions readLightOptions(const common::Options& options, common::Scene& scene);
+// Point lights with a range: those tiled culling lists per tile.
+uint32_t boundedLightCount(const common::Scene& scene);
+
+// --light-cutoff E: every point light without a range gets the distance at which its irradiance,
+// intensity x brightest colour channel / d^2, falls to E. Returns how many lights got one.
+size_t applyLightCutoff(common::Scene& scene, float cutoff);
+
+// Tiled culling's order of the lights: those without a range (directional lights, point lights
+// without one: every pixel's) first, then those with one, each group in scene order. Returns how
+// many come first.
+uint32_t putUnboundedFirst(std::vector<ShaderLight>& lights);
+
+// What each frame in flight owns: its CullView and the descriptor set that binds it with the
+// shared buffers (set 3 of the culling passes, TILE_SET of the light pass).
+struct LightCullingFrame {
+    common::Buffer view;  // CullView, host-visible
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
+struct LightCullingPass {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    std::vector<LightCullingFrame> frames;
+    // One of each, rebuilt every frame; barriers order one frame's use after the previous one's.
+    common::Buffer tileBounds;  // 2 vec4 per tile
+    common::Buffer tileCounts;  // uint per tile
+    common::Buffer tileLists;   // uvec2 per tile
+    common::Buffer indices;     // `capacity` uints
+    common::Buffer stats;       // CullStats, host-visible: read after the run
+    VkExtent2D extent{};
+    glm::uvec2 tiles{0};
+    uint32_t capacity = 0;
+    uint32_t boundedLights = 0;  // lights with a range
+    float margin = 0.0f;         // CullView::margin, from the G-buffer layout and the scene's size
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline bounds = VK_NULL_HANDLE, count = VK_NULL_HANDLE, scan = VK_NULL_HANDLE, fill = VK_NULL_HANDLE;
+};
+
+// The set layout, buffers and per-frame sets (before the light pass, whose pipelines bind the set).
+LightCullingPass createLightCulling(const common::Device& device, VkExtent2D extent, uint32_t framesInFlight,
+                                    uint32_t boundedLights, const GBufferLayout& layout, glm::vec3 boundsMin,
+                                    glm::vec3 boundsMax);
+// The four pipelines, on the light pass's sets 0-2 (G-buffer, lights, scene info).
+void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& culling,
+                                 const LightPass& lightPass, const GBufferLayout& layout);
+// The tile grid and lists follow the window.
+void resizeLightCulling(const common::Device& device, LightCullingPass& culling, VkExtent2D extent);
+// This frame's camera: view matrix without its translation, projection, near plane.
+void updateLightCulling(LightCullingPass& culling, uint32_t frame, const glm::mat4& viewRotation,
+                        const glm::mat4& projection, float near);
+void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& culling, const LightPass& lightPass,
+                        uint32_t frame, const LightView& view);
+
+struct LightCullingStats {
+    uint32_t pairs = 0, maxTileLights = 0, overflowTiles = 0, litTiles = 0;
+};
+// The last frame's statistics (call after the device is idle), and one line of them on stdout.
+LightCullingStats readLightCullingStats(const LightCullingPass& culling);
+void reportLightCulling(const LightCullingPass& culling);
+void destroyLightCulling(const common::Device& device, LightCullingPass& culling);
