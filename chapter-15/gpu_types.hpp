@@ -72,7 +72,7 @@ static_assert(sizeof(LightView) == 112 && offsetof(LightView, boundsMin) == 64 &
 
 // Beyond the book, --light-culling tiled (beyond/light_culling.cpp): the culling passes' view of
 // the frame, a scalar-layout uniform buffer per frame in flight. 100 bytes.
-inline constexpr uint32_t kLightTileSize = 16;            // LIGHT_TILE_SIZE
+inline constexpr uint32_t kLightTileSize = 8;             // LIGHT_TILE_SIZE
 inline constexpr uint32_t kTileOverflow = 0xffffffffu;    // TILE_OVERFLOW
 struct CullView {
     glm::mat4 viewRotation;      // camera-relative world space to view space

@@ -57,7 +57,7 @@ const common::ChapterInfo kChapter{
      {"light-culling",
       {"none", "tiled"},
       "none: every pixel loops over every light (the book's); tiled: over the lights whose range reaches "
-      "its 16x16 tile, listed by compute passes each frame"},
+      "its 8x8-pixel tile, listed by compute passes each frame"},
      {"light-cutoff",
       {},
       "give each point light without a range the distance where its irradiance falls to this value "

@@ -87,7 +87,7 @@ void createTileBuffers(const common::Device& device, LightCullingPass& c, VkExte
                (extent.height + kLightTileSize - 1) / kLightTileSize};
     uint64_t tiles = uint64_t(c.tiles.x) * c.tiles.y;
     // Room for 64 lights per tile on average, and 4 tiles per light: what scenes with a few to a
-    // few tens of lights per pixel need (a light covering many tiles is rare when lights are many).
+    // few tens of lights per pixel need (at 65,536 lights of the generated scenes, 13 per tile).
     // A tile whose list does not fit is not dropped: it is shaded with every light.
     uint64_t wanted = tiles * 64 + uint64_t(c.boundedLights) * 4;
     uint64_t limit = std::min<uint64_t>(device.properties.limits.maxStorageBufferRange / 4, 1u << 28);

@@ -4,7 +4,7 @@
 // The book's light pass shades every pixel with every light, so a frame costs pixels x lights.
 // With a range, a point light reaches only so far (pbr.glsl's rangeWindow takes its falloff to
 // zero there), and a pixel need only be shaded by the lights that reach it. Tiled culling finds
-// them on the GPU each frame, per 16x16-pixel tile, in four compute passes:
+// them on the GPU each frame, per 8x8-pixel tile, in four compute passes:
 //   bounds (light_cull_bounds.comp): each tile's box of surface positions, from the G-buffer;
 //   count (light_cull.comp): each light with a range adds 1 to every tile of its screen rectangle
 //     whose box its sphere reaches -- work proportional to the tiles a light covers;

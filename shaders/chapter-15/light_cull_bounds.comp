@@ -1,5 +1,5 @@
 #version 450
-// Beyond the book, --light-culling tiled, pass 1 of 4: each tile's bounds. One 16x16 group per
+// Beyond the book, --light-culling tiled, pass 1 of 4: each tile's bounds. One 8x8 group per
 // tile reads the G-buffer exactly as the light pass does (readGBuffer, light_shading.glsl) and
 // reduces the view-space positions of its surface pixels to a box. A tile with no surface (sky)
 // gets none: no light needs it. Compiled with COMPACT_GBUFFER for --gbuffer compact.
@@ -9,7 +9,7 @@
 #include "light_cull.glsl"
 
 //> cull-bounds
-layout(local_size_x = 16, local_size_y = 16) in;  // LIGHT_TILE_SIZE
+layout(local_size_x = LIGHT_TILE_SIZE, local_size_y = LIGHT_TILE_SIZE) in;
 
 // Floats as unsigned integers in the same order, for atomicMin/atomicMax on shared memory.
 uint orderable(float f) {

@@ -5,7 +5,7 @@
 //
 // Lights come in two groups (the C++ orders them so): the first scene.unboundedLightCount have no
 // range -- directional lights, point lights without one -- and reach every pixel; the rest have a
-// range and are shaded only where the pixel's 16x16 tile lists them.
+// range and are shaded only where the pixel's 8x8 tile lists them.
 //> light-tiles
 layout(std430, set = TILE_SET, binding = 3) readonly buffer TileLists {
     uvec2 tileLists[];  // per tile: first index in tileLightIndices, count (or TILE_OVERFLOW)

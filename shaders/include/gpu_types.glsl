@@ -62,7 +62,10 @@ struct LightView {
 
 // Beyond the book, --light-culling tiled (chapter-15/beyond/light_culling.cpp): the culling
 // passes' view of the frame, one uniform buffer per frame in flight, scalar layout. 100 bytes.
-const uint LIGHT_TILE_SIZE = 16u;               // pixels per tile side
+// Pixels per tile side. 8 rather than the usual 16: with many small lights a tile's list holds the
+// lights of all its pixels, and 16x16 tiles made the lists (and the light pass) 1.6x longer at
+// 65,536 lights on lavapipe (docs/performance.md).
+const uint LIGHT_TILE_SIZE = 8u;
 const uint TILE_OVERFLOW = 0xffffffffu;         // a tile whose list did not fit: it loops over every light
 struct CullView {
     mat4 viewRotation;     // camera-relative world space to view space (looking along -z)
