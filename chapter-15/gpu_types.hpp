@@ -72,16 +72,16 @@ static_assert(sizeof(LightView) == 112 && offsetof(LightView, boundsMin) == 64 &
 
 // Beyond the book, --light-culling tiled (beyond/light_culling.cpp): the culling passes' view of
 // the frame, a scalar-layout uniform buffer per frame in flight. 100 bytes.
-inline constexpr uint32_t kLightTileSize = 8;             // LIGHT_TILE_SIZE
-inline constexpr uint32_t kTileOverflow = 0xffffffffu;    // TILE_OVERFLOW
+inline constexpr uint32_t kLightTileSize = 8;           // LIGHT_TILE_SIZE
+inline constexpr uint32_t kTileOverflow = 0xffffffffu;  // TILE_OVERFLOW
 struct CullView {
-    glm::mat4 viewRotation;      // camera-relative world space to view space
-    glm::vec2 projectionScale;   // the projection's [0][0] and [1][1]
-    float near;                  // the near plane
-    float margin;                // how far a stored surface position may lie from its pixel's ray
-    glm::uvec2 tileCount;        // tiles across and down
-    glm::uvec2 extent;           // the G-buffer's size in pixels
-    uint32_t capacity;           // light indices the tile lists can hold
+    glm::mat4 viewRotation;     // camera-relative world space to view space
+    glm::vec2 projectionScale;  // the projection's [0][0] and [1][1]
+    float near;                 // the near plane
+    float margin;               // how far a stored surface position may lie from its pixel's ray
+    glm::uvec2 tileCount;       // tiles across and down
+    glm::uvec2 extent;          // the G-buffer's size in pixels
+    uint32_t capacity;          // light indices the tile lists can hold
 };
 static_assert(sizeof(CullView) == 100 && offsetof(CullView, projectionScale) == 64 &&
               offsetof(CullView, near) == 72 && offsetof(CullView, margin) == 76 &&

@@ -46,8 +46,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     pass.tileLists = tileLists;
     pass.output = createOutput(device, extent, kind);
     // Beyond the book: with tile lists, the culling passes (compute) read these sets too.
-    VkShaderStageFlags stage =
-        kind == LightPassKind::Compute || tileLists ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+    VkShaderStageFlags stage = kind == LightPassKind::Compute || tileLists ? VK_SHADER_STAGE_COMPUTE_BIT
+                                                                           : VK_SHADER_STAGE_FRAGMENT_BIT;
     if (kind == LightPassKind::Fragment) stage |= VK_SHADER_STAGE_FRAGMENT_BIT;
     std::vector<VkDescriptorSetLayoutBinding> attachmentBindings;
     size_t colorCount = common::colorAttachments(gbuffer).size();
@@ -105,7 +105,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     if (tileLists) sets.push_back(tileLists);  // set 3: the tile lists (beyond/light_culling.cpp)
     pass.pipeline = common::createFullscreenPipeline(
         device, cache,
-        (std::string("chapter-15/light") + layout.shaderSuffix + (tileLists ? "-tiled" : "") + ".frag").c_str(),
+        (std::string("chapter-15/light") + layout.shaderSuffix + (tileLists ? "-tiled" : "") + ".frag")
+            .c_str(),
         kLightOutputFormat, sets, sizeof(LightView));
     return pass;
 }
@@ -149,8 +150,8 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
     VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet,
                               tileLists};  // set 3: beyond the book, --light-culling tiled only
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, pass.tileLists ? 4 : 3,
-                            sets, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0,
+                            pass.tileLists ? 4 : 3, sets, 0, nullptr);
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);

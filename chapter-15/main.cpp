@@ -174,7 +174,8 @@ void run(const common::Options& options) {
     LightPass lightPass =
         createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, layout, lightKind,
                         options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
-    if (culling.setLayout) createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, layout);
+    if (culling.setLayout)
+        createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, layout);
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 
@@ -189,9 +190,10 @@ void run(const common::Options& options) {
 
     // --frames, --resize, --benchmark (each pass timed), --screenshot.
     bool tiled = lightOptions.culling == LightCulling::Tiled;
-    common::RunControl run = common::createRunControl(
-        options, device,
-        tiled ? std::vector<std::string>{"scene", "cull", "light", "post"} : std::vector<std::string>{"scene", "light", "post"});
+    common::RunControl run =
+        common::createRunControl(options, device,
+                                 tiled ? std::vector<std::string>{"scene", "cull", "light", "post"}
+                                       : std::vector<std::string>{"scene", "light", "post"});
     //< setup
 
     auto recreateTarget = [&] {
@@ -245,9 +247,12 @@ void run(const common::Options& options) {
         lightView.near = projection.near;
         lightView.far = projection.far;
         std::vector<ShaderLight> lights = shaderLights(scene);
-        uint32_t unbounded = tiled ? putUnboundedFirst(lights) : 0u;  // beyond the book: tiled culling's order
-        updateLights(lightPass, slot, lights, {camera.position, scene.ambientIntensity, scene.ambientColor, 0u, unbounded});
-        if (tiled) updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near);
+        uint32_t unbounded =
+            tiled ? putUnboundedFirst(lights) : 0u;  // beyond the book: tiled culling's order
+        updateLights(lightPass, slot, lights,
+                     {camera.position, scene.ambientIntensity, scene.ambientColor, 0u, unbounded});
+        if (tiled)
+            updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near);
 
         VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
@@ -261,7 +266,8 @@ void run(const common::Options& options) {
             recordLightCulling(sync.commandBuffer, culling, lightPass, slot, lightView);
             common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         }
-        recordLightPass(sync.commandBuffer, lightPass, slot, lightView, tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
+        recordLightPass(sync.commandBuffer, lightPass, slot, lightView,
+                        tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
         common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
         common::timePassEnd(run, sync.commandBuffer, slot, pass++);

@@ -241,7 +241,8 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
                 light.intensity = r.number(l["intensity"], where + ".intensity", 0.0f, kHuge);
             checkRadiance(r, where, light.color, light.intensity);
             if (l.contains("range")) {
-                if (light.type != Light::Type::Point) r.fail(where + ".range", "only a point light has a range");
+                if (light.type != Light::Type::Point)
+                    r.fail(where + ".range", "only a point light has a range");
                 light.range = r.number(l["range"], where + ".range", 0.0f, kHuge);
                 if (!(light.range > 0.0f)) r.fail(where + ".range", "must be greater than 0");
             }

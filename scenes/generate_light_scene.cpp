@@ -1,4 +1,4 @@
-// generate_light_scene DEFAULT_DIR N OUT.json [--no-range] [--cluster]
+// generate_light_scene DEFAULT_DIR N OUT.json [--no-range] [--range R] [--cluster]
 //
 // A many-light scene for chapter-15's light culling (beyond the book): the default courtyard
 // (its models, from DEFAULT_DIR, referenced by relative path) at night -- dim ambient light, no
@@ -9,8 +9,10 @@
 // proportional to r^2, so the floor is about equally bright for every N.
 //   --no-range  leave the ranges out (the book's unbounded falloff; chapter-15 --light-cutoff
 //               then derives them);
-//   --cluster   every light within 1 cm of one point in front of the camera, range 5 cm: N
-//               lights in one or a few 16x16 tiles (a hard case for the tile lists).
+//   --range R   every light's range R instead (tests: lights that each cover the whole screen);
+//   --cluster   every light within 1 cm of one point 3 cm above the floor in front of the
+//               camera, range 5 cm: N lights in one or a few 8x8-pixel tiles (a hard case for
+//               the tile lists).
 // Deterministic: positions and colours come from integer hashes.
 #include <cmath>
 #include <cstdint>
@@ -45,7 +47,8 @@ float hash01(uint32_t i, uint32_t seed) {
 }
 
 glm::vec3 hueToRgb(float hue) {
-    glm::vec3 k = glm::abs(glm::fract(glm::vec3(hue) + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f);
+    glm::vec3 k =
+        glm::abs(glm::fract(glm::vec3(hue) + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f);
     glm::vec3 rgb = glm::clamp(k - 1.0f, 0.0f, 1.0f);
     return glm::mix(glm::vec3(1.0f), rgb, 0.7f);  // saturation 0.7
 }
@@ -54,16 +57,23 @@ glm::vec3 hueToRgb(float hue) {
 
 int main(int argc, char** argv) {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: generate_light_scene DEFAULT_DIR N OUT.json [--no-range] [--cluster]\n");
+        std::fprintf(
+            stderr,
+            "usage: generate_light_scene DEFAULT_DIR N OUT.json [--no-range] [--range R] [--cluster]\n");
         return 2;
     }
     fs::path defaultDir = argv[1];
     long n = std::strtol(argv[2], nullptr, 10);
     fs::path out = argv[3];
     bool ranges = true, cluster = false;
+    float fixedRange = 0.0f;
     for (int i = 4; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--no-range") == 0) ranges = false;
-        else if (std::strcmp(argv[i], "--cluster") == 0) cluster = true;
+        if (std::strcmp(argv[i], "--no-range") == 0)
+            ranges = false;
+        else if (std::strcmp(argv[i], "--range") == 0 && i + 1 < argc)
+            fixedRange = std::strtof(argv[++i], nullptr);
+        else if (std::strcmp(argv[i], "--cluster") == 0)
+            cluster = true;
         else {
             std::fprintf(stderr, "generate_light_scene: unknown option %s\n", argv[i]);
             return 2;
@@ -95,13 +105,13 @@ int main(int argc, char** argv) {
         for (uint32_t i = 0; i < uint32_t(n); ++i) {
             common::Light light{.type = common::Light::Type::Point};
             if (cluster)
-                light.position = glm::vec3(0.0f, 0.3f, 8.0f) +
+                light.position = glm::vec3(0.0f, 0.03f, 8.0f) +
                                  (glm::vec3(hash01(i, 1), hash01(i, 2), hash01(i, 3)) - 0.5f) * 0.02f;
             else
                 light.position = {-14.5f + 29.0f * hash01(i, 1), 0.3f * range, -14.5f + 29.0f * hash01(i, 2)};
             light.color = hueToRgb(hash01(i, 4));
             light.intensity = cluster ? intensity * 10.0f : intensity;
-            if (ranges) light.range = range;
+            if (ranges) light.range = fixedRange > 0.0f ? fixedRange : range;
             scene.lights.push_back(light);
         }
         // The scene without its lights as the library writes it, then the lights one per line

@@ -31,10 +31,10 @@ void run(const common::Options& options) {
     for (const ShaderLight& l : lights)
         expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
                                          l.intensity, l.color.x, l.color.y, l.color.z, l.range});
-    expected.insert(expected.end(), {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
-                                     scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y,
-                                     scene.ambientColor.z, float(scene.lightCount),
-                                     float(scene.unboundedLightCount)});
+    expected.insert(expected.end(),
+                    {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
+                     scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y, scene.ambientColor.z,
+                     float(scene.lightCount), float(scene.unboundedLightCount)});
     for (const ShaderMaterial& m : materials)
         expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
                                          m.metallic, float(m.flags)});

@@ -67,8 +67,8 @@ void recordComputeLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t
     common::pipelineBarrier(cmd, &init, 1);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computePipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computeLayout, 0, pass.tileLists ? 5 : 4,
-                            sets, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.computeLayout, 0,
+                            pass.tileLists ? 5 : 4, sets, 0, nullptr);
     vkCmdPushConstants(cmd, pass.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView), &view);
     vkCmdDispatch(cmd, (pass.output.extent.width + 7) / 8, (pass.output.extent.height + 7) / 8, 1);
 

@@ -18,8 +18,8 @@
 namespace {
 
 // --NAME VALUE as a number within [min, max], or nothing when the option is not given.
-std::optional<float> numberOption(const common::Options& options, const std::string& name, float min, float max,
-                                  const char* what) {
+std::optional<float> numberOption(const common::Options& options, const std::string& name, float min,
+                                  float max, const char* what) {
     auto given = options.values.find(name);
     if (given == options.values.end()) return std::nullopt;
     const std::string& text = given->second;
@@ -36,8 +36,9 @@ LightOptions readLightOptions(const common::Options& options, common::Scene& sce
     LightOptions result;
     auto culling = options.choices.find("light-culling");
     result.culling = culling == options.choices.end() ? LightCulling::None : LightCulling(culling->second);
-    result.orbitDegrees = numberOption(options, "orbit", -360.0f, 360.0f, "a number of degrees within -360..360")
-                              .value_or(0.0f);
+    result.orbitDegrees =
+        numberOption(options, "orbit", -360.0f, 360.0f, "a number of degrees within -360..360")
+            .value_or(0.0f);
     // The smallest positive normal float and 1e30: outside, a range would be infinite or zero.
     if (std::optional<float> cutoff =
             numberOption(options, "light-cutoff", 1.2e-38f, 1e30f, "a positive number (an irradiance)")) {
@@ -62,7 +63,8 @@ size_t applyLightCutoff(common::Scene& scene, float cutoff) {
         // Irradiance at distance d, facing the light: intensity x colour / d^2 (the brightest
         // channel decides). Where it falls to the cutoff, the light ends. A black light reaches
         // nowhere; a tiny positive range keeps range 0's meaning ("unbounded") out of reach.
-        double radiance = double(light.intensity) * double(std::max({light.color.r, light.color.g, light.color.b}));
+        double radiance =
+            double(light.intensity) * double(std::max({light.color.r, light.color.g, light.color.b}));
         light.range = float(std::max(std::sqrt(radiance / double(cutoff)), 1e-6));
         ++ranged;
     }
@@ -71,7 +73,9 @@ size_t applyLightCutoff(common::Scene& scene, float cutoff) {
 //< light-cutoff
 
 uint32_t putUnboundedFirst(std::vector<ShaderLight>& lights) {
-    auto unbounded = [](const ShaderLight& light) { return light.directional != 0u || !(light.range > 0.0f); };
+    auto unbounded = [](const ShaderLight& light) {
+        return light.directional != 0u || !(light.range > 0.0f);
+    };
     auto end = std::stable_partition(lights.begin(), lights.end(), unbounded);
     return uint32_t(end - lights.begin());
 }
@@ -95,8 +99,10 @@ void createTileBuffers(const common::Device& device, LightCullingPass& c, VkExte
     VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     c.tileBounds = common::createBuffer(device, tiles * 2 * sizeof(glm::vec4), storage,
                                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    c.tileCounts = common::createBuffer(device, tiles * sizeof(uint32_t), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    c.tileLists = common::createBuffer(device, tiles * sizeof(glm::uvec2), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    c.tileCounts =
+        common::createBuffer(device, tiles * sizeof(uint32_t), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    c.tileLists = common::createBuffer(device, tiles * sizeof(glm::uvec2), storage,
+                                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     c.indices = common::createBuffer(device, uint64_t(c.capacity) * sizeof(uint32_t), storage,
                                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     for (LightCullingFrame& frame : c.frames) {
@@ -127,11 +133,13 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
 }
 
 VkPipeline createComputePipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
-                                 const std::string& shader, const VkSpecializationInfo* specialization = nullptr) {
+                                 const std::string& shader,
+                                 const VkSpecializationInfo* specialization = nullptr) {
     VkShaderModule module = common::loadShaderModule(device, shader);
-    VkComputePipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-                                     .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module, specialization),
-                                     .layout = layout};
+    VkComputePipelineCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module, specialization),
+        .layout = layout};
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
     vkDestroyShaderModule(device.handle, module, nullptr);
@@ -162,18 +170,22 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                  common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)});
-    c.descriptorPool = common::createDescriptorPool(device, framesInFlight,
-                                                    {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-                                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * framesInFlight}});
-    VkMemoryPropertyFlags hostVisible = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    c.descriptorPool =
+        common::createDescriptorPool(device, framesInFlight,
+                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
+                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * framesInFlight}});
+    VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     c.stats = common::createBuffer(device, 4 * sizeof(uint32_t),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, hostVisible);
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   hostVisible);
     c.frames.resize(framesInFlight);
     for (LightCullingFrame& frame : c.frames) {
-        frame.view = common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+        frame.view =
+            common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
         frame.set = common::allocateDescriptorSet(device, c.descriptorPool, c.setLayout);
-        common::writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.view.handle,
-                                      sizeof(CullView));
+        common::writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      frame.view.handle, sizeof(CullView));
     }
     createTileBuffers(device, c, extent);
     return c;
@@ -181,8 +193,8 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
 
 void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& c,
                                  const LightPass& lightPass, const GBufferLayout& layout) {
-    VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout, lightPass.sceneLayout,
-                                          c.setLayout};
+    VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout,
+                                          lightPass.sceneLayout, c.setLayout};
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
     VkPipelineLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
                                     .setLayoutCount = 4,
@@ -190,14 +202,17 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
                                     .pushConstantRangeCount = 1,
                                     .pPushConstantRanges = &push};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &c.pipelineLayout));
-    c.bounds = createComputePipeline(device, cache, c.pipelineLayout,
-                                     std::string("chapter-15/light_cull_bounds") + layout.shaderSuffix + ".comp");
+    c.bounds =
+        createComputePipeline(device, cache, c.pipelineLayout,
+                              std::string("chapter-15/light_cull_bounds") + layout.shaderSuffix + ".comp");
     VkBool32 fill = VK_FALSE;
     VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
     VkSpecializationInfo specialization{1, &entry, sizeof(fill), &fill};
-    c.count = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
+    c.count =
+        createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
     fill = VK_TRUE;
-    c.fill = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
+    c.fill =
+        createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
     c.scan = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull_scan.comp");
 }
 
@@ -219,14 +234,16 @@ void updateLightCulling(LightCullingPass& c, uint32_t frame, const glm::mat4& vi
 }
 
 //> record-culling
-void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& c, const LightPass& lightPass, uint32_t frame,
-                        const LightView& view) {
+void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& c, const LightPass& lightPass,
+                        uint32_t frame, const LightView& view) {
     constexpr VkPipelineStageFlags2 compute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    constexpr VkAccessFlags2 readWrite = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    constexpr VkAccessFlags2 readWrite =
+        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
     // The previous frame's passes (culling, light pass, the host reading the statistics) are done
     // with the buffers before this frame clears the counts and rebuilds the lists.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_TRANSFER_BIT | compute, VK_ACCESS_2_TRANSFER_WRITE_BIT | readWrite);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | compute,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT | compute,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT | readWrite);
     vkCmdFillBuffer(cmd, c.tileCounts.handle, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, c.stats.handle, 0, VK_WHOLE_SIZE, 0);
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, compute, readWrite);
@@ -263,14 +280,16 @@ LightCullingStats readLightCullingStats(const LightCullingPass& c) {
 
 void reportLightCulling(const LightCullingPass& c) {
     LightCullingStats stats = readLightCullingStats(c);
-    std::printf("chapter-15: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a tile, "
-                "%u tiles over capacity (%u indices)\n",
-                stats.pairs, stats.litTiles, c.tiles.x * c.tiles.y, stats.maxTileLights, stats.overflowTiles,
-                c.capacity);
+    std::printf(
+        "chapter-15: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a tile, "
+        "%u tiles over capacity (%u indices)\n",
+        stats.pairs, stats.litTiles, c.tiles.x * c.tiles.y, stats.maxTileLights, stats.overflowTiles,
+        c.capacity);
 }
 
 void destroyLightCulling(const common::Device& device, LightCullingPass& c) {
-    for (VkPipeline pipeline : {c.bounds, c.count, c.scan, c.fill}) vkDestroyPipeline(device.handle, pipeline, nullptr);
+    for (VkPipeline pipeline : {c.bounds, c.count, c.scan, c.fill})
+        vkDestroyPipeline(device.handle, pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, c.pipelineLayout, nullptr);
     destroyTileBuffers(device, c);
     common::destroyBuffer(device, c.stats);

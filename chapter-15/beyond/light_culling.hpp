@@ -80,8 +80,9 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                                     uint32_t boundedLights, const GBufferLayout& layout, glm::vec3 boundsMin,
                                     glm::vec3 boundsMax);
 // The four pipelines, on the light pass's sets 0-2 (G-buffer, lights, scene info).
-void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& culling,
-                                 const LightPass& lightPass, const GBufferLayout& layout);
+void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache,
+                                 LightCullingPass& culling, const LightPass& lightPass,
+                                 const GBufferLayout& layout);
 // The tile grid and lists follow the window.
 void resizeLightCulling(const common::Device& device, LightCullingPass& culling, VkExtent2D extent);
 // This frame's camera: view matrix without its translation, projection, near plane.

@@ -62,9 +62,9 @@ struct LightView {
 
 // Beyond the book, --light-culling tiled (chapter-15/beyond/light_culling.cpp): the culling
 // passes' view of the frame, one uniform buffer per frame in flight, scalar layout. 100 bytes.
-// Pixels per tile side. 8 rather than the usual 16: with many small lights a tile's list holds the
-// lights of all its pixels, and 16x16 tiles made the lists (and the light pass) 1.6x longer at
-// 65,536 lights on lavapipe (docs/performance.md).
+// Pixels per tile side. 8 rather than the usual 16: a tile's list holds the lights of all its
+// pixels, and when lights are small on screen (65,536 of them) 16x16 tiles list several times
+// more lights than reach any one pixel (docs/performance.md, "Many lights").
 const uint LIGHT_TILE_SIZE = 8u;
 const uint TILE_OVERFLOW = 0xffffffffu;         // a tile whose list did not fit: it loops over every light
 struct CullView {

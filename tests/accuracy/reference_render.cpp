@@ -172,9 +172,10 @@ int main(int argc, char** argv) {
                 bool directional = light.type == common::Light::Type::Directional;
                 dvec3 where = directional ? dvec3(light.direction) : dvec3(light.position) - camera;
                 // A point light's range (scene file "range"): the windowed falloff; none, unbounded.
-                double window = directional ? 1.0 : ref::rangeWindow(glm::dot(where - P, where - P), light.range);
-                color += ref::evaluateLight(directional, where, dvec3(light.color), light.intensity * window, P,
-                                            N, V, a, material.z, material.y);
+                double window =
+                    directional ? 1.0 : ref::rangeWindow(glm::dot(where - P, where - P), light.range);
+                color += ref::evaluateLight(directional, where, dvec3(light.color), light.intensity * window,
+                                            P, N, V, a, material.z, material.y);
             }
             image[p] = color;
         }

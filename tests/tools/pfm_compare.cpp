@@ -32,7 +32,8 @@ bool readPfm(const char* path, Pfm& pfm) {
     double scale = 0;
     in >> magic >> pfm.width >> pfm.height >> scale;
     in.get();
-    if (!in || (magic != "PF" && magic != "Pf") || scale >= 0 || pfm.width <= 0 || pfm.height <= 0) return false;
+    if (!in || (magic != "PF" && magic != "Pf") || scale >= 0 || pfm.width <= 0 || pfm.height <= 0)
+        return false;
     pfm.channels = magic == "PF" ? 3 : 1;
     pfm.values.resize(size_t(pfm.width) * size_t(pfm.height) * size_t(pfm.channels));
     in.read(reinterpret_cast<char*>(pfm.values.data()), std::streamsize(pfm.values.size() * sizeof(float)));
@@ -75,13 +76,14 @@ int main(int argc, char** argv) {
     }
     size_t pixel = worst / size_t(a.channels);
     double litFraction = double(lit) / double(a.values.size());
-    std::printf("pfm_compare: %zu values, %.1f%% lit; worst at pixel (%zu, %zu): %.9g against %.9g, %.3g of the "
-                "bound (%.3g relative, %g lights); %zu values beyond it\n",
-                a.values.size(), litFraction * 100.0, pixel % size_t(a.width), pixel / size_t(a.width),
-                double(a.values[worst]), double(b.values[worst]), worstRatio, relative, lights, failures);
+    std::printf(
+        "pfm_compare: %zu values, %.1f%% lit; worst at pixel (%zu, %zu): %.9g against %.9g, %.3g of the "
+        "bound (%.3g relative, %g lights); %zu values beyond it\n",
+        a.values.size(), litFraction * 100.0, pixel % size_t(a.width), pixel / size_t(a.width),
+        double(a.values[worst]), double(b.values[worst]), worstRatio, relative, lights, failures);
     if (litFraction < minLit) {
-        std::printf("pfm_compare: only %.1f%% of the values are lit, fewer than --min-lit %g\n", litFraction * 100.0,
-                    minLit);
+        std::printf("pfm_compare: only %.1f%% of the values are lit, fewer than --min-lit %g\n",
+                    litFraction * 100.0, minLit);
         return 1;
     }
     return failures == 0 ? 0 : 1;
