@@ -106,8 +106,9 @@ void createTileBuffers(const common::Device& device, LightCullingPass& c, VkExte
     c.indices = common::createBuffer(device, uint64_t(c.capacity) * sizeof(uint32_t), storage,
                                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     for (LightCullingFrame& frame : c.frames) {
-        const common::Buffer* buffers[] = {&c.tileBounds, &c.tileCounts, &c.tileLists, &c.indices, &c.stats};
-        for (uint32_t binding = 1; binding <= 5; ++binding)
+        const common::Buffer* buffers[] = {&c.tileBounds, &c.tileCounts, &c.tileLists,
+                                           &c.indices,    &c.stats,      &c.large};
+        for (uint32_t binding = 1; binding <= 6; ++binding)
             common::writeBufferDescriptor(device, frame.set, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                           buffers[binding - 1]->handle, VK_WHOLE_SIZE);
     }
@@ -169,16 +170,22 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                  common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)});
+                 common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                 common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)});
     c.descriptorPool =
         common::createDescriptorPool(device, framesInFlight,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * framesInFlight}});
+                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6 * framesInFlight}});
     VkMemoryPropertyFlags hostVisible =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     c.stats = common::createBuffer(device, 4 * sizeof(uint32_t),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    hostVisible);
+    // A VkDispatchIndirectCommand (16 bytes with the std430 padding), then one index per light.
+    c.large = common::createBuffer(device, 16 + uint64_t(std::max(boundedLights, 1u)) * sizeof(uint32_t),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     c.frames.resize(framesInFlight);
     for (LightCullingFrame& frame : c.frames) {
         frame.view =
@@ -205,14 +212,16 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
     c.bounds =
         createComputePipeline(device, cache, c.pipelineLayout,
                               std::string("chapter-15/light_cull_bounds") + layout.shaderSuffix + ".comp");
-    VkBool32 fill = VK_FALSE;
-    VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-    VkSpecializationInfo specialization{1, &entry, sizeof(fill), &fill};
-    c.count =
-        createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
-    fill = VK_TRUE;
-    c.fill =
-        createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp", &specialization);
+    // light_cull.comp's FILL and LARGE.
+    VkBool32 constants[2] = {VK_FALSE, VK_FALSE};
+    VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}};
+    VkSpecializationInfo specialization{2, entries, sizeof(constants), constants};
+    for (VkPipeline* pipeline : {&c.count, &c.countLarge, &c.fill, &c.fillLarge}) {
+        constants[0] = pipeline == &c.fill || pipeline == &c.fillLarge;
+        constants[1] = pipeline == &c.countLarge || pipeline == &c.fillLarge;
+        *pipeline = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp",
+                                          &specialization);
+    }
     c.scan = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull_scan.comp");
 }
 
@@ -239,13 +248,16 @@ void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& c, const Li
     constexpr VkPipelineStageFlags2 compute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     constexpr VkAccessFlags2 readWrite =
         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    // The previous frame's passes (culling, light pass, the host reading the statistics) are done
-    // with the buffers before this frame clears the counts and rebuilds the lists.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | compute,
+    constexpr VkPipelineStageFlags2 indirect = VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT;
+    // The previous frame's passes (culling, its indirect dispatches, the light pass) are done with
+    // the buffers before this frame clears the counts and rebuilds the lists.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | compute | indirect,
                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT | compute,
                   VK_ACCESS_2_TRANSFER_WRITE_BIT | readWrite);
     vkCmdFillBuffer(cmd, c.tileCounts.handle, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, c.stats.handle, 0, VK_WHOLE_SIZE, 0);
+    const uint32_t noLargeLights[3] = {0, 1, 1};  // groups x, y, z of the large lights' dispatches
+    vkCmdUpdateBuffer(cmd, c.large.handle, 0, sizeof(noLargeLights), noLargeLights);
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, compute, readWrite);
 
     VkDescriptorSet sets[] = {lightPass.attachmentsSet, lightPass.frames[frame].lightsSet,
@@ -259,12 +271,20 @@ void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& c, const Li
     memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, compute, readWrite);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.count);  // lights per tile
     if (lightGroups > 0) vkCmdDispatch(cmd, lightGroups, 1, 1);
+    memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, compute | indirect,
+                  readWrite | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.countLarge);  // ... of the large lights
+    vkCmdDispatchIndirect(cmd, c.large.handle, 0);
     memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, compute, readWrite);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.scan);  // counts to offsets
     vkCmdDispatch(cmd, 1, 1, 1);
     memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, compute, readWrite);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.fill);  // the lists
     if (lightGroups > 0) vkCmdDispatch(cmd, lightGroups, 1, 1);
+    memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, compute | indirect,
+                  readWrite | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.fillLarge);  // ... of the large lights
+    vkCmdDispatchIndirect(cmd, c.large.handle, 0);
     // The lists to the light pass (either form); the statistics to the host after the fence.
     memoryBarrier(cmd, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | compute | VK_PIPELINE_STAGE_2_HOST_BIT,
@@ -288,11 +308,12 @@ void reportLightCulling(const LightCullingPass& c) {
 }
 
 void destroyLightCulling(const common::Device& device, LightCullingPass& c) {
-    for (VkPipeline pipeline : {c.bounds, c.count, c.scan, c.fill})
+    for (VkPipeline pipeline : {c.bounds, c.count, c.countLarge, c.scan, c.fill, c.fillLarge})
         vkDestroyPipeline(device.handle, pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, c.pipelineLayout, nullptr);
     destroyTileBuffers(device, c);
     common::destroyBuffer(device, c.stats);
+    common::destroyBuffer(device, c.large);
     for (LightCullingFrame& frame : c.frames) common::destroyBuffer(device, frame.view);
     vkDestroyDescriptorPool(device.handle, c.descriptorPool, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, c.setLayout, nullptr);

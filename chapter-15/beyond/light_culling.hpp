@@ -7,9 +7,11 @@
 // them on the GPU each frame, per 8x8-pixel tile, in four compute passes:
 //   bounds (light_cull_bounds.comp): each tile's box of surface positions, from the G-buffer;
 //   count (light_cull.comp): each light with a range adds 1 to every tile of its screen rectangle
-//     whose box its sphere reaches -- work proportional to the tiles a light covers;
+//     whose box its sphere reaches -- work proportional to the tiles a light covers; one
+//     invocation per light, one group per light for the few whose rectangle is large;
 //   scan (light_cull_scan.comp): counts to list offsets, exactly sized;
-//   fill (light_cull.comp again): each light writes its index into those tiles' lists.
+//   fill (light_cull.comp again): each light writes its index into those tiles' lists (again per
+//     light, then per large light).
 // The light pass (both forms) then loops over the unbounded lights and its tile's list.
 #pragma once
 
@@ -66,13 +68,15 @@ struct LightCullingPass {
     common::Buffer tileLists;   // uvec2 per tile
     common::Buffer indices;     // `capacity` uints
     common::Buffer stats;       // CullStats, host-visible: read after the run
+    common::Buffer large;       // the large lights and their indirect dispatch
     VkExtent2D extent{};
     glm::uvec2 tiles{0};
     uint32_t capacity = 0;
     uint32_t boundedLights = 0;  // lights with a range
     float margin = 0.0f;         // CullView::margin, from the G-buffer layout and the scene's size
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline bounds = VK_NULL_HANDLE, count = VK_NULL_HANDLE, scan = VK_NULL_HANDLE, fill = VK_NULL_HANDLE;
+    VkPipeline bounds = VK_NULL_HANDLE, count = VK_NULL_HANDLE, countLarge = VK_NULL_HANDLE,
+               scan = VK_NULL_HANDLE, fill = VK_NULL_HANDLE, fillLarge = VK_NULL_HANDLE;
 };
 
 // The set layout, buffers and per-frame sets (before the light pass, whose pipelines bind the set).

@@ -25,4 +25,8 @@ layout(std430, set = 3, binding = 5) buffer CullStats {
     uint overflowTiles;  // tiles whose list did not fit (shaded with every light)
     uint litTiles;       // tiles that some light with a range reaches
 };
+layout(std430, set = 3, binding = 6) buffer LargeLights {
+    uvec3 largeDispatch;  // a VkDispatchIndirectCommand: one group per large light
+    uint largeLights[];   // lights whose rectangle has more than LARGE_LIGHT_TILES tiles
+};
 //< cull-set
