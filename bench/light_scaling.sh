@@ -10,6 +10,7 @@
 #   bench/light_scaling.sh --gpu BUILD_DIR OUT_DIR on a machine with an NVIDIA GPU (headless):
 #                                                  1920x1080 and 3840x2160, and one validated
 #                                                  frame of every configuration; results in OUT_DIR
+#   bench/light_scaling.sh --cutoff [BUILD_DIR]    the cutoff curve only (lavapipe); then the docs
 #   bench/light_scaling.sh --report [BUILD_DIR]    the docs from bench/results/*.tsv only
 #
 # Results go to bench/results/light-scaling-*.tsv and light-cutoff-lavapipe.tsv (kept in the
@@ -36,9 +37,8 @@ measure() {
     "$bin/chapter-15" --headless --device "$device" --width "$w" --height "$h" \
         --scene "$bin/scenes/lights-$n/scene.json" --light-culling "$culling" --light-pass "$form" \
         --benchmark --warmup "$7" --frames "$8" > "$work/run.txt"
-    field "$work/run.txt" device > "$work/device.txt"
-    field "$work/run.txt" driver > "$work/driver.txt"
-    printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(cat "$work/device.txt")" "$w" "$h" "$n" "$culling" "$form" \
+    printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
+        "$w" "$h" "$n" "$culling" "$form" \
         "$(median "$work/run.txt" frame)" "$(median "$work/run.txt" cull)" "$(median "$work/run.txt" light)"
 }
 
@@ -60,20 +60,19 @@ scaling() {
 
 # cutoff: lavapipe, 1280x720, lights-1024 without ranges; for each cutoff the frame time (tiled,
 # fragment) and the error of the windowed image against the fp64 reference of the unbounded one,
-# both from the reference G-buffer layout (fp32 positions: the error is the window's alone).
+# both from the reference G-buffer layout (fp32 positions: the error is the window's alone). Small
+# cutoffs reach as far as the loop and cost as much (tens of seconds a frame): 2 frames each.
 cutoff() {
     local scene=$work/lights-1024-unbounded.json e
     "$build/tools/generate_light_scene" "$bin/scenes/default" 1024 "$scene" --no-range > /dev/null
     local size=(--headless --device llvmpipe --width 1280 --height 720 --scene "$scene" --gbuffer reference)
     echo "light_scaling: cutoff, the unbounded loop" >&2
-    "$bin/chapter-15" "${size[@]}" --dump "$work/unbounded" > /dev/null
-    "$bin/chapter-15" "${size[@]}" --benchmark --warmup 0 --frames 2 > "$work/run.txt"
-    printf 'none\t%s\t%s\t-\n' "$(median "$work/run.txt" frame)" "$(median "$work/run.txt" light)"
+    "$bin/chapter-15" "${size[@]}" --benchmark --warmup 0 --frames 1 --dump "$work/unbounded" > "$work/run.txt"
+    printf 'none\t%s\t%s\t-\t-\n' "$(median "$work/run.txt" frame)" "$(median "$work/run.txt" light)"
     for e in 1 0.3 0.1 0.03 0.01 0.003 0.001 0.0003 0.0001; do
         echo "light_scaling: cutoff $e" >&2
-        "$bin/chapter-15" "${size[@]}" --light-culling tiled --light-cutoff "$e" --dump "$work/cut-$e" > /dev/null
-        "$bin/chapter-15" "${size[@]}" --light-culling tiled --light-cutoff "$e" --benchmark --warmup 2 --frames 10 \
-            > "$work/run.txt"
+        "$bin/chapter-15" "${size[@]}" --light-culling tiled --light-cutoff "$e" --benchmark --warmup 0 --frames 2 \
+            --dump "$work/cut-$e" > "$work/run.txt"
         "$build/tests/bin/reference_render" "$scene" "$work/unbounded" --compare "cut=$work/cut-$e/light.pfm" \
             > "$work/ref.txt" || true
         # reference_render's line: "cut   max abs A/255  RMSE R/255 ..."
@@ -105,7 +104,10 @@ case "${1:-}" in
     exit 0
     ;;
 --report)
+    ;;
+--cutoff)
     build=$(cd "${2:-$root/build}" && pwd) bin=$build/bin
+    { printf 'cutoff\tframe_ms\tlight_ms\tmax_abs_255\trmse_255\n'; cutoff; } > "$results/light-cutoff-lavapipe.tsv"
     ;;
 *)
     build=$(cd "${1:-$root/build}" && pwd) bin=$build/bin

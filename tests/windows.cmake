@@ -4,7 +4,8 @@
 # a native Windows build runs them directly. Every chapter renders its default scene and every --view, compared with the same
 # golden images as the Linux build within the same tolerance; bad command lines exit 2 with one
 # line; the data is found next to the .exe from any working directory, also from a directory
-# whose name has spaces and non-ASCII characters; chapter-15 runs in a window with a resize.
+# whose name has spaces and non-ASCII characters; chapter-15 runs in a window with a resize, and
+# with tiled light culling on a many-light scene.
 #
 # Validation: Debian has no Windows build of the validation layer. Under Wine the Linux layer is
 # loaded by the Linux loader below winevulkan (VK_LOADER_LAYERS_ENABLE), with synchronization
@@ -97,6 +98,15 @@ foreach(number 06 10 14 15)
         COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --headless --frames-in-flight 4
         EXPECT_EXIT 2 EXPECT_STDERR "--frames-in-flight" ONE_LINE_STDERR)
 endforeach()
+# Beyond the book: tiled light culling (compute passes, an indirect dispatch) on the many-light
+# scene, against the Linux build's golden image.
+windows_test(windows.chapter-15-lights-1024-tiled
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE}
+            --scene $<TARGET_FILE_DIR:chapter-15>/scenes/lights-1024/scene.json --light-culling tiled
+            --screenshot ${WIN_OUT}/chapter-15-lights-1024.png EXPECT_STDOUT "1024 lights.*light culling" QUIET_STDERR)
+windows_image(windows.chapter-15-lights-1024-tiled ${WIN_OUT}/chapter-15-lights-1024.png --size 640 360
+    --golden ${GOLDEN}/chapter-15-lights-1024.png ${GOLDEN_MATCH})
+
 windows_test(windows.chapter-15-missing-scene
     COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --headless --device llvmpipe --scene ${WIN_OUT}/no-such-scene.json
     EXPECT_EXIT 2 EXPECT_STDERR "no-such-scene.json: no such file" ONE_LINE_STDERR)
