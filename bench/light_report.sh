@@ -80,7 +80,7 @@ for tsv in "$results/light-scaling-lavapipe.tsv" "$results/light-scaling-gpu.tsv
                 printf "%d", k
                 printf " %s %s %s %s\n", (l[k, "fragment"] == "" ? "NaN" : l[k, "fragment"]), (l[k, "compute"] == "" ? "NaN" : l[k, "compute"]),
                     f[k, "fragment"], f[k, "compute"] } }' "$tsv" > "$work/$name.dat"
-        plots+=("$work/$name.dat|$(device "$tsv" "$size"), $size")
+        plots+=("$work/$name.dat|$(device "$tsv" "$size" | sed 's/ (.*//'), $size")
     done
 done
 if [ -f "$results/light-scaling-gpu-validation.txt" ]; then
@@ -111,20 +111,25 @@ if [ -f "$tsv" ]; then
     awk -F'\t' 'NR == 1 { print "| --light-cutoff | frame (ms) | light pass (ms) | max abs error (/255) | RMSE (/255) |"; print "|---|---|---|---|---|"; next }
         { printf "| %s | %s | %s | %s | %s |\n", ($1 == "none" ? "none (the loop, unbounded)" : $1), $2, $3, $4, $5 }' "$tsv" > "$work/cutoff.md"
     paste_section "$root/docs/accuracy.md" light-cutoff "$work/cutoff.md"
-    awk -F'\t' 'NR > 1 && $1 != "none" {print $2, $4, $1}' "$tsv" > "$work/cutoff.dat"
+    awk -F'\t' 'NR > 1 && $1 != "none" {print $2, $4, $1, $5}' "$tsv" > "$work/cutoff.dat"
     loop=$(awk -F'\t' '$1 == "none" {print $2}' "$tsv")
     gnuplot <<GNUPLOT
-set terminal svg size 760,440 font "sans,11" background "#ffffff"
+set terminal svg size 760,460 font "sans,11" background "#ffffff"
 set output "$root/docs/images/light-cutoff.svg"
-set title "Light reach: frame time against error (lights-1024, lavapipe, 1280x720)"
-set xlabel "GPU frame time, median (ms), tiled culling"
-set ylabel "max abs error on screen (/255), against the unbounded falloff"
-set logscale y
+set title "Light reach: frame time against error (lights-1024 without ranges, lavapipe, 1280x720)" font ",10"
+set xlabel "GPU frame time, median (ms): tiled culling with --light-cutoff E"
+set ylabel "error on screen (/255), against the unbounded falloff"
+set logscale xy
+set xrange [100:20000]
 set grid
 set arrow from graph 0, first 1 to graph 1, first 1 nohead dashtype 2
-set label "1/255: invisible below" at graph 0.02, first 1.25
-set key off
-plot "$work/cutoff.dat" using 1:2 with linespoints pointtype 7, "" using 1:2:(sprintf("E = %s", stringcolumn(3))) with labels offset 1.5,0.6 font ",9"
+set label "1/255" at graph 0.01, first 1.3
+set arrow from first $loop, graph 0 to first $loop, graph 1 nohead dashtype 3
+set label "the loop, unbounded" at first $loop, graph 0.97 right offset -0.5,0
+set key bottom left
+plot "$work/cutoff.dat" using 1:2 with linespoints pointtype 7 title "max abs", \
+     "" using 1:4 with linespoints pointtype 5 title "RMSE", \
+     "" using 1:2:(sprintf("%s", stringcolumn(3))) with labels offset 0,0.8 font ",8" notitle
 GNUPLOT
     echo "light_report.sh: the unbounded loop's frame: $loop ms" >&2
 fi
