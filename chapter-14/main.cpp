@@ -7,7 +7,8 @@
 // buffer per frame, submitted once with vkQueueSubmit2:
 //   scene pass (scene_pass.cpp): the scene into the G-buffer (albedo + depth);
 //   light pass (light_pass.cpp): a full-screen triangle into an R32G32B32A32_SFLOAT image;
-//   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional).
+//   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional);
+//   GUI pass   (gui_pass.cpp, --gui): Dear ImGui's overlay drawn over it, as the book's GuiRender.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -21,12 +22,14 @@
 #include "common/commands.hpp"
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
+#include "common/gui.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
 #include "common/target.hpp"
+#include "gui_pass.hpp"
 #include "light_pass.hpp"
 #include "scene_pass.hpp"
 
@@ -36,8 +39,20 @@ const common::ChapterInfo kChapter{
     "chapter-14",
     "deferred rendering with dynamic rendering and synchronization2 (the book's chapter 14)",
     {"final", "albedo", "depth"},
-    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}},
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}, common::kGuiSwitch},
+    {common::kGuiClickChoice},
 };
+
+//> overlay
+// The overlay's widgets (--gui): the timings window with the view selector (common/gui.cpp), and
+// FXAA in the same window.
+void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa) {
+    common::guiTimingsWindow(gui, run, kChapter.views, view, {"V  cycles the views", "F  toggles FXAA"});
+    ImGui::Begin("Frame");  // appends to the timings window
+    ImGui::Checkbox("FXAA (F)", fxaa);
+    ImGui::End();
+}
+//< overlay
 
 void run(const common::Options& options) {
     //> setup
@@ -72,8 +87,16 @@ void run(const common::Options& options) {
     LightView lightView{int(options.view), scene.camera.near, scene.camera.far};
     bool fxaa = options.switches.count("fxaa") != 0;
 
-    // --frames, --resize, --benchmark (the three passes timed), --screenshot.
-    common::RunControl run = common::createRunControl(options, device, {"scene", "light", "post"});
+    // --gui: Dear ImGui's context and input (common/gui.cpp) and the pass that draws it.
+    common::Gui gui = common::createGui(options, target);
+    GuiPass guiPass;
+    if (gui.enabled)
+        guiPass = createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+
+    // --frames, --resize, --benchmark (each pass timed), --screenshot.
+    std::vector<std::string> passes{"scene", "light", "post"};
+    if (gui.enabled) passes.push_back("gui");
+    common::RunControl run = common::createRunControl(options, device, passes);
     //< setup
 
     //> resize
@@ -94,14 +117,17 @@ void run(const common::Options& options) {
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 
-        if (target.window) {  // camera; V cycles the views, F toggles FXAA
+        ImDrawData* overlay =
+            common::drawGui(gui, target, frame, [&] { overlayWidgets(gui, run, &lightView.view, &fxaa); });
+        bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
+        if (target.window) {  // camera; V cycles the views, F toggles FXAA (unless the GUI has them)
             double now = glfwGetTime();
             float speed = glm::length(gpuScene.boundsMax - gpuScene.boundsMin) * 0.15f;
-            common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed);
+            common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed, keys, mouse);
             lastTime = now;
-            if (common::pressedOnce(target.window, viewKey))
+            if (common::pressedOnce(target.window, viewKey) && keys)
                 lightView.view = (lightView.view + 1) % int(kChapter.views.size());
-            if (common::pressedOnce(target.window, fxaaKey)) fxaa = !fxaa;
+            if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
         }
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
@@ -112,8 +138,10 @@ void run(const common::Options& options) {
             continue;
         }
         VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+        if (gui.enabled) updateGuiBuffers(device, guiPass, slot, overlay);
 
-        // One command buffer for the whole frame: three passes, joined by barriers only.
+        // One command buffer for the whole frame: three passes (four with --gui), joined by
+        // barriers only.
         setCamera(
             scenePass, slot,
             common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near, scene.camera.far),
@@ -127,8 +155,12 @@ void run(const common::Options& options) {
         common::timePassEnd(run, sync.commandBuffer, slot, 0);
         recordLightPass(sync.commandBuffer, lightPass, lightView);
         common::timePassEnd(run, sync.commandBuffer, slot, 1);
-        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
         common::timePassEnd(run, sync.commandBuffer, slot, 2);
+        if (gui.enabled) {
+            recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
+            common::timePassEnd(run, sync.commandBuffer, slot, 3);
+        }
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
@@ -168,10 +200,19 @@ void run(const common::Options& options) {
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (camera.position != scene.camera.position || camera.yaw != scene.camera.yaw ||
+        camera.pitch != scene.camera.pitch)
+        std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
     common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
+    if (gui.enabled)
+        std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    guiPass.growths, guiPass.largestVertices, guiPass.largestIndices);
 
     //> teardown
     common::destroyRunControl(device, run);
+    if (gui.enabled) destroyGuiPass(device, guiPass);
+    common::destroyGui(gui);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);

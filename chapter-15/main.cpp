@@ -6,7 +6,8 @@
 //   light pass (light_pass.cpp): Cook-Torrance shading (shaders/include/pbr.glsl) of every pixel
 //     by the scene's directional and point lights, from a scalar-layout storage buffer, plus
 //     ambient light, into an R32G32B32A32_SFLOAT image;
-//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional.
+//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional;
+//   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
 // What goes beyond the book -- the reference and compact G-buffer layouts with reversed-Z, the
 // light pass as a compute dispatch, --check-output and --dump, light ranges and tiled light
 // culling -- is in beyond/, and enters this file only where an option selects it.
@@ -28,6 +29,8 @@
 #include "common/commands.hpp"
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
+#include "common/gui.hpp"
+#include "common/gui_pass.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/post_pass.hpp"
@@ -46,7 +49,8 @@ const common::ChapterInfo kChapter{
     "deferred rendering II: PBR G-buffer, normal maps, lights (the book's chapter 15)",
     {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of light.frag's `view`
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
-     {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"}},
+     {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
+     common::kGuiSwitch},
     {{"gbuffer", gbufferLayoutNames(), gbufferLayoutHelp()},
      {"light-pass",
       {"fragment", "compute"},
@@ -62,7 +66,8 @@ const common::ChapterInfo kChapter{
       {},
       "give each point light without a range the distance where its irradiance falls to this value "
       "(a positive number)"},
-     {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"}},
+     {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"},
+     common::kGuiClickChoice},
 };
 
 //> light-controls
@@ -90,25 +95,17 @@ LightControls findControlledLights(const common::Scene& scene) {
     return controls;
 }
 
-void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                float seconds, float speed) {
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT))) {
-        controls.sunAngle += (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds;
-        controls.sunAngle = glm::clamp(controls.sunAngle, 180.0f, 360.0f);
-        float radians = glm::radians(controls.sunAngle);
-        scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
-        controls.moved = true;
-    }
-    if (controls.point < 0) return;
+void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
+    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
+    float radians = glm::radians(controls.sunAngle);
+    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
+    controls.moved = true;
+}
+
+void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                     glm::vec3 position) {
     common::Light& light = scene.lights[size_t(controls.point)];
-    glm::vec3 step(0.0f);
-    if (held(GLFW_KEY_1)) step.y += 1.0f;
-    if (held(GLFW_KEY_2)) step.y -= 1.0f;
-    if (held(GLFW_KEY_3)) step.z -= 1.0f;
-    if (held(GLFW_KEY_4)) step.z += 1.0f;
-    if (step == glm::vec3(0.0f)) return;
-    light.position += step * speed * seconds;
+    light.position = position;
     controls.moved = true;
     if (light.marker < 0) return;
     common::Transform transform = scene.models[size_t(light.marker)].transform;
@@ -116,7 +113,75 @@ void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scen
     for (common::Draw& draw : gpuScene.draws)
         if (draw.instance == uint32_t(light.marker)) draw.model = transform.matrix();
 }
+
+void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                float seconds, float speed) {
+    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
+        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
+    if (controls.point < 0) return;
+    glm::vec3 step(0.0f);
+    if (held(GLFW_KEY_1)) step.y += 1.0f;
+    if (held(GLFW_KEY_2)) step.y -= 1.0f;
+    if (held(GLFW_KEY_3)) step.z -= 1.0f;
+    if (held(GLFW_KEY_4)) step.z += 1.0f;
+    if (step == glm::vec3(0.0f)) return;
+    placePointLight(controls, scene, gpuScene,
+                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
+}
 //< light-controls
+
+//> overlay
+// The overlay (--gui): the timings window with the view selector (common/gui.cpp), FXAA and,
+// beyond the book, the G-buffer layout and the light pass's form (switched at the next frame);
+// a second window with the book's light controls and the ambient light.
+struct RendererChoice {
+    int layout = 0;     // index into gbufferLayouts()
+    int lightPass = 0;  // LightPassKind
+};
+
+bool combo(const char* label, const std::vector<std::string>& names, int* index) {
+    bool changed = false;
+    ImGui::SetNextItemWidth(140.0f);
+    if (ImGui::BeginCombo(label, names[size_t(*index)].c_str())) {
+        for (int i = 0; i < int(names.size()); ++i)
+            if (ImGui::Selectable(names[size_t(i)].c_str(), i == *index)) changed = *index != i, *index = i;
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
+                    RendererChoice& renderer, LightControls& controls, common::Scene& scene,
+                    common::GpuScene& gpuScene) {
+    common::guiTimingsWindow(gui, run, kChapter.views, view,
+                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
+                              "1/2, 3/4  move the point light up/down, along z"});
+    ImGui::Begin("Frame");  // appends to the timings window
+    ImGui::Checkbox("FXAA (F)", fxaa);
+    combo("G-buffer", gbufferLayoutNames(), &renderer.layout);
+    combo("light pass", {"fragment", "compute"}, &renderer.lightPass);
+    ImGui::End();
+
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    ImGui::PushItemWidth(180.0f);
+    float angle = controls.sunAngle;
+    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
+        setSunAngle(controls, scene, angle);
+    if (controls.point >= 0) {
+        common::Light& point = scene.lights[size_t(controls.point)];
+        glm::vec3 position = point.position;
+        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
+            placePointLight(controls, scene, gpuScene, position);
+        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
+    }
+    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+//< overlay
 
 //> shader-lights
 std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
@@ -161,21 +226,22 @@ void run(const common::Options& options) {
 
     common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-15");
     // The book's G-buffer, or (--gbuffer) one of the layouts beyond it: gbuffer_layout.hpp.
-    const GBufferLayout& layout =
-        *gbufferLayouts().at(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0);
+    RendererChoice renderer{int(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0),
+                            int(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0)};
+    RendererChoice active = renderer;  // what the passes were made for
+    const GBufferLayout* layout = gbufferLayouts().at(size_t(renderer.layout));
     ScenePass scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
-                                          options.framesInFlight, layout);
-    LightPassKind lightKind =
-        LightPassKind(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0);
+                                          options.framesInFlight, *layout);
+    LightPassKind lightKind = LightPassKind(renderer.lightPass);
     LightCullingPass culling;  // beyond the book: --light-culling tiled
     if (lightOptions.culling == LightCulling::Tiled)
         culling = createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
-                                     layout, gpuScene.boundsMin, gpuScene.boundsMax);
+                                     *layout, gpuScene.boundsMin, gpuScene.boundsMax);
     LightPass lightPass =
-        createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, layout, lightKind,
+        createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, *layout, lightKind,
                         options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
     if (culling.setLayout)
-        createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, layout);
+        createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, *layout);
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
 
@@ -185,15 +251,21 @@ void run(const common::Options& options) {
     LightView lightView{.boundsMin = glm::vec4(gpuScene.boundsMin, 0.0f),
                         .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
                         .view = int(options.view),
-                        .reversedZ = layout.reversedZ ? 1 : 0};
+                        .reversedZ = layout->reversedZ ? 1 : 0};
     bool fxaa = options.switches.count("fxaa") != 0;
+
+    // --gui: Dear ImGui's context and input (common/gui.cpp) and the pass that draws it.
+    common::Gui gui = common::createGui(options, target);
+    common::GuiPass guiPass;
+    if (gui.enabled)
+        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
 
     // --frames, --resize, --benchmark (each pass timed), --screenshot.
     bool tiled = lightOptions.culling == LightCulling::Tiled;
-    common::RunControl run =
-        common::createRunControl(options, device,
-                                 tiled ? std::vector<std::string>{"scene", "cull", "light", "post"}
-                                       : std::vector<std::string>{"scene", "light", "post"});
+    std::vector<std::string> passes{"scene", "light", "post"};
+    if (tiled) passes.insert(passes.begin() + 1, "cull");
+    if (gui.enabled) passes.push_back("gui");
+    common::RunControl run = common::createRunControl(options, device, passes);
     //< setup
 
     auto recreateTarget = [&] {
@@ -205,6 +277,36 @@ void run(const common::Options& options) {
         return true;
     };
 
+    //> switch-renderer
+    // Beyond the book, from the overlay: another G-buffer layout or light-pass form, live. Every
+    // pass that depends on them is made again (the G-buffer with the scene pass); the scene, the
+    // window and the run go on.
+    auto switchRenderer = [&] {
+        VK_CHECK(vkDeviceWaitIdle(device.handle));
+        common::destroyPostPass(device, postPass);
+        destroyLightPass(device, lightPass);
+        if (tiled) destroyLightCulling(device, culling);
+        destroyScenePass(device, scenePass);
+        active = renderer;
+        layout = gbufferLayouts().at(size_t(renderer.layout));
+        lightKind = LightPassKind(renderer.lightPass);
+        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
+                                    options.framesInFlight, *layout);
+        if (tiled)
+            culling =
+                createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
+                                   *layout, gpuScene.boundsMin, gpuScene.boundsMax);
+        lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, *layout,
+                                    lightKind, options.framesInFlight, uint32_t(scene.lights.size()),
+                                    culling.setLayout);
+        if (tiled) createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, *layout);
+        postPass = common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
+        lightView.reversedZ = layout->reversedZ ? 1 : 0;
+        std::printf("chapter-15: switched to the %s G-buffer, %s light pass\n", layout->name,
+                    lightKind == LightPassKind::Compute ? "compute" : "fragment");
+    };
+    //< switch-renderer
+
     //> frame-loop
     double lastTime = glfwGetTime();
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
@@ -214,15 +316,20 @@ void run(const common::Options& options) {
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 
-        if (target.window) {  // camera, lights; V cycles the views, F toggles FXAA
+        ImDrawData* overlay = common::drawGui(gui, target, frame, [&] {
+            overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene);
+        });
+        if (renderer.layout != active.layout || renderer.lightPass != active.lightPass) switchRenderer();
+        bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
+        if (target.window) {  // camera, lights; V cycles the views, F toggles FXAA (unless the GUI has them)
             double now = glfwGetTime();
             float seconds = float(now - lastTime);
             lastTime = now;
-            common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f);
-            moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
-            if (common::pressedOnce(target.window, viewKey))
+            common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
+            if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
+            if (common::pressedOnce(target.window, viewKey) && keys)
                 lightView.view = (lightView.view + 1) % int(kChapter.views.size());
-            if (common::pressedOnce(target.window, fxaaKey)) fxaa = !fxaa;
+            if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
         }
         camera.yaw += lightOptions.orbitDegrees;  // --orbit (beyond the book): 0 unless asked
 
@@ -234,14 +341,15 @@ void run(const common::Options& options) {
             continue;
         }
         VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+        if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
 
         // This frame's uniforms: camera, lights (they may have moved), scene info.
         glm::mat4 view = common::viewMatrix(camera);
         Projection projection =
-            layout.reversedZ ? reversedZProjection(scene, camera, gpuScene, target.extent)
-                             : Projection{common::projectionMatrix(scene.camera.fov, target.extent,
-                                                                   scene.camera.near, scene.camera.far),
-                                          scene.camera.near, scene.camera.far};
+            layout->reversedZ ? reversedZProjection(scene, camera, gpuScene, target.extent)
+                              : Projection{common::projectionMatrix(scene.camera.fov, target.extent,
+                                                                    scene.camera.near, scene.camera.far),
+                                           scene.camera.near, scene.camera.far};
         setCamera(scenePass, slot, projection.matrix, view);
         lightView.clipToCameraRelative = glm::inverse(projection.matrix * glm::mat4(glm::mat3(view)));
         lightView.near = projection.near;
@@ -269,8 +377,12 @@ void run(const common::Options& options) {
         recordLightPass(sync.commandBuffer, lightPass, slot, lightView,
                         tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
         common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa);
+        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
         common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        if (gui.enabled) {
+            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        }
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -299,10 +411,17 @@ void run(const common::Options& options) {
     }
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     //< frame-loop
+    if (camera.position != scene.camera.position || camera.yaw != scene.camera.yaw ||
+        camera.pitch != scene.camera.pitch)
+        std::printf("chapter-15: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
     std::vector<std::pair<std::string, std::string>> info =
         common::benchmarkInfo(kChapter, options, device, target);
-    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(layout.formats))});
+    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(layout->formats))});
     common::reportRun(run, device, info);
+    if (gui.enabled)
+        std::printf("chapter-15: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    guiPass.growths, guiPass.largestVertices, guiPass.largestIndices);
 
     if (lightControls.moved) {
         glm::vec3 p =
@@ -318,6 +437,8 @@ void run(const common::Options& options) {
 
     //> teardown
     common::destroyRunControl(device, run);
+    if (gui.enabled) common::destroyGuiPass(device, guiPass);
+    common::destroyGui(gui);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
     destroyLightPass(device, lightPass);

@@ -10,7 +10,8 @@
 #
 # After this file, these targets exist whichever way they came: glfw, glm::glm,
 # tinyobjloader::tinyobjloader, nlohmann_json::nlohmann_json, vkbook::stb (stb_image,
-# stb_image_write, stb_image_resize, with their implementations) and Vulkan::Vulkan with
+# stb_image_write, stb_image_resize, with their implementations), vkbook::imgui (Dear ImGui with
+# its GLFW platform backend, used for input only) and Vulkan::Vulkan with
 # Vulkan::glslangValidator (the Vulkan SDK on Windows and macOS; not fetched).
 include_guard(GLOBAL)
 include(FetchContent)
@@ -105,3 +106,31 @@ else()
     target_compile_definitions(vkbook_stb PRIVATE STBI_WINDOWS_UTF8 STBIW_WINDOWS_UTF8)
 endif()
 add_library(vkbook::stb ALIAS vkbook_stb)
+
+# Dear ImGui has no CMake package either. Debian's libimgui-dev (1.86) is found through pkg-config:
+# a static library with the backends compiled, headers under imgui/. Anywhere else the same
+# release is fetched and its core plus the GLFW backend compiled here. Either way a chapter
+# includes <imgui.h> and <backends/imgui_impl_glfw.h>.
+if(PKG_CONFIG_FOUND)
+    pkg_check_modules(imgui QUIET IMPORTED_TARGET imgui)
+endif()
+if(TARGET PkgConfig::imgui)
+    add_library(vkbook_imgui INTERFACE)
+    target_link_libraries(vkbook_imgui INTERFACE PkgConfig::imgui glfw)
+else()
+    FetchContent_Declare(imgui
+        GIT_REPOSITORY https://github.com/ocornut/imgui.git
+        GIT_TAG v1.86)
+    FetchContent_GetProperties(imgui)
+    if(NOT imgui_POPULATED)
+        FetchContent_Populate(imgui)
+    endif()
+    add_library(vkbook_imgui STATIC ${imgui_SOURCE_DIR}/imgui.cpp ${imgui_SOURCE_DIR}/imgui_draw.cpp
+                                    ${imgui_SOURCE_DIR}/imgui_tables.cpp ${imgui_SOURCE_DIR}/imgui_widgets.cpp
+                                    ${imgui_SOURCE_DIR}/imgui_demo.cpp
+                                    ${imgui_SOURCE_DIR}/backends/imgui_impl_glfw.cpp)
+    target_include_directories(vkbook_imgui SYSTEM PUBLIC ${imgui_SOURCE_DIR})
+    target_link_libraries(vkbook_imgui PUBLIC glfw)
+endif()
+add_library(vkbook::imgui ALIAS vkbook_imgui)
+

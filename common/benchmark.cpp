@@ -64,10 +64,12 @@ void readGpuTimer(const Device& device, GpuTimer& timer, uint32_t slot, FrameSta
     auto ms = [&](uint64_t from, uint64_t to) {
         return double((to - from) & timer.validMask) * timer.nanosecondsPerTick * 1e-6;
     };
-    if (timer.slots[slot].frame < stats.warmup) return;
     std::vector<double> milliseconds{ms(ticks.front(), ticks.back())};
     for (size_t pass = 0; pass < timer.passes.size(); ++pass)
         milliseconds.push_back(ms(ticks[pass], ticks[pass + 1]));
+    timer.latest = milliseconds;
+    timer.latestFrame = timer.slots[slot].frame;
+    if (timer.slots[slot].frame < stats.warmup) return;
     stats.gpuMs.push_back(milliseconds);
 }
 

@@ -33,7 +33,9 @@ struct GpuTimer {
         bool written = false;  // queries recorded since the last read
         uint32_t frame = 0;    // the frame whose queries these are
     };
-    std::vector<Slot> slots;  // per frame in flight
+    std::vector<Slot> slots;     // per frame in flight
+    std::vector<double> latest;  // the last frame read, in ms: whole frame, then each pass (the GUI shows it)
+    uint32_t latestFrame = 0;
 };
 
 GpuTimer createGpuTimer(const Device& device, uint32_t framesInFlight, std::vector<std::string> passes);

@@ -25,11 +25,12 @@ glm::mat4 projectionMatrix(float fovDegrees, VkExtent2D extent, float near, floa
     return glm::perspective(glm::radians(fovDegrees), aspect, near, far);  // GLM_FORCE_DEPTH_ZERO_TO_ONE
 }
 
-void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float seconds, float speed) {
+void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float seconds, float speed, bool keys,
+                bool mouse) {
     glm::vec3 forward = cameraForward(camera);
     glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
     float step = speed * seconds;
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    auto held = [&](int key) { return keys && glfwGetKey(window, key) == GLFW_PRESS; };
     if (held(GLFW_KEY_W)) camera.position += forward * step;
     if (held(GLFW_KEY_S)) camera.position -= forward * step;
     if (held(GLFW_KEY_D)) camera.position += right * step;
@@ -39,7 +40,9 @@ void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float se
 
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window, &x, &y);
-    bool dragging = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    // A drag that starts while the mouse is not ours (over a GUI) does not turn the camera.
+    bool dragging =
+        glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS && (mouse || input.dragging);
     if (dragging && input.dragging) {
         constexpr float kDegreesPerPixel = 0.2f;
         camera.yaw += float(x - input.lastX) * kDegreesPerPixel;

@@ -57,7 +57,9 @@ struct CameraInput {
 };
 
 // Applies the keys held and the mouse moved since the last call; `speed` in units per second.
-void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float seconds, float speed);
+// `keys`, `mouse`: false while a GUI takes the keyboard or the mouse.
+void moveCamera(GLFWwindow* window, Camera& camera, CameraInput& input, float seconds, float speed,
+                bool keys = true, bool mouse = true);
 
 // A key that switches something once per press (V: the next view, F: FXAA), however many frames
 // it is held down.

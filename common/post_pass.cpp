@@ -76,7 +76,7 @@ void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutp
 
 //> record-post
 void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
-                    bool fxaa) {
+                    bool fxaa, bool guiFollows) {
     VkImage image = target.images[imageIndex];
     // renderInit: the target image to ATTACHMENT_OPTIMAL. The submission waits for the image at
     // COLOR_ATTACHMENT_OUTPUT; starting the transition at that same stage chains it to the wait.
@@ -94,6 +94,9 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& tar
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
 
+    // The GUI pass draws over the image next: it stays in ATTACHMENT_OPTIMAL, and the GUI pass
+    // orders itself after these writes and moves it on.
+    if (guiFollows) return;
     // renderFinish: to the layout the target presents from. Nothing later in this command buffer
     // touches it; the submission's signal covers the rest.
     VkImageMemoryBarrier2 finish =

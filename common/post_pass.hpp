@@ -22,11 +22,12 @@ struct PostPass {
 };
 
 // `lightOutput` is sampled in READ_ONLY_OPTIMAL; it must be filterable linearly for the best FXAA.
+// `guiFollows`: a GUI pass draws over the image next and moves it to its present layout.
 PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
                         const Image& lightOutput);
 void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutput);
 void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
-                    bool fxaa);
+                    bool fxaa, bool guiFollows = false);
 void destroyPostPass(const Device& device, PostPass& pass);
 
 }  // namespace common

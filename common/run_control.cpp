@@ -10,6 +10,7 @@ RunControl createRunControl(const Options& options, const Device& device, std::v
     run.frameLimit = frameCount(options);
     run.scriptedResize = options.resizeTo;
     run.benchmark = options.benchmark;
+    run.timed = options.benchmark || options.switches.count("gui") != 0;
     run.screenshot = options.screenshot;
     run.gpuTimer = createGpuTimer(device, options.framesInFlight, passes);
     run.stats = createFrameStats(options, std::move(passes));
@@ -32,15 +33,15 @@ bool beginFrame(RunControl& run, Target& target, uint32_t frame) {
 }
 
 void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot) {
-    if (run.benchmark) readGpuTimer(device, run.gpuTimer, slot, run.stats);
+    if (run.timed) readGpuTimer(device, run.gpuTimer, slot, run.stats);
 }
 
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame) {
-    if (run.benchmark) beginGpuTimer(run.gpuTimer, cmd, slot, frame);
+    if (run.timed) beginGpuTimer(run.gpuTimer, cmd, slot, frame);
 }
 
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
-    if (run.benchmark) markGpuPass(run.gpuTimer, cmd, slot, pass);
+    if (run.timed) markGpuPass(run.gpuTimer, cmd, slot, pass);
 }
 
 void screenshotLastFrame(const RunControl& run, const Device& device, const Target& target,

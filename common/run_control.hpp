@@ -25,6 +25,7 @@ struct RunControl {
     uint32_t frameLimit = 0;                   // 0: until the window is closed
     std::optional<VkExtent2D> scriptedResize;  // --resize, applied at frame frameLimit / 2
     bool benchmark = false;
+    bool timed = false;                // GPU timestamps recorded: --benchmark, or --gui (which shows them)
     std::filesystem::path screenshot;  // empty: none
     GpuTimer gpuTimer;                 // timestamps before the first pass and after each
     FrameStats stats;
@@ -38,9 +39,10 @@ void destroyRunControl(const Device& device, RunControl& run);
 // Starts frame `frame`: the scripted resize when it is due, the window's events. Returns true
 // when this is the last frame (--frames reached, or the window asked to close).
 bool beginFrame(RunControl& run, Target& target, uint32_t frame);
-// After the fence of frame-in-flight `slot`: the GPU times of the frame it last ran (--benchmark).
+// After the fence of frame-in-flight `slot`: the GPU times of the frame it last ran (--benchmark,
+// --gui); run.gpuTimer.latest holds them.
 void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot);
-// While recording (--benchmark only): the frame's first timestamp, and one after pass `pass`.
+// While recording (--benchmark, --gui): the frame's first timestamp, and one after pass `pass`.
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame);
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass);
 // After the last frame's submission, before it is presented: the --screenshot of that image.

@@ -107,6 +107,14 @@ windows_test(windows.chapter-15-lights-1024-tiled
 windows_image(windows.chapter-15-lights-1024-tiled ${WIN_OUT}/chapter-15-lights-1024.png --size 640 360
     --golden ${GOLDEN}/chapter-15-lights-1024.png ${GOLDEN_MATCH})
 
+# The --gui overlay: Dear ImGui built from source (the portable dependency path), the GUI pass
+# against the Linux build's golden image.
+windows_test(windows.chapter-15-gui
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE} --gui
+            --screenshot ${WIN_OUT}/chapter-15-gui.png EXPECT_STDOUT "GUI buffers grew" QUIET_STDERR)
+windows_image(windows.chapter-15-gui ${WIN_OUT}/chapter-15-gui.png --size 640 360
+    --golden ${GOLDEN}/chapter-15-gui.png ${GOLDEN_MATCH})
+
 windows_test(windows.chapter-15-missing-scene
     COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --headless --device llvmpipe --scene ${WIN_OUT}/no-such-scene.json
     EXPECT_EXIT 2 EXPECT_STDERR "no-such-scene.json: no such file" ONE_LINE_STDERR)

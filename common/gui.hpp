@@ -1,0 +1,68 @@
+// Dear ImGui for chapters 14 and 15: the overlay's widgets and input (--gui). The book draws a GUI
+// with Dear ImGui in every chapter from its GUI chapter on, its GuiRender turning ImGui's draw
+// lists into Vulkan draws; that pass is chapter-14/gui_pass.cpp (written out) and
+// common/gui_pass.cpp (for chapter-15). This module is the ImGui side: the context, GLFW input
+// (Dear ImGui's own GLFW backend, for input only), F1, the timings window both chapters show, and
+// a headless mode that draws the same overlay deterministically (for golden images).
+#pragma once
+
+#include <imgui.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/camera.hpp"
+#include "common/cli.hpp"
+#include "common/run_control.hpp"
+#include "common/target.hpp"
+
+namespace common {
+
+// A scripted left click (--gui-click X,Y@FRAME): the pointer at (X, Y) in pixels from the frame
+// before FRAME, the button down at FRAME and up at the next. A testing aid, like --resize.
+struct GuiClick {
+    float x = 0.0f, y = 0.0f;
+    uint32_t frame = 0;
+};
+
+struct Gui {
+    bool enabled = false;        // --gui
+    bool visible = true;         // F1 hides and shows the overlay
+    bool deterministic = false;  // headless: fixed time step, no real input, timings as placeholders
+    bool glfwBackend = false;    // Dear ImGui's GLFW backend feeds input (a window)
+    KeyPress toggleKey{GLFW_KEY_F1};
+    std::vector<GuiClick> clicks;
+    bool help = false;                // the help window: keys and passes
+    std::vector<float> frameHistory;  // the GPU frame time of the last frames, for the plot
+    uint32_t plottedFrame = UINT32_MAX;
+};
+
+// The chapter-specific options every GUI chapter adds to its ChapterInfo.
+inline const std::pair<std::string, std::string> kGuiSwitch{
+    "gui", "draw the Dear ImGui overlay (F1 hides and shows it); headless, deterministically"};
+inline const Choice kGuiClickChoice{"gui-click",
+                                    {},
+                                    "testing aid: scripted left clicks of the overlay, "
+                                    "X,Y@FRAME[+X,Y@FRAME...] (pixels, frames at least 3 apart)"};
+
+// The context (nothing when --gui is not given). Throws InputError for a bad --gui-click.
+Gui createGui(const Options& options, const Target& target);
+void destroyGui(Gui& gui);
+// One ImGui frame: input (F1 toggles the overlay), `widgets` (the chapter's ImGui calls), and
+// the draw data the GUI pass draws, or nullptr when there is no overlay or it is hidden. Call after
+// common::beginFrame. ImGui sizes a new window on its first frame and shows it from the second, so
+// the first frame runs the widgets twice: a one-frame headless image has the overlay too.
+ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::function<void()>& widgets);
+// Whether the overlay takes the mouse or the keyboard this frame: the camera and the chapters'
+// keys then leave them alone.
+bool guiWantsMouse(const Gui& gui);
+bool guiWantsKeyboard(const Gui& gui);
+// The overlay's first window, in both chapters: CPU and GPU time per pass as numbers, the GPU
+// frame time of the last seconds as a plot, the --view selector, and a "help" box that opens a
+// window of text: the keys (`keys`, one per line) and the passes. Returns true when the view changed.
+bool guiTimingsWindow(Gui& gui, const RunControl& run, const std::vector<std::string>& views, int* view,
+                      const std::vector<std::string>& keys);
+
+}  // namespace common

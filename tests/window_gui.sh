@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Run under tests/xvfb_run.sh: the --gui overlay in a real window, driven by xdotool.
+#   window_gui.sh click CHAPTER OUT.png [options...]   clicks the overlay's FXAA box (at 27,241 in the
+#                                                    window): the last frame's screenshot must show it
+#                                                    ticked (the caller checks the pixel)
+#   window_gui.sh drag-overlay CHAPTER [options...]    right-drags across the overlay: the camera must
+#                                                    not move
+#   window_gui.sh drag-scene CHAPTER [options...]      right-drags across the scene, away from the
+#                                                    overlay: the camera must move (the check above can
+#                                                    fail)
+#   window_gui.sh f1 CHAPTER OUT.png [options...]      presses F1: the last frame has no overlay
+# The chapter runs with --validation: any validation message fails it (exit 3).
+set -u
+mode=$1
+chapter=$2
+shift 2
+shot=""
+if [ "$mode" = click ] || [ "$mode" = f1 ]; then
+    shot=$1
+    shift
+    set -- "$@" --screenshot "$shot"
+fi
+out=${TMPDIR:-/tmp}/window_gui.$$.out
+"$chapter" "$@" > "$out" &
+pid=$!
+window=$(timeout 60 xdotool search --sync --name "chapter-1") || { echo "no window appeared"; kill $pid; exit 1; }
+window=${window%%$'\n'*}
+sleep 1.5  # a few frames: the overlay is up
+case $mode in
+click)
+    xdotool mousemove --window "$window" 27 241 click 1
+    sleep 0.5
+    xdotool mousemove --window "$window" 500 300  # away, so the box is not drawn hovered
+    ;;
+drag-overlay | drag-scene)
+    if [ "$mode" = drag-overlay ]; then from=(60 60) to=(200 120); else from=(420 280) to=(560 330); fi
+    xdotool mousemove --window "$window" "${from[@]}" mousedown 3
+    for step in 1 2 3 4 5; do
+        sleep 0.2
+        xdotool mousemove --window "$window" $((from[0] + (to[0] - from[0]) * step / 5)) \
+            $((from[1] + (to[1] - from[1]) * step / 5))
+    done
+    xdotool mouseup 3
+    ;;
+f1)
+    xdotool mousemove --window "$window" 500 300  # keyboard focus follows the pointer without a window manager
+    xdotool keydown F1  # held over a few frames: the chapter polls the key's state each frame
+    sleep 0.4
+    xdotool keyup F1
+    ;;
+esac
+wait $pid
+rc=$?
+cat "$out"
+case $mode in
+drag-overlay) grep -q "camera moved" "$out" && { echo "a drag on the overlay moved the camera"; rc=1; } ;;
+drag-scene) grep -q "camera moved" "$out" || { echo "a drag on the scene did not move the camera"; rc=1; } ;;
+esac
+rm -f "$out"
+exit $rc
