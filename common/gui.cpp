@@ -124,7 +124,9 @@ bool guiTimingsWindow(Gui& gui, const RunControl& run, const std::vector<std::st
         std::snprintf(text, sizeof text, "%.3f ms", timer.latest[index]);
         return std::string(text);
     };
-    ImGui::Text("GPU frame  %s", milliseconds(0).c_str());
+    char cpu[32] = "--.--- ms";
+    if (!gui.deterministic && run.lastCpuMs > 0.0) std::snprintf(cpu, sizeof cpu, "%.3f ms", run.lastCpuMs);
+    ImGui::Text("GPU frame  %s   CPU frame %s", milliseconds(0).c_str(), cpu);
     for (size_t pass = 0; pass < timer.passes.size(); ++pass)
         ImGui::Text("  %-8s %s", timer.passes[pass].c_str(), milliseconds(pass + 1).c_str());
     std::vector<float> plotted =

@@ -59,7 +59,8 @@ ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::f
 // keys then leave them alone.
 bool guiWantsMouse(const Gui& gui);
 bool guiWantsKeyboard(const Gui& gui);
-// The overlay's first window, in both chapters: CPU and GPU time per pass as numbers, the GPU
+// The overlay's first window, in both chapters: the CPU frame time and the GPU time of the frame
+// and of each pass as numbers, the GPU
 // frame time of the last seconds as a plot, the --view selector, and a "help" box that opens a
 // window of text: the keys (`keys`, one per line) and the passes. Returns true when the view changed.
 bool guiTimingsWindow(Gui& gui, const RunControl& run, const std::vector<std::string>& views, int* view,

@@ -53,9 +53,9 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
 
 void endFrame(RunControl& run, uint32_t frame) {
     if (frame == 0) run.stats.startupMs = millisecondsSinceStart();
-    addCpuFrame(
-        run.stats, frame,
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count());
+    run.lastCpuMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count();
+    addCpuFrame(run.stats, frame, run.lastCpuMs);
 }
 
 void reportRun(RunControl& run, const Device& device,

@@ -30,6 +30,7 @@ struct RunControl {
     GpuTimer gpuTimer;                 // timestamps before the first pass and after each
     FrameStats stats;
     std::chrono::steady_clock::time_point frameStart;
+    double lastCpuMs = 0.0;  // the last frame's CPU time (the GUI shows it)
 };
 
 // `passes` names the passes whose GPU time --benchmark reports, in recording order.
