@@ -73,11 +73,11 @@ file(WRITE ${TEST_SCENES}/cull-sky.json "{${SKY_SCENE}, \"lights\": [${SUN}${TOP
 culling_case(sky 8 ARGS ${CULL_SIZE} --scene ${TEST_SCENES}/cull-sky.json)
 
 # 65,536 lights within 2 cm of one point: all of them in one tile (the longest list holds them
-# all), in a tile grid of 20 x 12 tiles.
+# all), in a tile grid of 12 x 7 tiles.
 add_test(NAME chapter-15.cull-cluster-scene
     COMMAND generate_light_scene ${LIGHT_SCENES}/default 65536 ${TEST_SCENES}/cull-cluster.json --cluster)
 set_tests_properties(chapter-15.cull-cluster-scene PROPERTIES FIXTURES_SETUP cull-cluster-scene)
-culling_case(cluster-65536 65536 ARGS --width 160 --height 90 --scene ${TEST_SCENES}/cull-cluster.json
+culling_case(cluster-65536 65536 ARGS --width 96 --height 54 --scene ${TEST_SCENES}/cull-cluster.json
     TILED_STDOUT "at most 65536 lights in a tile")
 foreach(mode none tiled)
     set_property(TEST chapter-15.cull-cluster-65536-${mode} APPEND PROPERTY FIXTURES_REQUIRED cull-cluster-scene)
