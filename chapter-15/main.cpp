@@ -140,17 +140,6 @@ struct RendererChoice {
     int lightPass = 0;  // LightPassKind
 };
 
-bool combo(const char* label, const std::vector<std::string>& names, int* index) {
-    bool changed = false;
-    ImGui::SetNextItemWidth(140.0f);
-    if (ImGui::BeginCombo(label, names[size_t(*index)].c_str())) {
-        for (int i = 0; i < int(names.size()); ++i)
-            if (ImGui::Selectable(names[size_t(i)].c_str(), i == *index)) changed = *index != i, *index = i;
-        ImGui::EndCombo();
-    }
-    return changed;
-}
-
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
                     RendererChoice& renderer, LightControls& controls, common::Scene& scene,
                     common::GpuScene& gpuScene) {
@@ -159,8 +148,8 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
                               "1/2, 3/4  move the point light up/down, along z"});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
-    combo("G-buffer", gbufferLayoutNames(), &renderer.layout);
-    combo("light pass", {"fragment", "compute"}, &renderer.lightPass);
+    common::guiCombo("G-buffer", gbufferLayoutNames(), &renderer.layout);
+    common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,

@@ -97,6 +97,17 @@ ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::f
     return gui.visible ? ImGui::GetDrawData() : nullptr;
 }
 
+bool guiCombo(const char* label, const std::vector<std::string>& names, int* index) {
+    bool changed = false;
+    ImGui::SetNextItemWidth(140.0f);
+    if (ImGui::BeginCombo(label, names[size_t(*index)].c_str())) {
+        for (int i = 0; i < int(names.size()); ++i)
+            if (ImGui::Selectable(names[size_t(i)].c_str(), i == *index)) changed = *index != i, *index = i;
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
 bool guiWantsMouse(const Gui& gui) {
     return gui.enabled && gui.visible && ImGui::GetIO().WantCaptureMouse;
 }
@@ -135,15 +146,7 @@ bool guiTimingsWindow(Gui& gui, const RunControl& run, const std::vector<std::st
         plotted.empty() ? 1.0f : std::max(*std::max_element(plotted.begin(), plotted.end()), 1e-3f);
     ImGui::PlotLines("##frames", plotted.data(), int(plotted.size()), 0, "GPU frame, last seconds", 0.0f,
                      highest * 1.2f, ImVec2(240.0f, 60.0f));
-    bool changed = false;
-    if (views.size() > 1) {
-        ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::BeginCombo("view", views[size_t(*view)].c_str())) {
-            for (int i = 0; i < int(views.size()); ++i)
-                if (ImGui::Selectable(views[size_t(i)].c_str(), i == *view)) changed = *view != i, *view = i;
-            ImGui::EndCombo();
-        }
-    }
+    bool changed = views.size() > 1 && guiCombo("view", views, view);
     ImGui::Checkbox("help", &gui.help);
     ImGui::End();
     if (gui.help) {

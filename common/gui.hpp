@@ -55,6 +55,8 @@ void destroyGui(Gui& gui);
 // common::beginFrame. ImGui sizes a new window on its first frame and shows it from the second, so
 // the first frame runs the widgets twice: a one-frame headless image has the overlay too.
 ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::function<void()>& widgets);
+// A drop-down list of `names` (140 pixels wide) choosing `*index`; true when the choice changed.
+bool guiCombo(const char* label, const std::vector<std::string>& names, int* index);
 // Whether the overlay takes the mouse or the keyboard this frame: the camera and the chapters'
 // keys then leave them alone.
 bool guiWantsMouse(const Gui& gui);

@@ -159,9 +159,8 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
     // margin: fp16 positions (the book's layout) round by up to 2^-11 of each world coordinate,
     // so a pixel's position may lie up to sqrt(3) x 2^-11 x |largest coordinate| off its ray.
     // fp32 and reconstructed positions lie on the ray up to rounding (the shader's 1e-5 slack).
-    float largest = glm::max(glm::max(glm::abs(boundsMin), glm::abs(boundsMax)).x,
-                             glm::max(glm::max(glm::abs(boundsMin), glm::abs(boundsMax)).y,
-                                      glm::max(glm::abs(boundsMin), glm::abs(boundsMax)).z));
+    glm::vec3 reach = glm::max(glm::abs(boundsMin), glm::abs(boundsMax));
+    float largest = std::max({reach.x, reach.y, reach.z});
     c.margin = layout.formats.position == VK_FORMAT_R16G16B16A16_SFLOAT ? largest * 1.7321f / 2048.0f : 0.0f;
 
     c.setLayout = common::createDescriptorSetLayout(
