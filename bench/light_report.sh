@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Writes the many-light tables and plots from bench/results/ (bench/light_scaling.sh calls it):
-# docs/performance.md's "light-scaling" section, docs/accuracy.md's "light-cutoff" section,
-# docs/images/light-scaling.svg and docs/images/light-cutoff.svg. Needs gnuplot.
+# docs/performance.md's "light-scaling" and "forward-deferred" sections, docs/accuracy.md's
+# "light-cutoff" section, docs/images/light-scaling.svg, forward-deferred.svg and light-cutoff.svg.
+# Needs gnuplot.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 results=$root/bench/results
@@ -104,6 +105,63 @@ paste_section "$root/docs/performance.md" light-scaling "$section"
     done
     echo "unset multiplot"
 } | gnuplot
+
+# Forward against deferred: one table per device and size, and one plot (frame time against N).
+forward_table() {
+    awk -F'\t' -v size="$2" '
+        NR == 1 || $2 != size { next }
+        { k = $3; n[k] = 1; key = $4 "-" $5; frame[k, key] = $6; scene[k, key] = $7; cull[k, key] = $8; light[k, key] = $9 }
+        function best(k,   b, name) {
+            b = frame[k, "forward-none"]; name = "forward"
+            if (frame[k, "deferred-none"] + 0 < b + 0) { b = frame[k, "deferred-none"]; name = "deferred, loop" }
+            if (frame[k, "deferred-tiled"] + 0 < b + 0) { b = frame[k, "deferred-tiled"]; name = "deferred, tiled" }
+            return name }
+        END {
+            print "| lights | forward: frame (forward pass) (ms) | deferred, loop: frame (scene pass + light pass) (ms) | deferred, tiled: frame (scene + culling + light) (ms) | forward over deferred loop | fastest |"
+            print "|---:|---|---|---|---|---|"
+            for (k = 1; k <= 65536; k *= 2) if (n[k])
+                printf "| %d | %s (%s) | %s (%s + %s) | %s (%s + %s + %s) | %.2f | %s |\n", k,
+                    frame[k, "forward-none"], scene[k, "forward-none"],
+                    frame[k, "deferred-none"], scene[k, "deferred-none"], light[k, "deferred-none"],
+                    frame[k, "deferred-tiled"], scene[k, "deferred-tiled"], cull[k, "deferred-tiled"], light[k, "deferred-tiled"],
+                    frame[k, "forward-none"] / frame[k, "deferred-none"], best(k)
+        }' "$1"
+}
+section=$work/forward.md
+: > "$section"
+plots=()
+for tsv in "$results/forward-deferred-lavapipe.tsv" "$results/forward-deferred-gpu.tsv"; do
+    [ -f "$tsv" ] || continue
+    for size in $(awk -F'\t' 'NR > 1 && !seen[$2]++ {print $2}' "$tsv"); do
+        {
+            echo "**$(device "$tsv" "$size")**, ${size}, median GPU times (timestamp queries), fragment light pass:"
+            echo
+            forward_table "$tsv" "$size"
+            echo
+        } >> "$section"
+        name=forward-$(echo "$(device "$tsv" "$size")-$size" | tr -c 'A-Za-z0-9\n' '-')
+        awk -F'\t' -v size="$size" 'NR > 1 && $2 == size { k = $3; n[k] = 1; f[k, $4 "-" $5] = $6 }
+            END { for (k = 1; k <= 65536; k *= 2) if (n[k])
+                printf "%d %s %s %s\n", k, f[k, "forward-none"], f[k, "deferred-none"], f[k, "deferred-tiled"] }' "$tsv" > "$work/$name.dat"
+        plots+=("$work/$name.dat|$(device "$tsv" "$size" | sed 's/ (.*//'), $size")
+    done
+done
+if [ -s "$section" ]; then
+    paste_section "$root/docs/performance.md" forward-deferred "$section"
+    {
+        echo "set terminal svg size 1100,380 font 'sans,11' background '#ffffff'"
+        echo "set output '$root/docs/images/forward-deferred.svg'"
+        echo "set multiplot layout 1,${#plots[@]}"
+        echo "set logscale xy; set grid; set key top left font ',9'; set xlabel 'point lights'; set ylabel 'GPU frame ms (median)'"
+        echo "set xtics ('1' 1, '4' 4, '16' 16, '64' 64, '256' 256, '1k' 1024)"
+        for entry in "${plots[@]}"; do
+            file=${entry%%|*} title=${entry#*|}
+            echo "set title '$title' font ',10'"
+            echo "plot '$file' using 1:2 with linespoints title 'forward', '' using 1:3 with linespoints title 'deferred, loop', '' using 1:4 with linespoints title 'deferred, tiled culling'"
+        done
+        echo "unset multiplot"
+    } | gnuplot
+fi
 
 # The cutoff: table and the speed-against-error curve.
 tsv=$results/light-cutoff-lavapipe.tsv

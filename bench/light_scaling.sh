@@ -11,9 +11,11 @@
 #                                                  1920x1080 and 3840x2160, and one validated
 #                                                  frame of every configuration; results in OUT_DIR
 #   bench/light_scaling.sh --cutoff [BUILD_DIR]    the cutoff curve only (lavapipe); then the docs
+#   bench/light_scaling.sh --forward [BUILD_DIR]   forward shading against deferred (lavapipe,
+#                                                  1280x720, 1 ... 1,024 lights); then the docs
 #   bench/light_scaling.sh --report [BUILD_DIR]    the docs from bench/results/*.tsv only
 #
-# Results go to bench/results/light-scaling-*.tsv and light-cutoff-lavapipe.tsv (kept in the
+# Results go to bench/results/light-scaling-*.tsv, forward-deferred-*.tsv and light-cutoff-lavapipe.tsv (kept in the
 # repository: the docs' tables and plots are made from them), the tables into docs/performance.md
 # and docs/accuracy.md between their "light-scaling" and "light-cutoff" markers, the plots into
 # docs/images/light-scaling.svg and light-cutoff.svg (gnuplot: apt-get install gnuplot-nox).
@@ -88,6 +90,34 @@ cutoff() {
     done
 }
 
+# Where deferred shading earns its G-buffer: --shading forward (the scene pass shades every
+# fragment it draws with every light) against the deferred loop and tiled culling (fragment light
+# pass, the book's G-buffer), one after the other for each N, on scenes from the same generator
+# (N = 1 ... 1,024; below 16 made here). forward_row DEVICE W H N SHADING CULLING WARMUP FRAMES.
+forward_counts=(1 2 4 8 16 64 256 1024)
+forward_row() {
+    local device=$1 w=$2 h=$3 n=$4 shading=$5 culling=$6
+    local scene=$work/lights-$n.json
+    [ -f "$scene" ] || "$build/tools/generate_light_scene" "$bin/scenes/default" "$n" "$scene" > /dev/null
+    echo "light_scaling: $device ${w}x$h $n lights, $shading, culling $culling" >&2
+    "$bin/chapter-15" --headless --device "$device" --width "$w" --height "$h" --scene "$scene" \
+        --shading "$shading" --light-culling "$culling" --benchmark --warmup "$7" --frames "$8" > "$work/run.txt"
+    printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
+        "$w" "$h" "$n" "$shading" "$culling" "$(median "$work/run.txt" frame)" \
+        "$(if [ "$shading" = forward ]; then median "$work/run.txt" forward; else median "$work/run.txt" scene; fi)" \
+        "$(median "$work/run.txt" cull)" "$(median "$work/run.txt" light)"
+}
+forward_header=$'device\tsize\tlights\tshading\tculling\tframe_ms\tscene_ms\tcull_ms\tlight_ms'
+forward_study() {
+    local device=$1 w=$2 h=$3 n warmup frames
+    for n in "${forward_counts[@]}"; do
+        if [ "$n" -ge 256 ]; then warmup=0 frames=2; else warmup=2 frames=10; fi
+        forward_row "$device" "$w" "$h" "$n" forward none "$warmup" "$frames"
+        forward_row "$device" "$w" "$h" "$n" deferred none "$warmup" "$frames"
+        forward_row "$device" "$w" "$h" "$n" deferred tiled 3 20
+    done
+}
+
 case "${1:-}" in
 --gpu)
     build=$(cd "$2" && pwd) bin=$build/bin out=$3
@@ -105,10 +135,20 @@ case "${1:-}" in
             done
         done
     done
+    for scene in default lights-16 lights-1024; do  # forward shading, validated the same way
+        "$bin/chapter-15" --headless --device NVIDIA --width 1920 --height 1080 --validation \
+            --scene "$bin/scenes/$scene/scene.json" --shading forward --frames 3 > /dev/null 2> "$work/err.txt" || true
+        messages=$((messages + $(grep -c "^validation" "$work/err.txt" || true)))
+    done
     echo "$messages" > "$out/light-scaling-gpu-validation.txt"
+    { echo "$forward_header"; forward_study NVIDIA 1920 1080; forward_study NVIDIA 3840 2160; } > "$out/forward-deferred-gpu.tsv"
     exit 0
     ;;
 --report)
+    ;;
+--forward)
+    build=$(cd "${2:-$root/build}" && pwd) bin=$build/bin
+    { echo "$forward_header"; forward_study llvmpipe 1280 720; } > "$results/forward-deferred-lavapipe.tsv"
     ;;
 --cutoff)
     build=$(cd "${2:-$root/build}" && pwd) bin=$build/bin

@@ -10,7 +10,8 @@
 //   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
 // What goes beyond the book -- the reference and compact G-buffer layouts with reversed-Z, the
 // light pass as a compute dispatch, --check-output and --dump, light ranges and tiled light
-// culling -- is in beyond/, and enters this file only where an option selects it.
+// culling, forward shading to compare with -- is in beyond/, and enters this file only where an
+// option selects it.
 #include <vulkan/vulkan.h>
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/forward_shading.hpp"
 #include "beyond/gbuffer_layouts.hpp"
 #include "beyond/light_culling.hpp"
 #include "beyond/output_dump.hpp"
@@ -67,6 +69,11 @@ const common::ChapterInfo kChapter{
       "give each point light without a range the distance where its irradiance falls to this value "
       "(a positive number)"},
      {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"},
+     {"shading",
+      {"deferred", "forward"},
+      "deferred: the G-buffer, then the light pass (the book's); forward: the scene pass shades each "
+      "fragment "
+      "with every light (no G-buffer), to compare"},
      common::kGuiClickChoice},
 };
 
@@ -142,14 +149,16 @@ struct RendererChoice {
 
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
                     RendererChoice& renderer, LightControls& controls, common::Scene& scene,
-                    common::GpuScene& gpuScene) {
-    common::guiTimingsWindow(gui, run, kChapter.views, view,
+                    common::GpuScene& gpuScene, bool deferred) {
+    common::guiTimingsWindow(gui, run, deferred ? kChapter.views : std::vector<std::string>{"final"}, view,
                              {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
                               "1/2, 3/4  move the point light up/down, along z"});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
-    common::guiCombo("G-buffer", gbufferLayoutNames(), &renderer.layout);
-    common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
+    if (deferred) {  // beyond the book, --shading forward has neither
+        common::guiCombo("G-buffer", gbufferLayoutNames(), &renderer.layout);
+        common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
+    }
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
@@ -190,6 +199,7 @@ void run(const common::Options& options) {
     common::Scene scene = common::sceneFromOptions(options, models);
     // Beyond the book: light ranges from --light-cutoff, tiled culling, the camera turning.
     LightOptions lightOptions = readLightOptions(options, scene);
+    bool forward = readShading(options) == Shading::Forward;  // beyond the book: --shading forward
 
     common::Target target = common::openTarget(options, "chapter-15: deferred rendering II, PBR");
     common::Instance instance =
@@ -233,6 +243,8 @@ void run(const common::Options& options) {
         createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, *layout);
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
+    ForwardPass forwardPass;  // beyond the book: --shading forward
+    if (forward) forwardPass = createForwardPass(device, pipelineCache.handle, scenePass, lightPass);
 
     common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
     common::CameraInput cameraInput;
@@ -253,6 +265,7 @@ void run(const common::Options& options) {
     bool tiled = lightOptions.culling == LightCulling::Tiled;
     std::vector<std::string> passes{"scene", "light", "post"};
     if (tiled) passes.insert(passes.begin() + 1, "cull");
+    if (forward) passes = {"forward", "post"};
     if (gui.enabled) passes.push_back("gui");
     common::RunControl run = common::createRunControl(options, device, passes);
     //< setup
@@ -306,7 +319,8 @@ void run(const common::Options& options) {
         common::FrameSync& sync = frames[slot];
 
         ImDrawData* overlay = common::drawGui(gui, target, frame, [&] {
-            overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene);
+            overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene,
+                           !forward);
         });
         if (renderer.layout != active.layout || renderer.lightPass != active.lightPass) switchRenderer();
         bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
@@ -357,15 +371,21 @@ void run(const common::Options& options) {
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
         common::timeFrameStart(run, sync.commandBuffer, slot, frame);
         uint32_t pass = 0;
-        recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
-        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        if (tiled) {  // beyond the book: this frame's tile lists, from this frame's G-buffer
-            recordLightCulling(sync.commandBuffer, culling, lightPass, slot, lightView);
+        if (forward) {  // beyond the book: --shading forward, no G-buffer
+            recordForwardPass(sync.commandBuffer, forwardPass, scenePass, lightPass, gpuScene, slot,
+                              camera.position);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        } else {
+            recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            if (tiled) {  // beyond the book: this frame's tile lists, from this frame's G-buffer
+                recordLightCulling(sync.commandBuffer, culling, lightPass, slot, lightView);
+                common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            }
+            recordLightPass(sync.commandBuffer, lightPass, slot, lightView,
+                            tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
             common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         }
-        recordLightPass(sync.commandBuffer, lightPass, slot, lightView,
-                        tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
-        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
         common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         if (gui.enabled) {
@@ -422,7 +442,7 @@ void run(const common::Options& options) {
     // Beyond the book: the output read back (beyond/output_dump.cpp).
     if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
     if (options.values.count("dump"))
-        dumpFrame(device, lightPass, scenePass, lightView, options.values.at("dump"));
+        dumpFrame(device, lightPass, scenePass, lightView, options.values.at("dump"), !forward);
 
     //> teardown
     common::destroyRunControl(device, run);
@@ -430,6 +450,7 @@ void run(const common::Options& options) {
     common::destroyGui(gui);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);
+    if (forward) destroyForwardPass(device, forwardPass);
     destroyLightPass(device, lightPass);
     if (tiled) destroyLightCulling(device, culling);
     destroyScenePass(device, scenePass);

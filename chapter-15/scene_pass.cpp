@@ -65,9 +65,13 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                   pass.materials.handle, VK_WHOLE_SIZE);
 }
 
-void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass) {
-    std::array<VkDescriptorSetLayout, 3> layouts{pass.cameraLayout, pass.materialsLayout,
-                                                 pass.texturesLayout};
+}  // namespace
+
+ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCache cache,
+                                    const ScenePass& pass, const ScenePipelineTarget& target) {
+    ScenePipelines pipelines;
+    std::vector<VkDescriptorSetLayout> layouts{pass.cameraLayout, pass.materialsLayout, pass.texturesLayout};
+    layouts.insert(layouts.end(), target.moreSets.begin(), target.moreSets.end());
     std::array<VkPushConstantRange, 2> pushConstants{{
         {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(DrawConstants)},
         {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT,
@@ -81,29 +85,27 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
         .pushConstantRangeCount = uint32_t(pushConstants.size()),
         .pPushConstantRanges = pushConstants.data(),
     };
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelines.layout));
 
     //> scene-pipeline
     // Four colour attachments (three in the compact layout): as many formats and blend states.
-    std::vector<VkFormat> formats = common::colorFormats(pass.layout->formats);
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = uint32_t(formats.size()),
-        .pColorAttachmentFormats = formats.data(),
-        .depthAttachmentFormat = pass.layout->formats.depth,
+        .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+        .pColorAttachmentFormats = target.colorFormats.data(),
+        .depthAttachmentFormat = target.depthFormat,
     };
     common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
                                                       common::kBitangent | common::kUv);
     //< scene-pipeline
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
-    VkShaderModule fragment = common::loadShaderModule(
-        device, std::string("chapter-15/scene") + pass.layout->shaderSuffix + ".frag");
+    VkShaderModule fragment = common::loadShaderModule(device, target.fragmentShader);
     for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE}) {
         VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
         VkSpecializationInfo specialization{
             .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
-        (alphaTest ? pass.cutoutPipeline : pass.opaquePipeline) = common::createGraphicsPipeline(
+        (alphaTest ? pipelines.cutout : pipelines.opaque) = common::createGraphicsPipeline(
             device, cache,
             {
                 .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
@@ -119,17 +121,23 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
                 .depthWrite = true,
                 // Reversed-Z: nearer is larger.
                 .depthCompare =
-                    pass.layout->reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
-                .colorAttachmentCount = uint32_t(formats.size()),
-                .layout = pass.pipelineLayout,
+                    target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+                .layout = pipelines.layout,
                 .pNext = &rendering,
             });
     }
     vkDestroyShaderModule(device.handle, fragment, nullptr);
     vkDestroyShaderModule(device.handle, vertex, nullptr);
+    return pipelines;
 }
 
-}  // namespace
+void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines) {
+    vkDestroyPipeline(device.handle, pipelines.cutout, nullptr);
+    vkDestroyPipeline(device.handle, pipelines.opaque, nullptr);
+    vkDestroyPipelineLayout(device.handle, pipelines.layout, nullptr);
+    pipelines = {};
+}
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
@@ -147,7 +155,13 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
     }
     pass.gbuffer = common::createGBuffer(device, extent, layout.formats);
     createDescriptors(device, pass, scene, framesInFlight);
-    createPipeline(device, cache, pass);
+    // The G-buffer's attachments, scene.frag (scene-compact.frag for the compact layout).
+    pass.pipelines = createScenePipelines(
+        device, cache, pass,
+        {.fragmentShader = std::string("chapter-15/scene") + layout.shaderSuffix + ".frag",
+         .colorFormats = common::colorFormats(layout.formats),
+         .depthFormat = layout.formats.depth,
+         .reversedZ = layout.reversedZ});
     return pass;
 }
 
@@ -171,9 +185,15 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     VkRect2D scissor{{0, 0}, extent};
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     std::array<VkDescriptorSet, 2> shared{pass.cameras[frame].set, pass.materialsSet};
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelines.layout, 0, 2, shared.data(),
+                            0, nullptr);
+    recordSceneDraws(cmd, pass, pass.pipelines, scene, cameraPosition);
+    vkCmdEndRendering(cmd);
+    common::gbufferRenderFinish(cmd, pass.gbuffer);
+}
 
+void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePipelines& pipelines,
+                      const common::GpuScene& scene, glm::vec3 cameraPosition) {
     // The order of the draws: opaque ones by the distance of their bounds' centre, then cut-outs.
     std::vector<std::pair<float, const common::Draw*>> order;
     for (const common::Draw& draw : scene.draws) {
@@ -189,13 +209,13 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     for (const auto& [key, drawPointer] : order) {
         const common::Draw& draw = *drawPointer;
         VkPipeline pipeline =
-            scene.materials[draw.material].alphaTested ? pass.cutoutPipeline : pass.opaquePipeline;
+            scene.materials[draw.material].alphaTested ? pipelines.cutout : pipelines.opaque;
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout, 2, 1,
                                 &pass.materialTextureSets[draw.material], 0, nullptr);
         // Normals need the inverse-transpose of the model matrix; computed once per draw here
         // rather than once per vertex in the shader, as the book does.
@@ -203,21 +223,17 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
         DrawConstants constants{draw.model,
                                 {glm::vec4(normalMatrix[0], 0.0f), glm::vec4(normalMatrix[1], 0.0f),
                                  glm::vec4(normalMatrix[2], 0.0f)}};
-        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
+        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
                            &constants);
-        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
+        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
                            sizeof(uint32_t), &draw.material);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
     }
-    vkCmdEndRendering(cmd);
-    common::gbufferRenderFinish(cmd, pass.gbuffer);
 }
 //< record-scene
 
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
-    vkDestroyPipeline(device.handle, pass.cutoutPipeline, nullptr);
-    vkDestroyPipeline(device.handle, pass.opaquePipeline, nullptr);
-    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    destroyScenePipelines(device, pass.pipelines);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);

@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,24 @@
 #include "common/gbuffer.hpp"
 #include "common/gpu_scene.hpp"
 #include "gbuffer_layout.hpp"
+
+// The scene's two pipelines from one fragment shader: without the alpha test (opaque materials:
+// early depth testing) and with it (cut-outs).
+struct ScenePipelines {
+    VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
+    VkPipeline opaque = VK_NULL_HANDLE;
+    VkPipeline cutout = VK_NULL_HANDLE;
+};
+
+// What a scene pipeline draws into, and with which fragment shader (a file under
+// <build>/bin/shaders/; it starts from scene_surface.glsl's sceneSurface()).
+struct ScenePipelineTarget {
+    std::string fragmentShader;
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
+    bool reversedZ = false;
+    std::vector<VkDescriptorSetLayout> moreSets;  // sets 3.. after the scene pass's own
+};
 
 struct ScenePass {
     const GBufferLayout* layout = &kBookGBuffer;
@@ -31,9 +50,7 @@ struct ScenePass {
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialTextureSets;
     VkSampler sampler = VK_NULL_HANDLE;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline opaquePipeline = VK_NULL_HANDLE;  // no alpha test: early depth testing
-    VkPipeline cutoutPipeline = VK_NULL_HANDLE;  // alpha-tested materials
+    ScenePipelines pipelines;
 };
 
 // Throws Failure when the device cannot render to the layout's formats.
@@ -46,3 +63,11 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame, glm::vec3 cameraPosition);
 void destroyScenePass(const common::Device& device, ScenePass& pass);
+
+// Beyond the book (beyond/forward_shading.cpp): the scene pass's pipelines for another target and
+// shader, and its draws recorded with them (sets 0 and 1, and any more, bound by the caller).
+ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCache cache,
+                                    const ScenePass& pass, const ScenePipelineTarget& target);
+void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePipelines& pipelines,
+                      const common::GpuScene& scene, glm::vec3 cameraPosition);
+void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines);

@@ -40,7 +40,7 @@ void checkLightOutput(const common::Device& device, const LightPass& lightPass) 
 // plus coverage.pfm (1 where a surface is). The accuracy tools (tests/accuracy/) shade these on
 // the CPU in double precision.
 void dumpFrame(const common::Device& device, const LightPass& lightPass, const ScenePass& scenePass,
-               const LightView& view, const std::filesystem::path& directory) {
+               const LightView& view, const std::filesystem::path& directory, bool withGBuffer) {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);
     VkExtent2D extent = lightPass.output.extent;
@@ -58,6 +58,10 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
         distance[i] = float(n * f / (f - double(distance[i]) * (f - n)));
     }
     common::writePfm(directory / "distance.pfm", extent.width, extent.height, distance, 1);
+    if (!withGBuffer) {  // --shading forward draws none
+        std::printf("chapter-15: wrote %s\n", common::utf8(directory).c_str());
+        return;
+    }
     if (scenePass.layout->formats.position == VK_FORMAT_UNDEFINED) {  // the compact layout
         // The compact normals, decoded (octahedral.glsl's decodeOctahedral): which surface each pixel shows.
         const common::Image& normals = scenePass.gbuffer.normal;

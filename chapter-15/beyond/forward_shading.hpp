@@ -1,0 +1,37 @@
+// chapter-15, beyond the book: forward shading (--shading forward), to measure deferred shading
+// against. No G-buffer and no light pass: the scene pass's fragment shader (forward.frag) shades
+// each fragment it draws with every light, into the light pass's output, which the post pass then
+// presents as usual. It borrows the scene pass's pipelines' first three sets, draw order and depth
+// attachment, and the light pass's lights, scene info and output; so the two renderers differ only
+// in where the shading happens: per fragment drawn (forward) or per pixel of the G-buffer
+// (deferred). Forward+ (a depth pre-pass, then tile lists for a forward pass) is not built.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <glm/glm.hpp>
+
+#include "common/cli.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "light_pass.hpp"
+#include "scene_pass.hpp"
+
+enum class Shading { Deferred, Forward };
+
+// Reads --shading, refusing (InputError) what needs a G-buffer with forward shading: --light-pass
+// compute, --light-culling tiled, a --view other than final, a --gbuffer other than book.
+Shading readShading(const common::Options& options);
+
+struct ForwardPass {
+    ScenePipelines pipelines;  // forward.frag into the light output, with the scene pass's depth
+};
+
+ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cache, const ScenePass& scenePass,
+                              const LightPass& lightPass);
+// Leaves the light output READ_ONLY_OPTIMAL for the post pass and the depth attachment
+// READ_ONLY_OPTIMAL (for --dump), as the deferred passes do.
+void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, const ScenePass& scenePass,
+                       const LightPass& lightPass, const common::GpuScene& scene, uint32_t frame,
+                       glm::vec3 cameraPosition);
+void destroyForwardPass(const common::Device& device, ForwardPass& pass);

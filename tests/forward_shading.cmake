@@ -1,0 +1,53 @@
+# chapter-15 beyond the book: --shading forward, the renderer deferred shading is measured
+# against. Its image must be the deferred one's: with the reference G-buffer (32-bit floats
+# throughout, standard depth, as forward's), the light output equals the loop's up to fp32
+# rounding of the sum (pfm_compare's bound), on the default scene and on many lights with ranges,
+# under validation (synchronization validation on), across a resize. Plus what it refuses.
+
+# forward_case(NAME LIGHTS ARGS...): forward and deferred (reference G-buffer) light outputs compared.
+function(forward_case name lights)
+    cmake_parse_arguments(F "" "" "ARGS" ${ARGN})
+    foreach(shading forward deferred)
+        set(extra "")
+        if(shading STREQUAL deferred)
+            set(extra --gbuffer reference)
+        endif()
+        chapter_test(chapter-15.forward-${name}-${shading}
+            COMMAND ${CH15_RUN} --headless ${F_ARGS} --shading ${shading} ${extra} --check-output
+                    --dump ${TEST_OUT}/forward-${name}-${shading}
+            EXPECT_STDOUT "0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+        set_tests_properties(chapter-15.forward-${name}-${shading} PROPERTIES
+            FIXTURES_SETUP forward-${name}-${shading})
+    endforeach()
+    add_test(NAME chapter-15.forward-${name}-equals-deferred
+        COMMAND pfm_compare ${TEST_OUT}/forward-${name}-forward/light.pfm
+                ${TEST_OUT}/forward-${name}-deferred/light.pfm --lights ${lights} --min-lit 0.2)
+    set_tests_properties(chapter-15.forward-${name}-equals-deferred PROPERTIES
+        FIXTURES_REQUIRED "forward-${name}-forward;forward-${name}-deferred")
+endfunction()
+
+forward_case(default 2 ARGS ${CULL_SIZE} --frames 3)
+forward_case(lights-256 256 ARGS ${CULL_SIZE} --scene ${LIGHT_SCENES}/lights-256/scene.json)
+# A resize while frames are in flight: the output and depth follow the window.
+forward_case(resize 2 ARGS ${CULL_SIZE} --frames 4 --resize 333x197 --frames-in-flight 3)
+
+# The overlay with forward shading: no G-buffer or light-pass choice, no G-buffer view.
+chapter_test(chapter-15.forward-gui
+    COMMAND ${CH15_RUN} --headless --width 640 --height 360 --shading forward --gui --frames 3 QUIET_STDERR)
+
+# What needs a G-buffer is refused, each with one line.
+foreach(case "light-pass compute|--light-pass compute shades the G-buffer: --shading forward has none"
+             "light-culling tiled|--light-culling tiled bounds its tiles with the G-buffer's depth"
+             "gbuffer compact|--shading forward has no G-buffer to lay out \\(--gbuffer\\)"
+             "view normal|--view shows the G-buffer's attachments: --shading forward has only the final image")
+    string(REPLACE "|" ";" case "${case}")
+    list(GET case 0 option)
+    list(GET case 1 message)
+    string(REPLACE " " ";" option_args "${option}")
+    string(REPLACE " " "-" option_name "${option}")
+    chapter_test(chapter-15.forward-refuses-${option_name}
+        COMMAND ${CH15} --headless --shading forward --${option_args}
+        EXPECT_EXIT 2 EXPECT_STDERR "${message}" ONE_LINE_STDERR)
+endforeach()
+chapter_test(chapter-15.bad-shading COMMAND ${CH15} --headless --shading forward+
+    EXPECT_EXIT 2 EXPECT_STDERR "--shading must be one of deferred\\|forward" ONE_LINE_STDERR)
