@@ -110,21 +110,27 @@ paste_section "$root/docs/performance.md" light-scaling "$section"
 forward_table() {
     awk -F'\t' -v size="$2" '
         NR == 1 || $2 != size { next }
-        { k = $3; n[k] = 1; key = $4 "-" $5; frame[k, key] = $6; scene[k, key] = $7; cull[k, key] = $8; light[k, key] = $9 }
-        function best(k,   b, name) {
-            b = frame[k, "forward-none"]; name = "forward"
-            if (frame[k, "deferred-none"] + 0 < b + 0) { b = frame[k, "deferred-none"]; name = "deferred, loop" }
-            if (frame[k, "deferred-tiled"] + 0 < b + 0) { b = frame[k, "deferred-tiled"]; name = "deferred, tiled" }
-            return name }
+        { k = $3; n[k] = 1; key = $4 "-" $5 "-" $6; frame[k, key] = $7; scene[k, key] = $8 }
+        function consider(k, key, name) {
+            if (frame[k, key] != "" && (bestName == "" || frame[k, key] + 0 < best + 0)) { best = frame[k, key]; bestName = name } }
         END {
-            print "| lights | forward: frame (forward pass) (ms) | deferred, loop: frame (scene pass + light pass) (ms) | deferred, tiled: frame (scene + culling + light) (ms) | forward over deferred loop | fastest |"
+            print "| lights | forward: frame (ms) | deferred, loop: frame, fragment / compute light pass (ms) | deferred, tiled culling: frame, fragment / compute (ms) | forward over the best deferred | fastest |"
             print "|---:|---|---|---|---|---|"
-            for (k = 1; k <= 65536; k *= 2) if (n[k])
-                printf "| %d | %s (%s) | %s (%s + %s) | %s (%s + %s + %s) | %.2f | %s |\n", k,
-                    frame[k, "forward-none"], scene[k, "forward-none"],
-                    frame[k, "deferred-none"], scene[k, "deferred-none"], light[k, "deferred-none"],
-                    frame[k, "deferred-tiled"], scene[k, "deferred-tiled"], cull[k, "deferred-tiled"], light[k, "deferred-tiled"],
-                    frame[k, "forward-none"] / frame[k, "deferred-none"], best(k)
+            for (k = 1; k <= 65536; k *= 2) if (n[k]) {
+                best = ""; bestName = ""
+                consider(k, "deferred-none-fragment", "deferred, loop, fragment")
+                consider(k, "deferred-none-compute", "deferred, loop, compute")
+                consider(k, "deferred-tiled-fragment", "deferred, tiled, fragment")
+                consider(k, "deferred-tiled-compute", "deferred, tiled, compute")
+                deferredBest = best
+                consider(k, "forward-none-fragment", "**forward**")
+                printf "| %d | %s | %s / %s | %s / %s | %.2f | %s |\n", k, frame[k, "forward-none-fragment"],
+                    frame[k, "deferred-none-fragment"], frame[k, "deferred-none-compute"],
+                    frame[k, "deferred-tiled-fragment"], frame[k, "deferred-tiled-compute"],
+                    frame[k, "forward-none-fragment"] / deferredBest, bestName
+            }
+            printf "\nThe G-buffer pass (the scene pass of deferred shading) takes %s ms; the forward pass with 1 light %s ms.\n",
+                scene[1, "deferred-none-fragment"], scene[1, "forward-none-fragment"]
         }' "$1"
 }
 section=$work/forward.md
@@ -134,30 +140,35 @@ for tsv in "$results/forward-deferred-lavapipe.tsv" "$results/forward-deferred-g
     [ -f "$tsv" ] || continue
     for size in $(awk -F'\t' 'NR > 1 && !seen[$2]++ {print $2}' "$tsv"); do
         {
-            echo "**$(device "$tsv" "$size")**, ${size}, median GPU times (timestamp queries), fragment light pass:"
+            echo "**$(device "$tsv" "$size")**, ${size}, median GPU times (timestamp queries):"
             echo
             forward_table "$tsv" "$size"
             echo
         } >> "$section"
         name=forward-$(echo "$(device "$tsv" "$size")-$size" | tr -c 'A-Za-z0-9\n' '-')
-        awk -F'\t' -v size="$size" 'NR > 1 && $2 == size { k = $3; n[k] = 1; f[k, $4 "-" $5] = $6 }
+        awk -F'\t' -v size="$size" 'NR > 1 && $2 == size { k = $3; n[k] = 1; f[k, $4 "-" $5 "-" $6] = $7 }
             END { for (k = 1; k <= 65536; k *= 2) if (n[k])
-                printf "%d %s %s %s\n", k, f[k, "forward-none"], f[k, "deferred-none"], f[k, "deferred-tiled"] }' "$tsv" > "$work/$name.dat"
+                printf "%d %s %s %s %s %s\n", k, f[k, "forward-none-fragment"], f[k, "deferred-none-fragment"],
+                    f[k, "deferred-none-compute"], f[k, "deferred-tiled-fragment"], f[k, "deferred-tiled-compute"] }' "$tsv" > "$work/$name.dat"
         plots+=("$work/$name.dat|$(device "$tsv" "$size" | sed 's/ (.*//'), $size")
     done
 done
+if [ -f "$results/forward-deferred-gpu-validation.txt" ]; then
+    echo "Validation on the GPU: a 3-frame run of forward shading at 1920x1080 with \`--validation\` on the" \
+         "default scene, lights-16 and lights-1024: **$(cat "$results/forward-deferred-gpu-validation.txt") messages**." >> "$section"
+fi
 if [ -s "$section" ]; then
     paste_section "$root/docs/performance.md" forward-deferred "$section"
     {
-        echo "set terminal svg size 1100,380 font 'sans,11' background '#ffffff'"
+        echo "set terminal svg size 1300,420 font 'sans,11' background '#ffffff'"
         echo "set output '$root/docs/images/forward-deferred.svg'"
         echo "set multiplot layout 1,${#plots[@]}"
         echo "set logscale xy; set grid; set key top left font ',9'; set xlabel 'point lights'; set ylabel 'GPU frame ms (median)'"
-        echo "set xtics ('1' 1, '4' 4, '16' 16, '64' 64, '256' 256, '1k' 1024)"
+        echo "set xtics ('1' 1, '4' 4, '16' 16, '64' 64, '256' 256, '1k' 1024); set xrange [0.8:1300]"
         for entry in "${plots[@]}"; do
             file=${entry%%|*} title=${entry#*|}
             echo "set title '$title' font ',10'"
-            echo "plot '$file' using 1:2 with linespoints title 'forward', '' using 1:3 with linespoints title 'deferred, loop', '' using 1:4 with linespoints title 'deferred, tiled culling'"
+            echo "plot '$file' using 1:2 with linespoints lw 2 title 'forward', '' using 1:3 with linespoints title 'deferred, loop (fragment)', '' using 1:4 with linespoints title 'deferred, loop (compute)', '' using 1:5 with linespoints title 'deferred, tiled (fragment)', '' using 1:6 with linespoints title 'deferred, tiled (compute)'"
         done
         echo "unset multiplot"
     } | gnuplot

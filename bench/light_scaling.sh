@@ -13,6 +13,9 @@
 #   bench/light_scaling.sh --cutoff [BUILD_DIR]    the cutoff curve only (lavapipe); then the docs
 #   bench/light_scaling.sh --forward [BUILD_DIR]   forward shading against deferred (lavapipe,
 #                                                  1280x720, 1 ... 1,024 lights); then the docs
+#   bench/light_scaling.sh --gpu-forward BUILD_DIR OUT_DIR   the same on the NVIDIA machine
+#                                                  (1920x1080, 3840x2160), with validation (also
+#                                                  part of --gpu)
 #   bench/light_scaling.sh --report [BUILD_DIR]    the docs from bench/results/*.tsv only
 #
 # Results go to bench/results/light-scaling-*.tsv, forward-deferred-*.tsv and light-cutoff-lavapipe.tsv (kept in the
@@ -91,31 +94,48 @@ cutoff() {
 }
 
 # Where deferred shading earns its G-buffer: --shading forward (the scene pass shades every
-# fragment it draws with every light) against the deferred loop and tiled culling (fragment light
-# pass, the book's G-buffer), one after the other for each N, on scenes from the same generator
-# (N = 1 ... 1,024; below 16 made here). forward_row DEVICE W H N SHADING CULLING WARMUP FRAMES.
+# fragment it draws with every light) against the deferred loop and tiled culling (the book's
+# G-buffer, both light-pass forms), one after the other for each N, on scenes from the same generator
+# (N = 1 ... 1,024; below 16 made here). forward_row DEVICE W H N SHADING CULLING FORM WARMUP FRAMES.
 forward_counts=(1 2 4 8 16 64 256 1024)
 forward_row() {
-    local device=$1 w=$2 h=$3 n=$4 shading=$5 culling=$6
+    local device=$1 w=$2 h=$3 n=$4 shading=$5 culling=$6 form=$7
     local scene=$work/lights-$n.json
     [ -f "$scene" ] || "$build/tools/generate_light_scene" "$bin/scenes/default" "$n" "$scene" > /dev/null
-    echo "light_scaling: $device ${w}x$h $n lights, $shading, culling $culling" >&2
+    echo "light_scaling: $device ${w}x$h $n lights, $shading, culling $culling, $form" >&2
     "$bin/chapter-15" --headless --device "$device" --width "$w" --height "$h" --scene "$scene" \
-        --shading "$shading" --light-culling "$culling" --benchmark --warmup "$7" --frames "$8" > "$work/run.txt"
-    printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
-        "$w" "$h" "$n" "$shading" "$culling" "$(median "$work/run.txt" frame)" \
+        --shading "$shading" --light-culling "$culling" --light-pass "$form" \
+        --benchmark --warmup "$8" --frames "$9" > "$work/run.txt"
+    printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
+        "$w" "$h" "$n" "$shading" "$culling" "$form" "$(median "$work/run.txt" frame)" \
         "$(if [ "$shading" = forward ]; then median "$work/run.txt" forward; else median "$work/run.txt" scene; fi)" \
         "$(median "$work/run.txt" cull)" "$(median "$work/run.txt" light)"
 }
-forward_header=$'device\tsize\tlights\tshading\tculling\tframe_ms\tscene_ms\tcull_ms\tlight_ms'
+forward_header=$'device\tsize\tlights\tshading\tculling\tform\tframe_ms\tscene_ms\tcull_ms\tlight_ms'
 forward_study() {
-    local device=$1 w=$2 h=$3 n warmup frames
+    local device=$1 w=$2 h=$3 n warmup frames form
     for n in "${forward_counts[@]}"; do
         if [ "$n" -ge 256 ]; then warmup=0 frames=2; else warmup=2 frames=10; fi
-        forward_row "$device" "$w" "$h" "$n" forward none "$warmup" "$frames"
-        forward_row "$device" "$w" "$h" "$n" deferred none "$warmup" "$frames"
-        forward_row "$device" "$w" "$h" "$n" deferred tiled 3 20
+        forward_row "$device" "$w" "$h" "$n" forward none fragment "$warmup" "$frames"
+        for form in fragment compute; do
+            forward_row "$device" "$w" "$h" "$n" deferred none "$form" "$warmup" "$frames"
+            forward_row "$device" "$w" "$h" "$n" deferred tiled "$form" 3 20
+        done
     done
+}
+
+# gpu_forward: the forward study on the NVIDIA machine, and one validated 3-frame run of forward
+# shading on three scenes (the message count).
+gpu_forward() {
+    local messages=0 scene
+    for scene in default lights-16 lights-1024; do
+        "$bin/chapter-15" --headless --device NVIDIA --width 1920 --height 1080 --validation \
+            --scene "$bin/scenes/$scene/scene.json" --shading forward --frames 3 > /dev/null 2> "$work/err.txt" || echo "validation run failed: $scene" >> "$work/err.txt"
+        cat "$work/err.txt" >> "$out/forward-deferred-gpu-validation.log"
+        messages=$((messages + $(grep -c "^validation" "$work/err.txt" || true)))
+    done
+    echo "$messages" > "$out/forward-deferred-gpu-validation.txt"
+    { echo "$forward_header"; forward_study NVIDIA 1920 1080; forward_study NVIDIA 3840 2160; } > "$out/forward-deferred-gpu.tsv"
 }
 
 case "${1:-}" in
@@ -135,13 +155,14 @@ case "${1:-}" in
             done
         done
     done
-    for scene in default lights-16 lights-1024; do  # forward shading, validated the same way
-        "$bin/chapter-15" --headless --device NVIDIA --width 1920 --height 1080 --validation \
-            --scene "$bin/scenes/$scene/scene.json" --shading forward --frames 3 > /dev/null 2> "$work/err.txt" || true
-        messages=$((messages + $(grep -c "^validation" "$work/err.txt" || true)))
-    done
     echo "$messages" > "$out/light-scaling-gpu-validation.txt"
-    { echo "$forward_header"; forward_study NVIDIA 1920 1080; forward_study NVIDIA 3840 2160; } > "$out/forward-deferred-gpu.tsv"
+    gpu_forward
+    exit 0
+    ;;
+--gpu-forward)
+    build=$(cd "$2" && pwd) bin=$build/bin out=$3
+    mkdir -p "$out"
+    gpu_forward
     exit 0
     ;;
 --report)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Packs what a machine with a GPU but no compiler (or no Vulkan loader) needs to run the chapters
 # headless and the benchmarks there: the Release binaries, shaders and scenes of BUILD_DIR/bin
-# into .gpu/build/bin, and the Debian (amd64) runtime packages they load into .gpu/debs -- the
-# Vulkan loader, GLFW and what it links, stb, tinyobjloader, a current libstdc++, and the Khronos
+# into .gpu/build/bin, the scene generator into .gpu/build/tools, and the Debian (amd64) runtime
+# packages they load into .gpu/debs -- the Vulkan loader, GLFW and what it links, stb, tinyobjloader, a current libstdc++, and the Khronos
 # validation layer, so that --validation works there too.
 #
 #   scripts/gpu_package.sh [BUILD_DIR]      (default: build, configured Release and built)
@@ -22,6 +22,8 @@ mkdir -p "$lists/partial" "$root/.gpu/debs" "$root/.gpu/build"
 apt=(-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 "-oDir::State::Lists=$lists")
 apt-get "${apt[@]}" update > /dev/null
 (cd "$root/.gpu/debs" && rm -f ./*.deb && apt-get "${apt[@]}" download "${packages[@]}" > /dev/null)
-rm -rf "$root/.gpu/build/bin"
+rm -rf "$root/.gpu/build/bin" "$root/.gpu/build/tools"
 cp -r "$build/bin" "$root/.gpu/build/bin"
+mkdir -p "$root/.gpu/build/tools"  # bench/light_scaling.sh makes scenes with it
+cp "$build/tools/generate_light_scene" "$root/.gpu/build/tools/"
 echo "gpu_package.sh: $(du -sh "$root/.gpu" | cut -f1) in .gpu (the device tool carries at most 64 MiB)"
