@@ -2,8 +2,9 @@
 # Packs what a machine with a GPU but no compiler (or no Vulkan loader) needs to run the chapters
 # headless and the benchmarks there: the Release binaries, shaders and scenes of BUILD_DIR/bin
 # into .gpu/build/bin, the scene generator into .gpu/build/tools, and the Debian (amd64) runtime
-# packages they load into .gpu/debs -- the Vulkan loader, GLFW and what it links, stb, tinyobjloader, a current libstdc++, and the Khronos
-# validation layer, so that --validation works there too.
+# packages they load into .gpu/debs -- the Vulkan loader, GLFW and what it links, stb,
+# tinyobjloader, a current libstdc++, and the Khronos validation layer, so that --validation works
+# there too.
 #
 #   scripts/gpu_package.sh [BUILD_DIR]      (default: build, configured Release and built)
 #
