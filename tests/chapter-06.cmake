@@ -68,8 +68,4 @@ file(MAKE_DIRECTORY ${TEST_OUT}/dir.png)
 add_test(NAME chapter-06.pipeline-cache COMMAND ${CMAKE_COMMAND} -DCHAPTER=${CH06}
          -DCACHE_HOME=${CMAKE_CURRENT_BINARY_DIR}/cache-test-06 -P ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_cache.cmake)
 
-# The chapter configures and builds on its own, as a reader does it.
-add_test(NAME chapter-06.standalone-build
-    COMMAND sh -c "rm -rf \"$1\" && ${CMAKE_COMMAND} -S \"$2\" -B \"$1\" -DCMAKE_BUILD_TYPE=Release >/dev/null && ${CMAKE_COMMAND} --build \"$1\" -j2 >/dev/null && \"$1/bin/chapter-06\" --headless --device llvmpipe --validation"
-    _ ${CMAKE_CURRENT_BINARY_DIR}/standalone-06 ${PROJECT_SOURCE_DIR}/chapter-06)
-set_tests_properties(chapter-06.standalone-build PROPERTIES ENVIRONMENT "${TEST_ENV}" LABELS slow)
+standalone_build_test(06)

@@ -77,7 +77,4 @@ ch10_bad(scene-and-model "--scene and --model exclude each other" --scene a.json
 chapter_test(chapter-06.bad-scene-option COMMAND ${CH06} --headless --scene x.json
     EXPECT_EXIT 2 EXPECT_STDERR "chapter-06 draws no scene and takes no --scene" ONE_LINE_STDERR)
 
-add_test(NAME chapter-10.standalone-build
-    COMMAND sh -c "rm -rf \"$1\" && ${CMAKE_COMMAND} -S \"$2\" -B \"$1\" -DCMAKE_BUILD_TYPE=Release >/dev/null && ${CMAKE_COMMAND} --build \"$1\" -j2 >/dev/null && \"$1/bin/chapter-10\" --headless --device llvmpipe --validation --width 320 --height 180"
-    _ ${CMAKE_CURRENT_BINARY_DIR}/standalone-10 ${PROJECT_SOURCE_DIR}/chapter-10)
-set_tests_properties(chapter-10.standalone-build PROPERTIES ENVIRONMENT "${TEST_ENV}" LABELS slow)
+standalone_build_test(10 --width 320 --height 180)

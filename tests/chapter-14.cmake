@@ -62,7 +62,4 @@ chapter_test(chapter-14.bad-scene COMMAND ${CH14_RUN} --headless --scene ${DATA}
 chapter_test(chapter-14.bad-frames-in-flight COMMAND ${CH14} --headless --frames-in-flight 4
     EXPECT_EXIT 2 EXPECT_STDERR "--frames-in-flight must be between 1 and 3, got 4" ONE_LINE_STDERR)
 
-add_test(NAME chapter-14.standalone-build
-    COMMAND sh -c "rm -rf \"$1\" && ${CMAKE_COMMAND} -S \"$2\" -B \"$1\" -DCMAKE_BUILD_TYPE=Release >/dev/null && ${CMAKE_COMMAND} --build \"$1\" -j2 >/dev/null && \"$1/bin/chapter-14\" --headless --device llvmpipe --validation --width 320 --height 180"
-    _ ${CMAKE_CURRENT_BINARY_DIR}/standalone-14 ${PROJECT_SOURCE_DIR}/chapter-14)
-set_tests_properties(chapter-14.standalone-build PROPERTIES ENVIRONMENT "${TEST_ENV}" LABELS slow)
+standalone_build_test(14 --width 320 --height 180)

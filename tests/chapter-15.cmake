@@ -89,10 +89,7 @@ endif()
 chapter_test(chapter-15.bad-view COMMAND ${CH15} --headless --view specular
     EXPECT_EXIT 2 EXPECT_STDERR "--view must be one of final\\|position\\|albedo\\|normal\\|pbr\\|depth" ONE_LINE_STDERR)
 
-add_test(NAME chapter-15.standalone-build
-    COMMAND sh -c "rm -rf \"$1\" && ${CMAKE_COMMAND} -S \"$2\" -B \"$1\" -DCMAKE_BUILD_TYPE=Release >/dev/null && ${CMAKE_COMMAND} --build \"$1\" -j2 >/dev/null && \"$1/bin/chapter-15\" --headless --device llvmpipe --validation --width 320 --height 180"
-    _ ${CMAKE_CURRENT_BINARY_DIR}/standalone-15 ${PROJECT_SOURCE_DIR}/chapter-15)
-set_tests_properties(chapter-15.standalone-build PROPERTIES ENVIRONMENT "${TEST_ENV}" LABELS slow)
+standalone_build_test(15 --width 320 --height 180)
 
 # --light-pass compute: the same shading in a compute dispatch. Its image must match the fragment
 # form's rendered in this test run (views final and normal, both layouts), within one 8-bit step;

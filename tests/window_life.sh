@@ -45,7 +45,7 @@ window=$(timeout 60 xdotool search --sync --name "^$name") || fail "no window ap
 window=${window%%$'\n'*}
 cpu_ticks() { awk '{ print $14 + $15 }' "/proc/$pid/stat"; }  # user + system time, 1/100 s
 rss_kb() { awk '/^RssAnon/ { print $2 }' "/proc/$pid/status"; }
-sleep 2
+sleep 1  # its first frames
 
 # 1-2. Minimise, measure, restore, measure.
 xdotool windowminimize --sync "$window" || fail "xdotool could not minimise the window"
@@ -74,7 +74,7 @@ for i in $(seq 1 100); do
     kill -0 "$pid" 2> /dev/null || fail "the chapter ended during resize $i"
     if [ $((i % 10)) -eq 0 ]; then
         xdotool windowsize --sync "$window" "$width" "$height"
-        sleep 1
+        sleep 0.5  # a few frames at that size, the old size's images gone
         readings="$readings $(rss_kb)"
     fi
 done
