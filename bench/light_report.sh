@@ -59,6 +59,25 @@ targets() {
 
 device() { awk -F'\t' -v size="$2" 'NR > 1 && $2 == size {print $1; exit}' "$1"; }
 
+# plot_panels SVG SIZE YLABEL XTICS PLOT: one log-log panel per entry of plots ("FILE|TITLE"), each
+# "plot 'FILE' PLOT" against the number of lights, side by side.
+plot_panels() {
+    local entry file title
+    {
+        echo "set terminal svg size $2 font 'sans,11' background '#ffffff'"
+        echo "set output '$1'"
+        echo "set multiplot layout 1,${#plots[@]}"
+        echo "set logscale xy; set grid; set key top left font ',9'; set xlabel 'point lights'; set ylabel '$3'"
+        echo "set xtics $4"
+        for entry in "${plots[@]}"; do
+            file=${entry%%|*} title=${entry#*|}
+            echo "set title '$title' font ',10'"
+            echo "plot '$file' $5"
+        done
+        echo "unset multiplot"
+    } | gnuplot
+}
+
 section=$work/scaling.md
 : > "$section"
 plots=()
@@ -92,19 +111,8 @@ paste_section "$root/docs/performance.md" light-scaling "$section"
 
 # The scaling plot: one panel per device and size; light pass of the loop and whole frame with
 # culling against the number of lights, log-log.
-{
-    echo "set terminal svg size 1100,380 font 'sans,11' background '#ffffff'"
-    echo "set output '$root/docs/images/light-scaling.svg'"
-    echo "set multiplot layout 1,${#plots[@]}"
-    echo "set logscale xy; set grid; set key top left font ',9'; set xlabel 'point lights'; set ylabel 'GPU ms (median)'"
-    echo "set xtics ('16' 16, '256' 256, '4k' 4096, '64k' 65536)"
-    for entry in "${plots[@]}"; do
-        file=${entry%%|*} title=${entry#*|}
-        echo "set title '$title' font ',10'"
-        echo "plot '$file' using 1:2 with linespoints title 'loop: light pass (fragment)', '' using 1:3 with linespoints title 'loop: light pass (compute)', '' using 1:4 with linespoints title 'tiled: whole frame (fragment)', '' using 1:5 with linespoints title 'tiled: whole frame (compute)'"
-    done
-    echo "unset multiplot"
-} | gnuplot
+plot_panels "$root/docs/images/light-scaling.svg" 1100,380 "GPU ms (median)" "('16' 16, '256' 256, '4k' 4096, '64k' 65536)" \
+    "using 1:2 with linespoints title 'loop: light pass (fragment)', '' using 1:3 with linespoints title 'loop: light pass (compute)', '' using 1:4 with linespoints title 'tiled: whole frame (fragment)', '' using 1:5 with linespoints title 'tiled: whole frame (compute)'"
 
 # Forward against deferred: one table per device and size, and one plot (frame time against N).
 forward_table() {
@@ -159,19 +167,9 @@ if [ -f "$results/forward-deferred-gpu-validation.txt" ]; then
 fi
 if [ -s "$section" ]; then
     paste_section "$root/docs/performance.md" forward-deferred "$section"
-    {
-        echo "set terminal svg size 1300,420 font 'sans,11' background '#ffffff'"
-        echo "set output '$root/docs/images/forward-deferred.svg'"
-        echo "set multiplot layout 1,${#plots[@]}"
-        echo "set logscale xy; set grid; set key top left font ',9'; set xlabel 'point lights'; set ylabel 'GPU frame ms (median)'"
-        echo "set xtics ('1' 1, '4' 4, '16' 16, '64' 64, '256' 256, '1k' 1024); set xrange [0.8:1300]"
-        for entry in "${plots[@]}"; do
-            file=${entry%%|*} title=${entry#*|}
-            echo "set title '$title' font ',10'"
-            echo "plot '$file' using 1:2 with linespoints lw 2 title 'forward', '' using 1:3 with linespoints title 'deferred, loop (fragment)', '' using 1:4 with linespoints title 'deferred, loop (compute)', '' using 1:5 with linespoints title 'deferred, tiled (fragment)', '' using 1:6 with linespoints title 'deferred, tiled (compute)'"
-        done
-        echo "unset multiplot"
-    } | gnuplot
+    plot_panels "$root/docs/images/forward-deferred.svg" 1300,420 "GPU frame ms (median)" \
+        "('1' 1, '4' 4, '16' 16, '64' 64, '256' 256, '1k' 1024); set xrange [0.8:1300]" \
+        "using 1:2 with linespoints lw 2 title 'forward', '' using 1:3 with linespoints title 'deferred, loop (fragment)', '' using 1:4 with linespoints title 'deferred, loop (compute)', '' using 1:5 with linespoints title 'deferred, tiled (fragment)', '' using 1:6 with linespoints title 'deferred, tiled (compute)'"
 fi
 
 # The cutoff: table and the speed-against-error curve.
