@@ -2,7 +2,8 @@
 # against. Its image must be the deferred one's: with the reference G-buffer (32-bit floats
 # throughout, standard depth, as forward's), the light output equals the loop's up to fp32
 # rounding of the sum (pfm_compare's bound), on the default scene and on many lights with ranges,
-# under validation (synchronization validation on), across a resize. Plus what it refuses.
+# under validation (synchronization validation on), across a resize; and its picture is the book's
+# golden image. Plus what it refuses.
 
 # forward_case(NAME LIGHTS ARGS...): forward and deferred (reference G-buffer) light outputs compared.
 function(forward_case name lights)
@@ -30,6 +31,16 @@ forward_case(default 2 ARGS ${CULL_SIZE} --frames 3)
 forward_case(lights-256 256 ARGS ${CULL_SIZE} --scene ${LIGHT_SCENES}/lights-256/scene.json)
 # A resize while frames are in flight: the output and depth follow the window.
 forward_case(resize 2 ARGS ${CULL_SIZE} --frames 4 --resize 333x197 --frames-in-flight 3)
+
+# As a picture: forward shading of the default scene against the book's deferred golden image (the
+# two differ by the book G-buffer's half floats: 2/255 at most when this was written).
+chapter_test(chapter-15.forward-final WORKDIR /
+    COMMAND ${CH15_RUN} --headless ${CH15_SIZE} --shading forward --screenshot ${TEST_OUT}/chapter-15-forward.png
+    EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
+set_tests_properties(chapter-15.forward-final PROPERTIES FIXTURES_SETUP ch15-forward)
+add_test(NAME chapter-15.forward-final-image COMMAND image_compare ${TEST_OUT}/chapter-15-forward.png
+    --size 640 360 --golden ${GOLDEN}/chapter-15-final.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-15.forward-final-image PROPERTIES FIXTURES_REQUIRED ch15-forward)
 
 # The overlay with forward shading: no G-buffer or light-pass choice, no G-buffer view.
 chapter_test(chapter-15.forward-gui

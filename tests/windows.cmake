@@ -107,6 +107,13 @@ windows_test(windows.chapter-15-lights-1024-tiled
 windows_image(windows.chapter-15-lights-1024-tiled ${WIN_OUT}/chapter-15-lights-1024.png --size 640 360
     --golden ${GOLDEN}/chapter-15-lights-1024.png ${GOLDEN_MATCH})
 
+# Beyond the book: forward shading (--shading forward), against the book's deferred golden image.
+windows_test(windows.chapter-15-forward
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE} --shading forward
+            --screenshot ${WIN_OUT}/chapter-15-forward.png EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
+windows_image(windows.chapter-15-forward ${WIN_OUT}/chapter-15-forward.png --size 640 360
+    --golden ${GOLDEN}/chapter-15-final.png ${GOLDEN_MATCH})
+
 # The --gui overlay: Dear ImGui built from source (the portable dependency path), the GUI pass
 # against the Linux build's golden image.
 windows_test(windows.chapter-15-gui
