@@ -77,6 +77,13 @@ case "$command" in
     test)
         install_missing
         build_release
+        # The fuzz targets are test programs like the others: built here, not in the test stage
+        # (their own clang tree; the target exists where clang can link them).
+        if cmake --build "$build" --target help | grep -q 'fuzz-targets'; then
+            started=$SECONDS
+            cmake --build "$build" --target fuzz-targets
+            echo "setup: fuzz targets built in $((SECONDS - started)) s"
+        fi
         # One test more than there are cores: the windowed tests spend much of their time waiting
         # (window manager, xdotool, sleeps), and the cores stay busy meanwhile.
         jobs=$(($(nproc) + 1))

@@ -29,9 +29,15 @@ elseif(NOT VKBOOK_FUZZ_LINKS STREQUAL VKBOOK_FUZZ_CXX)
                     "left out (Debian: apt install libclang-rt-14-dev)")
 else()
     add_test(NAME fuzz.loaders COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/run.sh 20)
-    # Its own clang build tree inside this one; the first run builds it (about a minute).
+    # Its own clang build tree inside this one; the first run builds it (about a minute) unless the
+    # fuzz-targets target has (scripts/setup.sh test builds it with the rest, before the tests).
     set_tests_properties(fuzz.loaders PROPERTIES
         LABELS fuzz
         TIMEOUT 600
         ENVIRONMENT "FUZZ_CXX=${VKBOOK_FUZZ_CXX};FUZZ_BUILD_DIR=${fuzz_dir}/build")
+    add_custom_target(fuzz-targets
+        COMMAND ${CMAKE_COMMAND} -E env FUZZ_CXX=${VKBOOK_FUZZ_CXX} FUZZ_BUILD_DIR=${fuzz_dir}/build
+                ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/run.sh --build-only
+        COMMENT "Building the libFuzzer targets with ${VKBOOK_FUZZ_CXX} (tests/fuzz/run.sh --build-only)"
+        VERBATIM)
 endif()

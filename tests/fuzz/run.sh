@@ -5,6 +5,7 @@
 # (tests/fuzz/corpus/<obj|scene>/), which is never written to unless --merge is given.
 #
 #   tests/fuzz/run.sh [SECONDS] [--merge]
+#   tests/fuzz/run.sh --build-only       (the build alone: the fuzz-targets target of the main build)
 #
 # --merge: afterwards, add the inputs that reach new edges to the committed corpus (libFuzzer
 #          -merge=1 without hit counts, which keeps it small); for a developer's long run, never in CI.
@@ -16,11 +17,13 @@ set -euo pipefail
 
 seconds=60
 merge=0
+build_only=0
 for arg in "$@"; do
     case $arg in
         --merge) merge=1 ;;
+        --build-only) build_only=1 ;;
         '' | *[!0-9]*)
-            echo "usage: tests/fuzz/run.sh [SECONDS] [--merge]" >&2
+            echo "usage: tests/fuzz/run.sh [SECONDS] [--merge] | --build-only" >&2
             exit 2
             ;;
         *) seconds=$arg ;;
@@ -36,6 +39,7 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" >/dev/null
 fi
 cmake --build "$build" -j 2 >/dev/null || cmake --build "$build" -j 1  # again, to show the error
+[ "$build_only" -eq 1 ] && exit 0
 
 # Symbolized stack traces in sanitizer reports; every report ends the run.
 symbolizer=$(command -v "llvm-symbolizer-${cxx##*-}" || command -v llvm-symbolizer || true)
