@@ -97,7 +97,18 @@ case "$command" in
         cd "$root"
         started=$SECONDS
         cmake --preset windows-cross
+        # The build runs its scene generators under Wine, several at once. Without a display no
+        # Wine process stays up between them, so each may start a wineserver as the last one's is
+        # exiting, and lose it ("wine client error: recvmsg: Connection reset by peer"). One
+        # persistent wineserver for the whole build (ended after it; the tests keep theirs up with
+        # a display, tests/wine_display.sh) leaves nothing to race with.
+        prefix=$root/build-windows/wine-prefix
+        VKBOOK_WINEPREFIX=$prefix "$root/cmake/toolchains/wine-run.sh" cmd.exe /c exit  # makes the prefix
+        WINEPREFIX=$prefix wineserver -w
+        WINEPREFIX=$prefix wineserver -p
+        trap 'WINEPREFIX=$prefix wineserver -k 2> /dev/null || true' EXIT
         cmake --build --preset windows-cross -j "$(nproc)"
+        WINEPREFIX=$prefix wineserver -k 2> /dev/null || true
         echo "windows-cross: build took $((SECONDS - started)) s"
         started=$SECONDS
         ctest --preset windows-cross -j "$(($(nproc) + 1))"
