@@ -71,9 +71,8 @@ const common::ChapterInfo kChapter{
      {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"},
      {"shading",
       {"deferred", "forward"},
-      "deferred: the G-buffer, then the light pass (the book's); forward: the scene pass shades each "
-      "fragment "
-      "with every light (no G-buffer), to compare"},
+      "deferred: the G-buffer, then the light pass (the book's); "
+      "forward: the scene pass shades each fragment with every light (no G-buffer), to compare"},
      common::kGuiClickChoice},
 };
 
@@ -330,7 +329,7 @@ void run(const common::Options& options) {
             lastTime = now;
             common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
             if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
-            if (common::pressedOnce(target.window, viewKey) && keys)
+            if (common::pressedOnce(target.window, viewKey) && keys && !forward)  // forward: no views
                 lightView.view = (lightView.view + 1) % int(kChapter.views.size());
             if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
         }
