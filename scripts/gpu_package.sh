@@ -27,4 +27,4 @@ rm -rf "$root/.gpu/build/bin" "$root/.gpu/build/tools"
 cp -r "$build/bin" "$root/.gpu/build/bin"
 mkdir -p "$root/.gpu/build/tools"  # bench/light_scaling.sh makes scenes with it
 cp "$build/tools/generate_light_scene" "$root/.gpu/build/tools/"
-echo "gpu_package.sh: $(du -sh "$root/.gpu" | cut -f1) in .gpu (the device tool carries at most 64 MiB)"
+echo "gpu_package.sh: $(du -sh "$root/.gpu" | cut -f1) in .gpu"
