@@ -1,4 +1,5 @@
-// The GUI pass (chapter-14/gui_pass.cpp writes it out; this is the shared copy).
+// The GUI pass for the chapters after chapter-14 (chapter-14/gui_pass.cpp writes it out, its
+// pipeline included; here the pipeline comes from common::createGraphicsPipeline).
 #include "common/gui_pass.hpp"
 
 #include <algorithm>
@@ -26,8 +27,6 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
                              VkFormat format) {
     VkShaderModule vertex = common::loadShaderModule(device, "common/gui.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "common/gui.frag");
-    VkPipelineShaderStageCreateInfo stages[] = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                                                common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)};
     VkVertexInputBindingDescription binding{0, sizeof(ImDrawVert), VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription attributes[] = {
         {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, pos)},
@@ -40,63 +39,21 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
         .pVertexBindingDescriptions = &binding,
         .vertexAttributeDescriptionCount = 3,
         .pVertexAttributeDescriptions = attributes};
-    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
-    VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
-                                               .viewportCount = 1,
-                                               .scissorCount = 1};
-    // ImGui's triangles face either way: no culling.
-    VkPipelineRasterizationStateCreateInfo rasterization{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-        .polygonMode = VK_POLYGON_MODE_FILL,
-        .cullMode = VK_CULL_MODE_NONE,
-        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-        .lineWidth = 1.0f};
-    VkPipelineMultisampleStateCreateInfo multisample{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
-    // Blending on: the overlay is drawn over the image with its alpha.
-    VkPipelineColorBlendAttachmentState blend{
-        .blendEnable = VK_TRUE,
-        .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
-        .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-        .colorBlendOp = VK_BLEND_OP_ADD,
-        .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-        .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-        .alphaBlendOp = VK_BLEND_OP_ADD,
-        .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                          VK_COLOR_COMPONENT_A_BIT};
-    VkPipelineColorBlendStateCreateInfo colorBlend{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-        .attachmentCount = 1,
-        .pAttachments = &blend};
-    VkPipelineDepthStencilStateCreateInfo depthStencil{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    // The scissor changes with every draw command, the viewport with the window.
-    VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-                                             .dynamicStateCount = 2,
-                                             .pDynamicStates = dynamicStates};
     // Dynamic rendering: the presented image's format, no depth.
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                             .colorAttachmentCount = 1,
                                             .pColorAttachmentFormats = &format};
-    VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                      .pNext = &rendering,
-                                      .stageCount = 2,
-                                      .pStages = stages,
-                                      .pVertexInputState = &vertexInput,
-                                      .pInputAssemblyState = &inputAssembly,
-                                      .pViewportState = &viewport,
-                                      .pRasterizationState = &rasterization,
-                                      .pMultisampleState = &multisample,
-                                      .pDepthStencilState = &depthStencil,
-                                      .pColorBlendState = &colorBlend,
-                                      .pDynamicState = &dynamic,
-                                      .layout = layout};
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    // ImGui's triangles face either way: no culling. Blending on: the overlay goes over the image
+    // by its alpha. Viewport and scissor are dynamic (the scissor changes with every command).
+    VkPipeline pipeline = common::createGraphicsPipeline(
+        device, cache,
+        {.stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                    common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+         .vertexInput = &vertexInput,
+         .cullMode = VK_CULL_MODE_NONE,
+         .alphaBlend = true,
+         .layout = layout,
+         .pNext = &rendering});
     vkDestroyShaderModule(device.handle, fragment, nullptr);
     vkDestroyShaderModule(device.handle, vertex, nullptr);
     return pipeline;

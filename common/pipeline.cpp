@@ -163,7 +163,13 @@ VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
         .depthCompareOp = desc.depthCompare,
     };
     std::vector<VkPipelineColorBlendAttachmentState> blendAttachments(
-        desc.colorAttachmentCount, {.blendEnable = VK_FALSE,
+        desc.colorAttachmentCount, {.blendEnable = desc.alphaBlend ? VK_TRUE : VK_FALSE,
+                                    .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
+                                    .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                    .colorBlendOp = VK_BLEND_OP_ADD,
+                                    .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+                                    .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                    .alphaBlendOp = VK_BLEND_OP_ADD,
                                     .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                                       VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT});
     VkPipelineColorBlendStateCreateInfo colorBlend{

@@ -49,7 +49,8 @@ struct GraphicsPipelineDesc {
     bool depthTest = false;
     bool depthWrite = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
-    uint32_t colorAttachmentCount = 1;  // one blend state (blending off) per colour attachment
+    uint32_t colorAttachmentCount = 1;  // one blend state per colour attachment
+    bool alphaBlend = false;            // blending off, or "over": colour by source alpha, alpha accumulated
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkRenderPass renderPass = VK_NULL_HANDLE;  // VK_NULL_HANDLE with dynamic rendering
     uint32_t subpass = 0;
