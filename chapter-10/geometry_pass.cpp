@@ -134,8 +134,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
         {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)});
 
     //> descriptor-pool
-    // Sized from what the scene holds: a set per texture, a view matrix per frame in flight.
-    uint32_t textures = uint32_t(scene.textures.size());
+    // Sized from what the scene holds: a set per material, a view matrix per frame in flight.
+    uint32_t textures = uint32_t(scene.materials.size());
     pass.descriptorPool =
         common::createDescriptorPool(device, 2 + framesInFlight + textures,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1 + framesInFlight},
@@ -161,12 +161,12 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
                                       view.buffer.handle, sizeof(glm::mat4));
     }
 
-    pass.sampler =
-        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
-    for (const common::Image& texture : scene.textures) {
+    // A set per material: its albedo texture, with the sampler its model gives it.
+    for (const common::GpuMaterial& material : scene.materials) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
-        common::writeImageDescriptor(device, pass.textureSets.back(), 0, pass.sampler, texture.view,
+        common::writeImageDescriptor(device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
+                                     scene.textures[material.albedo.image].view,
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
 
@@ -174,15 +174,18 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     // Every material in one uniform buffer; a draw selects its own with a dynamic offset, which
     // must be a multiple of minUniformBufferOffsetAlignment.
     VkDeviceSize alignment = device.properties.limits.minUniformBufferOffsetAlignment;
-    pass.materialStride = (sizeof(glm::vec4) + alignment - 1) / alignment * alignment;
+    pass.materialStride = (sizeof(GeometryMaterial) + alignment - 1) / alignment * alignment;
     pass.materials = common::createBuffer(device, pass.materialStride * scene.materials.size(),
                                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
-    for (size_t i = 0; i < scene.materials.size(); ++i)
-        std::memcpy(static_cast<char*>(pass.materials.mapped) + i * pass.materialStride,
-                    &scene.materials[i].diffuse, sizeof(glm::vec4));
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const common::GpuMaterial& m = scene.materials[i];
+        GeometryMaterial material{m.diffuse, m.alphaTested ? m.alphaCutoff : 0.0f, {}};
+        std::memcpy(static_cast<char*>(pass.materials.mapped) + i * pass.materialStride, &material,
+                    sizeof(material));
+    }
     pass.materialSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialLayout);
     common::writeBufferDescriptor(device, pass.materialSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                                  pass.materials.handle, sizeof(glm::vec4));
+                                  pass.materials.handle, sizeof(GeometryMaterial));
     //< materials
 }
 
@@ -278,12 +281,10 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
                             0, nullptr);
     for (const common::Draw& draw : scene.draws) {
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        const common::GpuMaterial& material = scene.materials[draw.material];
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-        std::array<VkDescriptorSet, 2> materialSets{pass.textureSets[material.albedoTexture],
-                                                    pass.materialSet};
+        std::array<VkDescriptorSet, 2> materialSets{pass.textureSets[draw.material], pass.materialSet};
         uint32_t materialOffset = uint32_t(draw.material * pass.materialStride);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 2,
                                 materialSets.data(), 1, &materialOffset);
@@ -298,7 +299,6 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
 void destroyGeometryPass(const common::Device& device, GeometryPass& pass) {
     vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
-    vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);  // frees its sets
     common::destroyBuffer(device, pass.materials);
     for (ViewFrame& view : pass.views) common::destroyBuffer(device, view.buffer);

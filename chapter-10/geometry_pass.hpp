@@ -28,13 +28,21 @@ struct ViewFrame {
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
+// A material as geometry.frag reads it (std140): the colour, and the alpha below which a texel
+// is discarded (0: never).
+struct GeometryMaterial {
+    glm::vec4 diffuse;
+    float alphaCutoff;
+    float padding[3];
+};
+
 struct GeometryPass {
     VkRenderPass renderPass = VK_NULL_HANDLE;
     GBuffer gbuffer;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
 
-    // Set 0: projection, set 1: view (one per frame in flight), set 2: one per texture,
-    // set 3: all materials in one dynamic uniform buffer.
+    // Set 0: projection, set 1: view (one per frame in flight), set 2: one per material (its
+    // albedo texture), set 3: all materials in one dynamic uniform buffer.
     VkDescriptorSetLayout matrixLayout = VK_NULL_HANDLE;
     VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;
     VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
@@ -42,11 +50,10 @@ struct GeometryPass {
     common::Buffer projection;
     std::vector<ViewFrame> views;  // per frame in flight
     common::Buffer materials;
-    VkDeviceSize materialStride = 0;  // sizeof(vec4) rounded up to minUniformBufferOffsetAlignment
+    VkDeviceSize materialStride = 0;  // sizeof(GeometryMaterial) rounded up to minUniformBufferOffsetAlignment
     VkDescriptorSet projectionSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> textureSets;
     VkDescriptorSet materialSet = VK_NULL_HANDLE;
-    VkSampler sampler = VK_NULL_HANDLE;
 
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;

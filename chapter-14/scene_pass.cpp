@@ -37,32 +37,34 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     pass.textureLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
-    uint32_t textures = uint32_t(scene.textures.size());
+    uint32_t materials = uint32_t(scene.materials.size());
     pass.descriptorPool =
-        common::createDescriptorPool(device, framesInFlight + 1 + textures,
+        common::createDescriptorPool(device, framesInFlight + 1 + materials,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textures}});
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, materials}});
 
     pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 
     // The materials never change: one device-local storage buffer, filled through staging.
-    std::vector<glm::vec4> diffuse;
-    for (const common::GpuMaterial& material : scene.materials) diffuse.push_back(material.diffuse);
+    std::vector<SceneMaterial> materialData;
+    for (const common::GpuMaterial& material : scene.materials)
+        materialData.push_back({material.diffuse, material.alphaTested ? material.alphaCutoff : 0.0f, {}});
     common::StagingBatch batch = common::beginStaging(device);
-    pass.materials = common::uploadStaged(device, batch, diffuse.data(), diffuse.size() * sizeof(glm::vec4),
+    pass.materials = common::uploadStaged(device, batch, materialData.data(),
+                                          materialData.size() * sizeof(SceneMaterial),
                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     common::endStaging(device, batch);
     pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                   pass.materials.handle, VK_WHOLE_SIZE);
 
-    pass.sampler =
-        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
-    for (const common::Image& texture : scene.textures) {
+    // A set per material: its albedo texture with the sampler the model gives it.
+    for (const common::GpuMaterial& material : scene.materials) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
-        common::writeImageDescriptor(device, pass.textureSets.back(), 0, pass.sampler, texture.view,
+        common::writeImageDescriptor(device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
+                                     scene.textures[material.albedo.image].view,
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
 }
@@ -276,7 +278,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 1,
-                                &pass.textureSets[scene.materials[draw.material].albedoTexture], 0, nullptr);
+                                &pass.textureSets[draw.material], 0, nullptr);
         vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
                            &draw.model);
         vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(glm::mat4),
@@ -292,7 +294,6 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
     vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
-    vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);
     common::destroyCameraFrames(device, pass.cameras);

@@ -29,17 +29,25 @@ struct GBuffer {
 };
 //< gbuffer
 
+// A material as scene.frag reads it (std430): the colour, and the alpha below which a texel is
+// discarded (0: never).
+struct SceneMaterial {
+    glm::vec4 diffuse;
+    float alphaCutoff;
+    float padding[3];
+};
+static_assert(sizeof(SceneMaterial) == 32);
+
 struct ScenePass {
     GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
-    VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;    // set 2: one per texture
+    VkDescriptorSetLayout textureLayout = VK_NULL_HANDLE;    // set 2: one per material, its albedo texture
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     std::vector<common::CameraFrame> cameras;  // per frame in flight
     common::Buffer materials;
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> textureSets;
-    VkSampler sampler = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
 };

@@ -34,19 +34,25 @@ static_assert(offsetof(ShaderSceneInfo, ambientIntensity) == 12 &&
               offsetof(ShaderSceneInfo, ambientColor) == 16 && offsetof(ShaderSceneInfo, lightCount) == 28 &&
               offsetof(ShaderSceneInfo, unboundedLightCount) == 32);
 
-// Material in a std430 storage buffer: 32 bytes.
+// Material in a std430 storage buffer: 48 bytes.
 inline constexpr uint32_t kMaterialNormalMap = 1u;      // MATERIAL_NORMAL_MAP
 inline constexpr uint32_t kMaterialMetalRoughMap = 2u;  // MATERIAL_METAL_ROUGH_MAP
+inline constexpr uint32_t kMaterialOcclusionMap = 4u;   // MATERIAL_OCCLUSION_MAP
+inline constexpr uint32_t kMaterialDoubleSided = 8u;    // MATERIAL_DOUBLE_SIDED
 struct ShaderMaterial {
     glm::vec4 diffuse;
     float roughness;
     float metallic;
     uint32_t flags;
-    float padding;
+    float alphaCutoff;
+    float normalScale;
+    float occlusionStrength;
+    glm::vec2 padding;
 };
-static_assert(sizeof(ShaderMaterial) == 32);
+static_assert(sizeof(ShaderMaterial) == 48);
 static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20 &&
-              offsetof(ShaderMaterial, flags) == 24);
+              offsetof(ShaderMaterial, flags) == 24 && offsetof(ShaderMaterial, alphaCutoff) == 28 &&
+              offsetof(ShaderMaterial, normalScale) == 32 && offsetof(ShaderMaterial, occlusionStrength) == 36);
 //< gpu-types
 
 // The scene pass's vertex-stage push constants: the model matrix and its inverse-transpose (a

@@ -216,7 +216,7 @@ void run(const common::Options& options) {
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
 
     common::GpuScene gpuScene =
-        common::loadGpuScene(device, scene, models, {.normalMaps = true, .metalRoughMaps = true});
+        common::loadGpuScene(device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     models.clear();
     std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
                 gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),

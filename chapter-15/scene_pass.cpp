@@ -23,25 +23,26 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
 
     //> material-sets
     // Sized from the scene: a camera set per frame in flight, the materials buffer, and one set
-    // of three textures per material, every binding written (unused ones get the defaults).
+    // of four textures per material, each with the sampler the model gives it, every binding
+    // written (unused ones get the defaults).
     uint32_t materials = uint32_t(scene.materials.size());
     pass.descriptorPool =
         common::createDescriptorPool(device, framesInFlight + 1 + materials,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * materials}});
-    pass.sampler =
-        common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_LOD_CLAMP_NONE);
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 * materials}});
     for (const common::GpuMaterial& material : scene.materials) {
         VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
-        uint32_t textures[3] = {material.albedoTexture, material.normalTexture, material.metalRoughTexture};
-        for (uint32_t binding = 0; binding < 3; ++binding)
-            common::writeImageDescriptor(device, set, binding, pass.sampler,
-                                         scene.textures[textures[binding]].view,
+        common::TextureBinding textures[4] = {material.albedo, material.normal, material.metalRough,
+                                              material.occlusion};
+        for (uint32_t binding = 0; binding < 4; ++binding)
+            common::writeImageDescriptor(device, set, binding, scene.samplers[textures[binding].sampler],
+                                         scene.textures[textures[binding].image].view,
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         pass.materialTextureSets.push_back(set);
     }
@@ -52,9 +53,11 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     std::vector<ShaderMaterial> shaderMaterials;
     for (const common::GpuMaterial& m : scene.materials)
         shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic,
-                                   (m.normalTexture != 1 ? kMaterialNormalMap : 0u) |  // 1: the flat default
-                                       (m.metalRoughTexture != 0 ? kMaterialMetalRoughMap : 0u),  // 0: white
-                                   0.0f});
+                                   (m.normal.image != common::kFlatNormalTexture ? kMaterialNormalMap : 0u) |
+                                       (m.metalRough.image != common::kWhiteTexture ? kMaterialMetalRoughMap : 0u) |
+                                       (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
+                                       (m.doubleSided ? kMaterialDoubleSided : 0u),
+                                   m.alphaCutoff, m.normalScale, m.occlusionStrength, glm::vec2(0.0f)});
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
                                           shaderMaterials.size() * sizeof(ShaderMaterial),
@@ -101,11 +104,14 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     //< scene-pipeline
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
     VkShaderModule fragment = common::loadShaderModule(device, target.fragmentShader);
-    for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE}) {
+    for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
+    for (bool doubleSided : {false, true}) {
         VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
         VkSpecializationInfo specialization{
             .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
-        (alphaTest ? pipelines.cutout : pipelines.opaque) = common::createGraphicsPipeline(
+        VkPipeline& pipeline = doubleSided ? (alphaTest ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
+                                           : (alphaTest ? pipelines.cutout : pipelines.opaque);
+        pipeline = common::createGraphicsPipeline(
             device, cache,
             {
                 .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
@@ -115,7 +121,8 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
                 // their fragments, and removes depth ties where a back face meets a front face at a
                 // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
                 // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
-                .cullMode = VK_CULL_MODE_BACK_BIT,
+                // Double-sided materials show both faces.
+                .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE) : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
                 .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
                 .depthTest = true,
                 .depthWrite = true,
@@ -133,6 +140,8 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
 }
 
 void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines) {
+    vkDestroyPipeline(device.handle, pipelines.cutoutDoubleSided, nullptr);
+    vkDestroyPipeline(device.handle, pipelines.opaqueDoubleSided, nullptr);
     vkDestroyPipeline(device.handle, pipelines.cutout, nullptr);
     vkDestroyPipeline(device.handle, pipelines.opaque, nullptr);
     vkDestroyPipelineLayout(device.handle, pipelines.layout, nullptr);
@@ -208,8 +217,10 @@ void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePip
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& [key, drawPointer] : order) {
         const common::Draw& draw = *drawPointer;
-        VkPipeline pipeline =
-            scene.materials[draw.material].alphaTested ? pipelines.cutout : pipelines.opaque;
+        const common::GpuMaterial& material = scene.materials[draw.material];
+        VkPipeline pipeline = material.doubleSided
+                                  ? (material.alphaTested ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
+                                  : (material.alphaTested ? pipelines.cutout : pipelines.opaque);
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;
@@ -234,7 +245,6 @@ void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePip
 
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
     destroyScenePipelines(device, pass.pipelines);
-    vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);
     common::destroyCameraFrames(device, pass.cameras);

@@ -20,12 +20,15 @@
 #include "common/gpu_scene.hpp"
 #include "gbuffer_layout.hpp"
 
-// The scene's two pipelines from one fragment shader: without the alpha test (opaque materials:
-// early depth testing) and with it (cut-outs).
+// The scene's pipelines from one fragment shader: without the alpha test (opaque materials:
+// early depth testing) and with it (cut-outs); each with back faces culled, and without culling
+// for double-sided materials (glTF's doubleSided).
 struct ScenePipelines {
     VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
     VkPipeline opaque = VK_NULL_HANDLE;
     VkPipeline cutout = VK_NULL_HANDLE;
+    VkPipeline opaqueDoubleSided = VK_NULL_HANDLE;
+    VkPipeline cutoutDoubleSided = VK_NULL_HANDLE;
 };
 
 // What a scene pipeline draws into, and with which fragment shader (a file under
@@ -43,13 +46,12 @@ struct ScenePass {
     common::GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
-    VkDescriptorSetLayout texturesLayout = VK_NULL_HANDLE;   // set 2: one per material, its 3 textures
+    VkDescriptorSetLayout texturesLayout = VK_NULL_HANDLE;   // set 2: one per material, its 4 textures
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     std::vector<common::CameraFrame> cameras;  // per frame in flight
     common::Buffer materials;
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialTextureSets;
-    VkSampler sampler = VK_NULL_HANDLE;
     ScenePipelines pipelines;
 };
 

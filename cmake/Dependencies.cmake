@@ -11,7 +11,7 @@
 # After this file, these targets exist whichever way they came: glfw, glm::glm,
 # tinyobjloader::tinyobjloader, nlohmann_json::nlohmann_json, vkbook::stb (stb_image,
 # stb_image_write, stb_image_resize, with their implementations), vkbook::imgui (Dear ImGui with
-# its GLFW platform backend, used for input only) and Vulkan::Vulkan with
+# its GLFW platform backend, used for input only), vkbook::tinygltf (glTF 2.0) and Vulkan::Vulkan with
 # Vulkan::glslangValidator (the Vulkan SDK on Windows and macOS; not fetched).
 include_guard(GLOBAL)
 include(FetchContent)
@@ -134,3 +134,27 @@ else()
 endif()
 add_library(vkbook::imgui ALIAS vkbook_imgui)
 
+
+# tinygltf (glTF 2.0): Debian's libtinygltf-dev (2.7) has a CMake package with the implementation
+# compiled against Debian's nlohmann-json and stb. Anywhere else the same release is fetched and
+# its implementation compiled here by tinygltf_implementation.cpp, against the nlohmann-json and
+# stb above (not the copies in tinygltf's repository, which would clash with them).
+find_package(TinyGLTF 2.7 QUIET)
+if(TARGET TinyGLTF::TinyGLTF)
+    add_library(vkbook_tinygltf INTERFACE)
+    target_link_libraries(vkbook_tinygltf INTERFACE TinyGLTF::TinyGLTF)
+else()
+    FetchContent_Declare(tinygltf
+        GIT_REPOSITORY https://github.com/syoyo/tinygltf.git
+        GIT_TAG v2.7.0)
+    FetchContent_GetProperties(tinygltf)
+    if(NOT tinygltf_POPULATED)
+        FetchContent_Populate(tinygltf)
+    endif()
+    add_library(vkbook_tinygltf STATIC ${CMAKE_CURRENT_LIST_DIR}/tinygltf_implementation.cpp)
+    target_include_directories(vkbook_tinygltf SYSTEM PUBLIC ${tinygltf_SOURCE_DIR})
+    target_link_libraries(vkbook_tinygltf PUBLIC nlohmann_json::nlohmann_json vkbook::stb)
+    # stb and the file names tinygltf passes it are UTF-8 on Windows too.
+    target_compile_definitions(vkbook_tinygltf PRIVATE STBI_WINDOWS_UTF8)
+endif()
+add_library(vkbook::tinygltf ALIAS vkbook_tinygltf)

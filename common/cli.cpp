@@ -41,7 +41,10 @@ constexpr const char* kUsage =
 
 constexpr const char* kSceneUsage =
     "  --scene FILE.json  render the scene described by FILE.json (default: the generated default scene)\n"
-    "  --model FILE.obj   render one OBJ model (with its MTL and textures), framed by the camera\n"
+    "  --model FILE       render one model, framed by the camera: OBJ (with its MTL and textures)\n"
+    "                     or glTF 2.0 (.gltf with its files, or .glb)\n"
+    "  --book-scene PATH  the book's chapter-15 scene: its Sponza.gltf (PATH: the book's clone, or the\n"
+    "                     .gltf), its camera and lights\n"
     "  --view NAME        show one attachment instead of the final image: %s\n";
 
 constexpr const char* kExitCodes =
@@ -155,7 +158,8 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             options.validation = true;
         } else if (arg == "--resize") {
             options.resizeTo = parseExtent(arg, value());
-        } else if ((arg == "--scene" || arg == "--model" || arg == "--view") && chapter.views.empty()) {
+        } else if ((arg == "--scene" || arg == "--model" || arg == "--book-scene" || arg == "--view") &&
+                   chapter.views.empty()) {
             throw InputError(std::string(chapter.name) + " draws no scene and takes no " + std::string(arg));
         } else if (arg == "--scene") {
             options.scene = value();
@@ -163,6 +167,9 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         } else if (arg == "--model") {
             options.model = value();
             if (options.model.empty()) throw InputError("--model needs a file name");
+        } else if (arg == "--book-scene") {
+            options.bookScene = value();
+            if (options.bookScene.empty()) throw InputError("--book-scene needs a path");
         } else if (arg == "--view") {
             std::string_view name = value();
             std::string names;
@@ -201,8 +208,8 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     }
     if (!options.json.empty() && !options.benchmark) throw InputError("--json goes with --benchmark");
     if (warmupGiven && !options.benchmark) throw InputError("--warmup goes with --benchmark");
-    if (!options.scene.empty() && !options.model.empty())
-        throw InputError("--scene and --model exclude each other");
+    if (int(!options.scene.empty()) + int(!options.model.empty()) + int(!options.bookScene.empty()) > 1)
+        throw InputError("--scene, --model and --book-scene exclude each other");
     if (options.resizeTo && (!framesGiven || options.frames < 2))
         throw InputError("--resize needs --frames 2 or more (it happens after half of them)");
     return options;
@@ -235,7 +242,7 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
         if (options.help) {
             std::printf("%s: %s\n\n", name, info.summary);
             std::printf(kUsage, name,
-                        info.views.empty() ? "" : " [--scene FILE.json | --model FILE.obj] [--view NAME]");
+                        info.views.empty() ? "" : " [--scene FILE.json | --model FILE | --book-scene PATH] [--view NAME]");
             if (!info.views.empty()) {
                 std::string names;
                 for (const std::string& view : info.views) names += (names.empty() ? "" : "|") + view;

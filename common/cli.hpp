@@ -36,7 +36,8 @@ struct Options {
     std::filesystem::path json;  // --json FILE: the benchmark report as JSON
     // Chapters that render scenes (chapter-10 on):
     std::filesystem::path scene;              // --scene FILE.json
-    std::filesystem::path model;              // --model FILE.obj
+    std::filesystem::path model;              // --model FILE (.obj, .gltf, .glb)
+    std::filesystem::path bookScene;          // --book-scene PATH (the book's clone, or its Sponza.gltf)
     uint32_t view = 0;                        // --view: index into ChapterInfo::views (0 = the final image)
     std::set<std::string> switches;           // chapter-specific on/off options given, e.g. "fxaa" for --fxaa
     std::map<std::string, uint32_t> choices;  // chapter-specific --NAME VALUE: index of VALUE (0 default)

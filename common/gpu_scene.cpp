@@ -1,12 +1,18 @@
 // Loading a scene's models, textures and materials onto the GPU.
 #include "common/gpu_scene.hpp"
 
+#include <algorithm>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdio>
+#include <deque>
+#include <exception>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <string>
-#include <tuple>
+#include <thread>
 
 #include "common/check.hpp"
 #include "common/files.hpp"
@@ -19,86 +25,165 @@ Pixels solid(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
     return Pixels{1, 1, {r, g, b, a}};
 }
 
-// Uploads each distinct texture once; a file that does not exist becomes the fallback with one
-// warning, a file that exists but cannot be decoded is an InputError.
-class TextureLoader {
+// A texture to make, and from what. Materials that ask for the same one share it.
+struct TextureRequest {
+    enum class Kind : uint8_t {
+        Albedo,      // `first` as sRGB colour; alpha from the first channel of `second` (OBJ map_d) when given
+        Linear,      // `first` as it is, linear: normal, metal-rough (glTF) or occlusion maps
+        MetalRough,  // OBJ: the book's metal-rough texture, G from `first` (map_Pr), B from `second` (map_Pm)
+    };
+    Kind kind;
+    ImageSource first, second;
+    auto operator<=>(const TextureRequest&) const = default;
+};
+
+// What a worker thread hands back: a texture's mip chain, or nothing for a missing file.
+struct PreparedTexture {
+    size_t request = 0;
+    std::optional<MipChain> chain;
+    bool hasAlpha = false;
+};
+
+// Makes every requested texture: decoding and mip chains on worker threads (one per core), the
+// uploads on this thread, in staging batches of at most kStagingBudget bytes. At most
+// kReadyPerWorker textures per worker wait for their upload, so host memory holds a few textures
+// at a time however many the scene has.
+class TextureBuilder {
 public:
-    TextureLoader(const Device& device, StagingBatch& batch, GpuScene& scene)
-        : device_(device), batch_(batch), scene_(scene) {
-        scene_.textures.push_back(
-            uploadTexture(device_, batch_, solid(255, 255, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
-        scene_.textures.push_back(
-            uploadTexture(device_, batch_, solid(128, 128, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
-        scene_.textureHasAlpha = {false, false};
+    static constexpr size_t kStagingBudget = size_t{48} << 20;
+    static constexpr size_t kReadyPerWorker = 2;
+
+    TextureBuilder(const Device& device) : device_(device) {
+        srgbMips_ = linearFilterable(device, VK_FORMAT_R8G8B8A8_SRGB);
+        unormMips_ = linearFilterable(device, VK_FORMAT_R8G8B8A8_UNORM);
     }
 
-    // Albedo (sRGB) with alpha taken from the red channel of `alpha` (map_d) when given.
-    uint32_t albedo(const std::filesystem::path& color, const std::filesystem::path& alpha) {
-        return load(
-            {color, alpha, "albedo"},
-            [&] {
-                std::optional<Pixels> rgb = read(color), a = read(alpha);
-                if (!rgb && !a) return std::optional<Pixels>();
-                Pixels out =
-                    rgb ? *rgb : Pixels{a->width, a->height, std::vector<uint8_t>(a->rgba.size(), 255)};
-                if (a) copyChannel(*a, 0, out, 3);
-                return std::optional<Pixels>(out);
-            },
-            VK_FORMAT_R8G8B8A8_SRGB, 0);
+    // The id of a texture to make (the same request twice: the same id).
+    uint32_t request(const TextureRequest& request) {
+        auto [it, added] = ids_.try_emplace(request, uint32_t(requests_.size()));
+        if (added) requests_.push_back(request);
+        return it->second;
     }
 
-    uint32_t normal(const std::filesystem::path& path) {
-        return load(
-            {path, {}, "normal"}, [&] { return read(path); }, VK_FORMAT_R8G8B8A8_UNORM, 1);
-    }
-
-    // The book's metal-rough texture: G = roughness (map_Pr), B = metallic (map_Pm).
-    uint32_t metalRough(const std::filesystem::path& roughness, const std::filesystem::path& metallic) {
-        return load(
-            {roughness, metallic, "metalRough"},
-            [&] {
-                std::optional<Pixels> r = read(roughness), m = read(metallic);
-                if (!r && !m) return std::optional<Pixels>();
-                const Pixels& size = r ? *r : *m;
-                Pixels out{size.width, size.height, std::vector<uint8_t>(size.rgba.size(), 255)};
-                if (r) copyChannel(*r, 0, out, 1);
-                if (m) copyChannel(*m, 0, out, 2);
-                return std::optional<Pixels>(out);
-            },
-            VK_FORMAT_R8G8B8A8_UNORM, 0);
-    }
-
-private:
-    using Key = std::tuple<std::filesystem::path, std::filesystem::path, std::string>;
-
-    template <typename Make>
-    uint32_t load(const Key& key, Make make, VkFormat format, uint32_t fallback) {
-        if (std::get<0>(key).empty() && std::get<1>(key).empty()) return fallback;
-        auto it = loaded_.find(key);
-        if (it != loaded_.end()) return it->second;
-        std::optional<Pixels> pixels = make();
-        uint32_t index = fallback;
-        if (pixels) {
-            index = uint32_t(scene_.textures.size());
-            scene_.textures.push_back(uploadTexture(device_, batch_, *pixels, format));
-            bool alpha = false;
-            for (size_t i = 3; i < pixels->rgba.size() && !alpha; i += 4) alpha = pixels->rgba[i] < 255;
-            scene_.textureHasAlpha.push_back(alpha);
+    // Makes the requested textures into scene.textures; per request, its index there, or
+    // kMissing where its files do not exist.
+    static constexpr uint32_t kMissing = UINT32_MAX;
+    std::vector<uint32_t> build(StagingBatch& batch, GpuScene& scene) {
+        std::vector<uint32_t> index(requests_.size(), kMissing);
+        size_t workers = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
+        workers = std::min(workers, requests_.size());
+        std::vector<std::thread> threads;
+        for (size_t w = 0; w < workers; ++w) threads.emplace_back([this, workers] { work(workers); });
+        size_t staged = 0;
+        try {
+            for (size_t received = 0; received < requests_.size(); ++received) {
+                PreparedTexture prepared;
+                {
+                    std::unique_lock lock(mutex_);
+                    changed_.wait(lock, [&] { return !ready_.empty() || error_; });
+                    if (error_) break;
+                    prepared = std::move(ready_.front());
+                    ready_.pop_front();
+                }
+                changed_.notify_all();
+                if (!prepared.chain) continue;
+                if (staged > 0 && staged + prepared.chain->bytes.size() > kStagingBudget) {
+                    endStaging(device_, batch);  // the copies so far done, their staging memory freed
+                    batch = beginStaging(device_);
+                    staged = 0;
+                }
+                staged += prepared.chain->bytes.size();
+                index[prepared.request] = uint32_t(scene.textures.size());
+                scene.textures.push_back(uploadMipChain(device_, batch, *prepared.chain));
+                scene.textureHasAlpha.push_back(prepared.hasAlpha);
+            }
+        } catch (...) {
+            stop();
+            for (std::thread& t : threads) t.join();
+            throw;
         }
-        loaded_[key] = index;
+        stop();
+        for (std::thread& t : threads) t.join();
+        if (error_) std::rethrow_exception(error_);
         return index;
     }
 
-    std::optional<Pixels> read(const std::filesystem::path& path) {
-        if (path.empty()) return std::nullopt;
+private:
+    void stop() {
+        std::lock_guard lock(mutex_);
+        if (!error_) stopped_ = true;
+        changed_.notify_all();
+    }
+
+    void work(size_t workers) {
+        for (;;) {
+            size_t request;
+            {
+                std::unique_lock lock(mutex_);
+                changed_.wait(lock, [&] { return error_ || stopped_ || ready_.size() < kReadyPerWorker * workers; });
+                if (error_ || stopped_ || next_ >= requests_.size()) return;
+                request = next_++;
+            }
+            PreparedTexture prepared;
+            try {
+                prepared = prepare(request);
+            } catch (...) {
+                std::lock_guard lock(mutex_);
+                if (!error_) error_ = std::current_exception();
+                changed_.notify_all();
+                return;
+            }
+            std::lock_guard lock(mutex_);
+            ready_.push_back(std::move(prepared));
+            changed_.notify_all();
+        }
+    }
+
+    PreparedTexture prepare(size_t index) {
+        const TextureRequest& request = requests_[index];
+        std::optional<Pixels> a = read(request.first), b = read(request.second);
+        std::optional<Pixels> pixels;
+        switch (request.kind) {
+            case TextureRequest::Kind::Albedo:
+                if (!a && !b) break;
+                pixels = a ? std::move(*a) : Pixels{b->width, b->height, std::vector<uint8_t>(b->rgba.size(), 255)};
+                if (b) copyChannel(*b, 0, *pixels, 3);
+                break;
+            case TextureRequest::Kind::Linear: pixels = std::move(a); break;
+            case TextureRequest::Kind::MetalRough:
+                if (!a && !b) break;
+                {
+                    const Pixels& size = a ? *a : *b;
+                    pixels = Pixels{size.width, size.height, std::vector<uint8_t>(size.rgba.size(), 255)};
+                    if (a) copyChannel(*a, 0, *pixels, 1);
+                    if (b) copyChannel(*b, 0, *pixels, 2);
+                }
+                break;
+        }
+        PreparedTexture prepared{index, std::nullopt, false};
+        if (!pixels) return prepared;
+        for (size_t i = 3; i < pixels->rgba.size() && !prepared.hasAlpha; i += 4) prepared.hasAlpha = pixels->rgba[i] < 255;
+        bool srgb = request.kind == TextureRequest::Kind::Albedo;
+        prepared.chain = makeMipChain(*pixels, srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                                      srgb ? srgbMips_ : unormMips_);
+        return prepared;
+    }
+
+    // An image's pixels; nothing (with one warning) for a file that does not exist.
+    std::optional<Pixels> read(const ImageSource& source) {
+        if (source.empty()) return std::nullopt;
+        uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
+        if (source.embedded)
+            return decodePixels(source.embedded->data(), source.embedded->size(), source.name(), maxDimension);
         std::error_code ec;
-        if (!std::filesystem::exists(path, ec)) {
-            if (warned_.insert(path).second)
+        if (!std::filesystem::exists(source.file, ec)) {
+            std::lock_guard lock(mutex_);
+            if (warned_.insert(source.file).second)
                 std::fprintf(stderr, "warning: texture '%s' not found; using the default texture\n",
-                             utf8(path).c_str());
+                             utf8(source.file).c_str());
             return std::nullopt;
         }
-        return loadPixels(path, device_.properties.limits.maxImageDimension2D);
+        return loadPixels(source.file, maxDimension);
     }
 
     // Copies channel `from` of `source` into channel `to` of `target`, nearest-sampled when the
@@ -114,10 +199,24 @@ private:
     }
 
     const Device& device_;
-    StagingBatch& batch_;
-    GpuScene& scene_;
-    std::map<Key, uint32_t> loaded_;
+    bool srgbMips_ = false, unormMips_ = false;
+    std::vector<TextureRequest> requests_;
+    std::map<TextureRequest, uint32_t> ids_;
+    std::mutex mutex_;  // guards what follows
+    std::condition_variable changed_;
+    size_t next_ = 0;
+    std::deque<PreparedTexture> ready_;
+    bool stopped_ = false;
+    std::exception_ptr error_;
     std::set<std::filesystem::path> warned_;
+};
+
+// A material while its textures are being made: request ids where GpuMaterial will hold images.
+struct PendingMaterial {
+    GpuMaterial material;
+    AlphaMode alphaMode = AlphaMode::Auto;
+    uint32_t albedo = kNone, normal = kNone, metalRough = kNone, occlusion = kNone;
+    static constexpr uint32_t kNone = UINT32_MAX;
 };
 
 }  // namespace
@@ -125,14 +224,25 @@ private:
 GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted) {
     GpuScene gpu;
     StagingBatch batch = beginStaging(device);
-    TextureLoader textures(device, batch, gpu);
-    std::map<std::filesystem::path, uint32_t> firstMesh;       // per OBJ: its meshes' index in gpu.meshes
-    std::map<std::filesystem::path, uint32_t> plainMaterials;  // per OBJ without overrides: its materials
+    gpu.textures.push_back(uploadTexture(device, batch, solid(255, 255, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
+    gpu.textures.push_back(uploadTexture(device, batch, solid(128, 128, 255, 255), VK_FORMAT_R8G8B8A8_UNORM));
+    gpu.textureHasAlpha = {false, false};
+    std::map<SamplerDesc, uint32_t> samplers;
+    auto sampler = [&](const SamplerDesc& desc) {
+        auto [it, added] = samplers.try_emplace(desc, uint32_t(gpu.samplers.size()));
+        if (added) gpu.samplers.push_back(createSampler(device, desc));
+        return it->second;
+    };
+    sampler(SamplerDesc{});  // [0]: the default
+    TextureBuilder textures(device);
+    std::vector<PendingMaterial> pending;
+    std::map<std::filesystem::path, uint32_t> firstMesh;       // per model: its meshes' index in gpu.meshes
+    std::map<std::filesystem::path, uint32_t> plainMaterials;  // per model without overrides: its materials
     bool firstBounds = true;
 
     for (uint32_t instanceIndex = 0; instanceIndex < scene.models.size(); ++instanceIndex) {
         const ModelInstance& instance = scene.models[instanceIndex];
-        const ModelData& model = loadObjModelCached(models, instance.file);
+        const ModelData& model = loadModelCached(models, instance.file);
         if (!firstMesh.count(instance.file)) {
             firstMesh[instance.file] = uint32_t(gpu.meshes.size());
             for (const MeshData& mesh : model.meshes) {
@@ -160,7 +270,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 throw InputError(utf8(instance.file) + ": has no material '" + name +
                                  "' (named in the scene's material overrides)");
         }
-        uint32_t materialBase = uint32_t(gpu.materials.size());
+        uint32_t materialBase = uint32_t(pending.size());
         if (instance.materials.empty() && plainMaterials.count(instance.file)) {
             materialBase = plainMaterials[instance.file];
         } else {
@@ -168,19 +278,41 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
             for (const MaterialData& m : model.materials) {
                 MaterialOverride o;
                 if (auto it = instance.materials.find(m.name); it != instance.materials.end()) o = it->second;
-                GpuMaterial material;
+                PendingMaterial p;
+                GpuMaterial& material = p.material;
                 material.diffuse = o.diffuse.value_or(m.diffuse);
                 material.roughness = o.roughness.value_or(m.roughness);
                 material.metallic = o.metallic.value_or(m.metallic);
-                material.albedoTexture =
-                    textures.albedo(o.diffuseTexture.value_or(m.diffuseTexture), m.alphaTexture);
-                if (wanted.normalMaps)
-                    material.normalTexture = textures.normal(o.normalTexture.value_or(m.normalTexture));
-                if (wanted.metalRoughMaps)
-                    material.metalRoughTexture = textures.metalRough(m.roughnessTexture, m.metallicTexture);
-                material.alphaTested =
-                    material.diffuse.a < 1.0f || gpu.textureHasAlpha[material.albedoTexture];
-                gpu.materials.push_back(material);
+                material.normalScale = m.normalScale;
+                material.occlusionStrength = m.occlusionStrength;
+                material.alphaCutoff = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.5f;
+                material.doubleSided = m.doubleSided;
+                p.alphaMode = m.alphaMode;
+                // An override replaces a texture's image; the model's sampler stays.
+                TextureRef albedo = m.diffuseTexture, normal = m.normalTexture;
+                if (o.diffuseTexture) albedo.image = ImageSource{.file = *o.diffuseTexture};
+                if (o.normalTexture) normal.image = ImageSource{.file = *o.normalTexture};
+                using Kind = TextureRequest::Kind;
+                if (!albedo.empty() || !m.alphaTexture.empty()) {
+                    p.albedo = textures.request({Kind::Albedo, albedo.image, m.alphaTexture.image});
+                    material.albedo.sampler = sampler(albedo.empty() ? m.alphaTexture.sampler : albedo.sampler);
+                }
+                if (wanted.normalMaps && !normal.empty()) {
+                    p.normal = textures.request({Kind::Linear, normal.image, {}});
+                    material.normal.sampler = sampler(normal.sampler);
+                }
+                if (wanted.metalRoughMaps && !m.metalRoughTexture.empty()) {
+                    p.metalRough = textures.request({Kind::Linear, m.metalRoughTexture.image, {}});
+                    material.metalRough.sampler = sampler(m.metalRoughTexture.sampler);
+                } else if (wanted.metalRoughMaps && (!m.roughnessTexture.empty() || !m.metallicTexture.empty())) {
+                    p.metalRough =
+                        textures.request({Kind::MetalRough, m.roughnessTexture.image, m.metallicTexture.image});
+                }
+                if (wanted.occlusionMaps && !m.occlusionTexture.empty()) {
+                    p.occlusion = textures.request({Kind::Linear, m.occlusionTexture.image, {}});
+                    material.occlusion.sampler = sampler(m.occlusionTexture.sampler);
+                }
+                pending.push_back(p);
             }
         }
 
@@ -200,11 +332,29 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
             firstBounds = false;
         }
     }
+
+    // The textures, then the materials that use them (a missing file leaves the default).
+    std::vector<uint32_t> made = textures.build(batch, gpu);
+    auto image = [&](uint32_t request, uint32_t fallback) {
+        return request == PendingMaterial::kNone || made[request] == TextureBuilder::kMissing ? fallback : made[request];
+    };
+    for (PendingMaterial& p : pending) {
+        GpuMaterial& material = p.material;
+        material.albedo.image = image(p.albedo, kWhiteTexture);
+        material.normal.image = image(p.normal, kFlatNormalTexture);
+        material.metalRough.image = image(p.metalRough, kWhiteTexture);
+        material.occlusion.image = image(p.occlusion, kWhiteTexture);
+        material.alphaTested = p.alphaMode == AlphaMode::Mask ||
+                               (p.alphaMode == AlphaMode::Auto &&
+                                (material.diffuse.a < 1.0f || gpu.textureHasAlpha[material.albedo.image]));
+        gpu.materials.push_back(material);
+    }
     endStaging(device, batch);
     return gpu;
 }
 
 void destroyGpuScene(const Device& device, GpuScene& scene) {
+    for (VkSampler sampler : scene.samplers) vkDestroySampler(device.handle, sampler, nullptr);
     for (Image& texture : scene.textures) destroyImage(device, texture);
     for (GpuMesh& mesh : scene.meshes) {
         destroyBuffer(device, mesh.indices);

@@ -27,14 +27,28 @@ struct GpuMesh {
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // model space, to sort draws by distance
 };
 
+// A texture as a material binds it: an image of GpuScene::textures with a sampler of
+// GpuScene::samplers.
+struct TextureBinding {
+    uint32_t image = 0;
+    uint32_t sampler = 0;  // [0]: the default, trilinear and repeat
+};
+inline constexpr uint32_t kWhiteTexture = 0;       // GpuScene::textures[0]: 1x1 white
+inline constexpr uint32_t kFlatNormalTexture = 1;  // GpuScene::textures[1]: 1x1 (0.5, 0.5, 1)
+
 struct GpuMaterial {
     glm::vec4 diffuse{1.0f};
     float roughness = 1.0f;
     float metallic = 0.0f;
-    uint32_t albedoTexture = 0;      // index into GpuScene::textures; alpha from map_d when given
-    uint32_t normalTexture = 1;      // tangent-space normal map (a flat one when the MTL has none)
-    uint32_t metalRoughTexture = 0;  // G = roughness, B = metallic, as in the book (white when none)
-    bool alphaTested = false;        // some texel or the colour itself has alpha < 1: a cut-out (discard)
+    TextureBinding albedo{kWhiteTexture};         // sRGB; alpha from map_d when given
+    TextureBinding normal{kFlatNormalTexture};    // tangent-space normal map
+    TextureBinding metalRough{kWhiteTexture};     // G = roughness, B = metallic, as in the book
+    TextureBinding occlusion{kWhiteTexture};      // R = ambient occlusion (glTF)
+    float normalScale = 1.0f;                     // glTF normalTexture.scale
+    float occlusionStrength = 1.0f;               // glTF occlusionTexture.strength
+    float alphaCutoff = 0.5f;                     // alpha below it is discarded when alphaTested
+    bool alphaTested = false;  // a cut-out: glTF MASK (or BLEND); OBJ: some texel or the colour has alpha < 1
+    bool doubleSided = false;  // drawn without back-face culling, back faces' normals flipped
 };
 
 struct Draw {
@@ -48,6 +62,7 @@ struct GpuScene {
     std::vector<GpuMesh> meshes;
     std::vector<Image> textures;        // [0]: 1x1 white, [1]: 1x1 flat normal (0.5, 0.5, 1)
     std::vector<bool> textureHasAlpha;  // per texture: some texel's alpha is below 1
+    std::vector<VkSampler> samplers;    // [0]: the default; one per distinct glTF sampler
     std::vector<GpuMaterial> materials;
     std::vector<Draw> draws;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space
@@ -58,10 +73,13 @@ struct GpuScene {
 struct GpuSceneTextures {
     bool normalMaps = false;
     bool metalRoughMaps = false;
+    bool occlusionMaps = false;
 };
 
 // Throws InputError (naming the file) for a bad model or a corrupt texture; a missing texture
-// file falls back to the default texture with a warning on stderr.
+// file falls back to the default texture with a warning on stderr. Images are decoded and their
+// mip chains made on every core, and uploaded in batches of bounded size, so that a model's
+// textures are never all in host memory at once (beside their device copies).
 GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted);
 void destroyGpuScene(const Device& device, GpuScene& scene);
 

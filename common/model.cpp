@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <climits>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -265,12 +266,12 @@ std::vector<uint32_t> triangulate(const std::vector<glm::dvec3>& corners) {
     return triangles;
 }
 
-std::filesystem::path texturePath(const std::filesystem::path& directory, const std::string& name) {
+TextureRef texturePath(const std::filesystem::path& directory, const std::string& name) {
     if (name.empty()) return {};
     std::string cleaned = name;
     for (char& c : cleaned)
         if (c == '\\') c = '/';  // MTL files written on Windows
-    return directory / cleaned;
+    return TextureRef{.image = {.file = directory / cleaned}};
 }
 
 }  // namespace
@@ -427,9 +428,22 @@ ModelData loadObjModel(const std::filesystem::path& path) {
     return model;
 }
 
-const ModelData& loadObjModelCached(ModelCache& cache, const std::filesystem::path& path) {
+std::string ImageSource::name() const {
+    return embedded ? utf8(file) + " (" + label + ")" : utf8(file);
+}
+
+ModelData loadModel(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });
+    if (extension == ".gltf" || extension == ".glb") return loadGltfModel(path);
+    if (extension == ".obj") return loadObjModel(path);
+    throw InputError(utf8(path) + ": not a model file we read (.obj, .gltf or .glb)");
+}
+
+const ModelData& loadModelCached(ModelCache& cache, const std::filesystem::path& path) {
     auto it = cache.find(path);
-    if (it == cache.end()) it = cache.emplace(path, loadObjModel(path)).first;
+    if (it == cache.end()) it = cache.emplace(path, loadModel(path)).first;
     return it->second;
 }
 

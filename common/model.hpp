@@ -1,11 +1,15 @@
-// Models on the CPU side: OBJ + MTL through tinyobjloader, triangulated, vertices de-duplicated,
-// one mesh per material, with per-vertex tangents computed at load. The book's ModelLoader,
-// ModelData, MeshData and Material (its chapters 7-9; tangents from chapter 15).
+// Models on the CPU side: OBJ + MTL through tinyobjloader (triangulated, vertices de-duplicated,
+// one mesh per material) and glTF 2.0 through tinygltf (common/gltf_model.cpp: the default
+// scene's nodes baked into the vertices, one mesh per triangle primitive), both into the same
+// structures, with per-vertex tangents computed where the file has none. The book's ModelLoader,
+// ModelData, MeshData and Material (its chapters 7-9; tangents and PBR materials from chapter 15).
 #pragma once
 
+#include <compare>
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,17 +28,70 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 56, "Vertex is read by the GPU with this exact layout");
 
-// What an MTL material says, with paths resolved against the MTL's directory.
+// How a texture is sampled: a glTF sampler (glTF 2.0 specification, 5.26 "Sampler"); OBJ
+// textures, and glTF textures without a sampler, get the default (trilinear, repeat).
+enum class Filter : uint8_t { Nearest, Linear };
+enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+struct SamplerDesc {
+    Filter magFilter = Filter::Linear;
+    Filter minFilter = Filter::Linear;
+    bool mipmaps = true;               // false: glTF's NEAREST or LINEAR minification, level 0 only
+    Filter mipFilter = Filter::Linear;  // between mip levels
+    Wrap wrapU = Wrap::Repeat;
+    Wrap wrapV = Wrap::Repeat;
+    auto operator<=>(const SamplerDesc&) const = default;
+};
+
+// Where a texture's encoded pixels (PNG, JPEG, ...) are: a file, or bytes inside the model (a
+// glTF data: URI or a GLB buffer view), shared by every material that uses them.
+struct ImageSource {
+    std::filesystem::path file;  // the image file; for embedded bytes, the model file
+    std::shared_ptr<const std::vector<uint8_t>> embedded;
+    std::string label;  // embedded bytes: which image of the model ("image 3"), for messages
+    bool empty() const { return file.empty() && !embedded; }
+    // What messages call it: the file, or "model.glb (image 3)".
+    std::string name() const;
+    bool operator==(const ImageSource& other) const {
+        return file == other.file && embedded == other.embedded;
+    }
+    auto operator<=>(const ImageSource& other) const {
+        if (auto order = file <=> other.file; order != 0) return order;
+        return std::compare_three_way()(embedded.get(), other.embedded.get());
+    }
+};
+
+struct TextureRef {
+    ImageSource image;  // empty: no texture
+    SamplerDesc sampler;
+    bool empty() const { return image.empty(); }
+};
+
+// How a material treats its alpha.
+enum class AlphaMode : uint8_t {
+    Auto,    // OBJ: a cut-out (alpha tested at 0.5) where d or a texel's alpha is below 1
+    Opaque,  // glTF OPAQUE: alpha ignored
+    Mask,    // glTF MASK (and BLEND, drawn as a mask): discarded where alpha < alphaCutoff
+};
+
+// What a material says: an MTL material, or a glTF metallic-roughness material (glTF 2.0
+// specification, 3.9 "Materials"). Paths are resolved against the model's directory.
 struct MaterialData {
     std::string name;
-    glm::vec4 diffuse{1.0f};                 // Kd, with d (dissolve) as alpha
-    float roughness = 1.0f;                  // Pr
-    float metallic = 0.0f;                   // Pm
-    std::filesystem::path diffuseTexture;    // map_Kd
-    std::filesystem::path normalTexture;     // norm, or bump / map_bump
-    std::filesystem::path roughnessTexture;  // map_Pr
-    std::filesystem::path metallicTexture;   // map_Pm
-    std::filesystem::path alphaTexture;      // map_d
+    glm::vec4 diffuse{1.0f};   // Kd, with d (dissolve) as alpha; glTF baseColorFactor
+    float roughness = 1.0f;    // Pr; glTF roughnessFactor
+    float metallic = 0.0f;     // Pm; glTF metallicFactor
+    TextureRef diffuseTexture;  // map_Kd; glTF baseColorTexture (sRGB)
+    TextureRef alphaTexture;    // map_d (its first channel is the alpha); glTF: in the base colour's alpha
+    TextureRef normalTexture;   // norm, or bump / map_bump; glTF normalTexture
+    float normalScale = 1.0f;   // glTF normalTexture.scale: x and y of the tangent-space normal
+    TextureRef metalRoughTexture;  // glTF metallicRoughnessTexture: G = roughness, B = metallic
+    TextureRef roughnessTexture;   // map_Pr (first channel), when there is no metalRoughTexture
+    TextureRef metallicTexture;    // map_Pm (first channel)
+    TextureRef occlusionTexture;   // glTF occlusionTexture: R = ambient occlusion
+    float occlusionStrength = 1.0f;
+    AlphaMode alphaMode = AlphaMode::Auto;
+    float alphaCutoff = 0.5f;  // AlphaMode::Mask
+    bool doubleSided = false;  // glTF doubleSided: no back-face culling, back faces' normals flipped
 };
 
 struct MeshData {
@@ -54,10 +111,17 @@ struct ModelData {
 // numbers, a missing material library.
 ModelData loadObjModel(const std::filesystem::path& path);
 
-// Models already read in this run, by path: a scene that places one OBJ many times, or --model
+// Loads a glTF 2.0 model, .gltf (with its .bin and images beside it, or data: URIs) or .glb
+// (common/gltf_model.cpp). Throws InputError with one line naming the file and the problem.
+ModelData loadGltfModel(const std::filesystem::path& path);
+
+// loadObjModel or loadGltfModel, by the file's extension (.obj, .gltf, .glb).
+ModelData loadModel(const std::filesystem::path& path);
+
+// Models already read in this run, by path: a scene that places one model many times, or --model
 // (read once for its bounds, then uploaded), reads each file once.
 using ModelCache = std::map<std::filesystem::path, ModelData>;
-const ModelData& loadObjModelCached(ModelCache& cache, const std::filesystem::path& path);
+const ModelData& loadModelCached(ModelCache& cache, const std::filesystem::path& path);
 
 // Computes per-vertex tangents and bitangents from positions, normals and UVs: per-triangle UV
 // derivatives, accumulated per vertex, then made orthogonal to the normal (Gram-Schmidt).

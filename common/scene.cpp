@@ -326,9 +326,39 @@ Scene sceneForModel(const std::filesystem::path& obj, glm::vec3 boundsMin, glm::
     return scene;
 }
 
+//> book-scene
+Scene bookScene(const std::filesystem::path& path) {
+    std::filesystem::path gltf = path;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        gltf = path / "booksamples" / "chapter-15" / "resources" / "models" / "sponza" / "Sponza.gltf";
+    if (!std::filesystem::is_regular_file(gltf, ec))
+        throw InputError(utf8(gltf) + ": no such file (--book-scene takes the book's clone or its Sponza.gltf)");
+    Scene scene;
+    scene.models.push_back(ModelInstance{.file = gltf});
+    // Main.java: camera at (0, 5, 0), rotated 20 degrees about x and 90 about y in the book's
+    // convention (view = rotateX * rotateY * translate): it looks along +x, tilted down. In ours,
+    // yaw 90 looks along +x and pitch -20 down. Projection: fov 60, zNear 1, zFar 50.
+    scene.camera = {.position = {0.0f, 5.0f, 0.0f}, .yaw = 90.0f, .pitch = -20.0f, .fov = 60.0f, .near = 1.0f, .far = 50.0f};
+    scene.ambientColor = glm::vec3(1.0f);
+    scene.ambientIntensity = 0.2f;
+    scene.lights.push_back(Light{.type = Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}});
+    // The green point light, and a cube scaled 0.1 that marks it (ours is 2 units across).
+    glm::vec3 point(5.0f, 3.4f, 1.2f);
+    ModelInstance marker{.file = executableDir() / "scenes" / "default" / "cube.gltf"};
+    marker.transform.position = point;
+    marker.transform.scale = glm::vec3(0.1f);
+    scene.models.push_back(marker);
+    scene.lights.push_back(
+        Light{.type = Light::Type::Point, .position = point, .color = {0.0f, 1.0f, 0.0f}, .marker = 1});
+    return scene;
+}
+//< book-scene
+
 Scene sceneFromOptions(const Options& options, ModelCache& models) {
+    if (!options.bookScene.empty()) return bookScene(options.bookScene);
     if (!options.model.empty()) {
-        const ModelData& model = loadObjModelCached(models, options.model);
+        const ModelData& model = loadModelCached(models, options.model);
         return sceneForModel(options.model, model.boundsMin, model.boundsMax);
     }
     if (!options.scene.empty()) return loadSceneFile(options.scene);

@@ -95,8 +95,14 @@ std::string sceneToJson(const Scene& scene);
 // set-up (ambient 0.2, a directional light straight down).
 Scene sceneForModel(const std::filesystem::path& obj, glm::vec3 boundsMin, glm::vec3 boundsMax);
 
-// The scene the command line asks for: --model, --scene, or the default scene generated at build
-// time next to the executable (scenes/default/scene.json).
+// The book's chapter-15 scene (lwjglgamedev/vulkanbook, booksamples/chapter-15: Main.java): its
+// Sponza.gltf, found from `path` (the book's clone, or the .gltf itself), the book's camera and
+// lights, and the point light's marker cube (the default scene's cube.gltf, next to the
+// executable).
+Scene bookScene(const std::filesystem::path& path);
+
+// The scene the command line asks for: --model, --scene, --book-scene, or the default scene
+// generated at build time next to the executable (scenes/default/scene.json).
 // --model reads the OBJ into `models` for its bounds.
 Scene sceneFromOptions(const Options& options, ModelCache& models);
 

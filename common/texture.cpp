@@ -5,6 +5,7 @@
 #include <stb_image_resize.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -66,14 +67,31 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
     return pixels;
 }
 
-Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format) {
-    // A full mip chain when the format can be sampled with linear filtering (the usual case);
-    // otherwise one level.
+Pixels decodePixels(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
+    if (size == 0 || size > size_t(INT32_MAX)) throw InputError(name + ": not a readable image (empty or too large)");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
+        throw InputError(name + ": not a readable image (" + stbi_failure_reason() + ")");
+    if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
+        throw InputError(name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                         " exceeds the device limit of " + std::to_string(maxDimension));
+    stbi_uc* data = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
+    if (!data) throw InputError(name + ": corrupt image (" + stbi_failure_reason() + ")");
+    Pixels pixels{uint32_t(width), uint32_t(height), {}};
+    pixels.rgba.assign(data, data + size_t(width) * size_t(height) * 4);
+    stbi_image_free(data);
+    return pixels;
+}
+
+bool linearFilterable(const Device& device, VkFormat format) {
     VkFormatProperties properties;
     vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
-    bool filterable = properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+    return properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+}
+
+MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
     uint32_t mipLevels = 1;
-    if (filterable)
+    if (mipmapped)
         for (uint32_t size = std::max(pixels.width, pixels.height); size > 1; size /= 2) ++mipLevels;
 
     // The mip chain is made here on the CPU, each level a 2x2 box filter of the one above
@@ -81,39 +99,48 @@ Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pix
     // up with level 0 in one copy. The book blits each level into the next on the GPU instead;
     // on lavapipe the first blits cost ~110 ms of startup (llvmpipe compiles its blit shaders
     // then), the CPU chain of a 512x512 texture ~3 ms (docs/performance.md).
-    std::vector<VkBufferImageCopy> regions;
-    std::vector<uint8_t> levels = pixels.rgba;
+    MipChain chain{{pixels.width, pixels.height}, format, {}, {}};
+    size_t total = 0;
+    for (uint32_t level = 0, w = pixels.width, h = pixels.height; level < mipLevels;
+         ++level, w = std::max(w / 2, 1u), h = std::max(h / 2, 1u))
+        total += size_t(w) * h * 4;
+    chain.bytes.reserve(total);
+    chain.bytes = pixels.rgba;
     int width = int(pixels.width), height = int(pixels.height);
-    size_t above = 0;  // offset of the level above in `levels`
+    size_t above = 0;  // offset of the level above in `bytes`
     for (uint32_t level = 0; level < mipLevels; ++level) {
         if (level > 0) {
             int nextWidth = std::max(width / 2, 1), nextHeight = std::max(height / 2, 1);
-            size_t offset = levels.size();
-            levels.resize(offset + size_t(nextWidth) * size_t(nextHeight) * 4);
+            size_t offset = chain.bytes.size();
+            chain.bytes.resize(offset + size_t(nextWidth) * size_t(nextHeight) * 4);
             bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
-            if (!stbir_resize_uint8_generic(levels.data() + above, width, height, 0, levels.data() + offset,
-                                            nextWidth, nextHeight, 0, 4, 3, 0, STBIR_EDGE_WRAP,
-                                            STBIR_FILTER_BOX,
+            if (!stbir_resize_uint8_generic(chain.bytes.data() + above, width, height, 0,
+                                            chain.bytes.data() + offset, nextWidth, nextHeight, 0, 4, 3, 0,
+                                            STBIR_EDGE_WRAP, STBIR_FILTER_BOX,
                                             srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
                 throw std::runtime_error("stb_image_resize failed on a mip level");
             above = offset;
             width = nextWidth;
             height = nextHeight;
         }
-        regions.push_back({
+        chain.regions.push_back({
             .bufferOffset = above,
             .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1},
             .imageExtent = {uint32_t(width), uint32_t(height), 1},
         });
     }
+    return chain;
+}
 
-    Image image = createImage(device, {pixels.width, pixels.height}, format,
+Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain) {
+    const uint32_t mipLevels = uint32_t(chain.regions.size());
+    Image image = createImage(device, chain.extent, chain.format,
                               VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT, mipLevels);
 
-    Buffer staging = createBuffer(device, levels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    Buffer staging = createBuffer(device, chain.bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    std::memcpy(staging.mapped, levels.data(), levels.size());
+    std::memcpy(staging.mapped, chain.bytes.data(), chain.bytes.size());
     batch.stagingBuffers.push_back(staging);
 
     VkCommandBuffer cmd = batch.commandBuffer;
@@ -123,13 +150,18 @@ Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pix
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toTransfer);
     vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           uint32_t(regions.size()), regions.data());
+                           mipLevels, chain.regions.data());
     VkImageMemoryBarrier toShader = textureBarrier(
         image.handle, mipLevels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toShader);
     return image;
+}
+
+Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format) {
+    // A full mip chain when the format can be sampled with linear filtering (the usual case).
+    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)));
 }
 
 VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,
@@ -144,6 +176,30 @@ VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressM
         .addressModeV = addressMode,
         .addressModeW = addressMode,
         .maxLod = maxLod,
+        .borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK,
+    };
+    VkSampler sampler = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSampler(device.handle, &info, nullptr, &sampler));
+    return sampler;
+}
+
+VkSampler createSampler(const Device& device, const SamplerDesc& desc) {
+    auto filter = [](Filter f) { return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; };
+    auto wrap = [](Wrap w) {
+        return w == Wrap::ClampToEdge      ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
+               : w == Wrap::MirroredRepeat ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
+                                           : VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    };
+    VkSamplerCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+        .magFilter = filter(desc.magFilter),
+        .minFilter = filter(desc.minFilter),
+        .mipmapMode = desc.mipmaps && desc.mipFilter == Filter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+                                                                       : VK_SAMPLER_MIPMAP_MODE_NEAREST,
+        .addressModeU = wrap(desc.wrapU),
+        .addressModeV = wrap(desc.wrapV),
+        .addressModeW = wrap(desc.wrapU),
+        .maxLod = desc.mipmaps ? VK_LOD_CLAMP_NONE : 0.25f,
         .borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK,
     };
     VkSampler sampler = VK_NULL_HANDLE;

@@ -1,5 +1,5 @@
 // Textures: images decoded with stb_image, uploaded through a staging buffer with a full mip
-// chain generated on the GPU, and samplers. The book's Texture and TextureSampler (chapters 7-8).
+// chain made on the CPU, and samplers. The book's Texture and TextureSampler (chapters 7-8).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -11,6 +11,7 @@
 #include "common/buffer.hpp"
 #include "common/device.hpp"
 #include "common/image.hpp"
+#include "common/model.hpp"
 
 namespace common {
 
@@ -24,9 +25,28 @@ struct Pixels {
 // Throws InputError naming the file when it is missing, corrupt or larger than `maxDimension`.
 Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension);
 
-// Records the upload of `pixels` into a new sampled image of `format` (an 8-bit RGBA format:
-// _SRGB for colour, _UNORM for data such as normal maps) with its mip chain, ending in
-// SHADER_READ_ONLY_OPTIMAL. Usable after endStaging(batch).
+// The same from encoded bytes in memory (an image inside a glTF model); `name` says which in
+// messages.
+Pixels decodePixels(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension);
+
+// A texture's levels made on the CPU, ready for one copy: level 0 and, when `mipmapped`, every
+// smaller level (2x2 box filter; in linear light for an _SRGB format). Touches no Vulkan object,
+// so any thread may make one.
+struct MipChain {
+    VkExtent2D extent{};
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::vector<uint8_t> bytes;              // every level, one after the other
+    std::vector<VkBufferImageCopy> regions;  // one per level, into `bytes`
+};
+MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped);
+// Whether the device filters `format` linearly (then a texture of it gets a full mip chain).
+bool linearFilterable(const Device& device, VkFormat format);
+// Records the upload of `chain` into a new sampled image, ending in SHADER_READ_ONLY_OPTIMAL.
+// Usable after endStaging(batch).
+Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain);
+
+// makeMipChain then uploadMipChain: `pixels` into a new sampled image of `format` (an 8-bit RGBA
+// format: _SRGB for colour, _UNORM for data such as normal maps).
 Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format);
 
 // A sampler. Textures: LINEAR filtering between texels and mip levels, REPEAT, maxLod
@@ -34,5 +54,9 @@ Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pix
 // format supports; linear filtering of D32_SFLOAT is optional), CLAMP_TO_EDGE, maxLod 0.
 VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,
                         float maxLod);
+// A model's texture sampler (a glTF sampler, or the default: trilinear, repeat). A sampler
+// without mipmaps reads level 0 only (maxLod 0.25 with nearest mip selection: minification and
+// magnification filters stay apart, as OpenGL's non-mipmapped filters).
+VkSampler createSampler(const Device& device, const SamplerDesc& desc);
 
 }  // namespace common

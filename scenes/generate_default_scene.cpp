@@ -1,6 +1,8 @@
 // generate_default_scene DIR: writes the default scene of chapters 10-15 into DIR as plain files
-// a reader could have made: OBJ + MTL models, PNG textures and scene.json. Deterministic: the
-// same bytes on every run (textures come from integer hashes, not a random generator).
+// a reader could have made: OBJ + MTL models, PNG textures and scene.json; and the same scene as
+// glTF 2.0 (scene-gltf.json naming courtyard.gltf, ...: the same geometry and materials, the
+// roughness map packed into glTF's metal-rough image). Deterministic: the same bytes on every run
+// (textures come from integer hashes, not a random generator).
 //
 // The scene shows what deferred shading and PBR are for: a courtyard (tiled floor and brick
 // walls with albedo and normal maps, fluted marble columns), two rows of spheres sweeping
@@ -14,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,7 @@
 
 #include "common/files.hpp"
 #include "common/scene.hpp"
+#include "gltf_writer.hpp"
 
 namespace fs = std::filesystem;
 using glm::vec2;
@@ -122,6 +126,20 @@ void writeTextures(const fs::path& dir) {
                 albedo.set(x, y, d < 4 ? vec3(0.22f, 0.20f, 0.18f) : tile);
             }
         writePng(dir / "floor_albedo.png", albedo);
+        // Roughness: the grout rough, the tiles a little polished, unevenly. For OBJ, one channel
+        // (map_Pr); for glTF, packed as its metal-rough image wants: G = roughness, B = metallic
+        // (white: the material's metallic factor alone decides, as for OBJ without map_Pm).
+        Image rough(S, 1), metalRough(S, 3);
+        for (int y = 0; y < S; ++y)
+            for (int x = 0; x < S; ++x) {
+                int cx, cy;
+                float d = edgeDistance(x, y, S / 4, S / 4, false, &cx, &cy);
+                float r = d < 4 ? 1.0f : 0.55f + 0.35f * fractalNoise(float(x), float(y), S, 13);
+                rough.pixels[size_t(y) * S + size_t(x)] = uint8_t(std::lround(r * 255.0f));
+                metalRough.set(x, y, vec3(1.0f, float(rough.pixels[size_t(y) * S + size_t(x)]) / 255.0f, 1.0f));
+            }
+        writePng(dir / "floor_rough.png", rough);
+        writePng(dir / "floor_metal_rough.png", metalRough);
         writePng(dir / "floor_normal.png", normalMap(S, 3.0f, [](int x, int y) {
                      int cx, cy;
                      float d = edgeDistance(x, y, S / 4, S / 4, false, &cx, &cy);
@@ -181,10 +199,26 @@ void writeTextures(const fs::path& dir) {
             }
         writePng(dir / "grille_albedo.png", albedo);
         writePng(dir / "grille_alpha.png", alpha);
+        // glTF has no separate alpha map: the base colour texture carries it.
+        Image albedoAlpha(S, 4);
+        for (size_t i = 0; i < size_t(S) * S; ++i) {
+            for (size_t c = 0; c < 3; ++c) albedoAlpha.pixels[i * 4 + c] = albedo.pixels[i * 3 + c];
+            albedoAlpha.pixels[i * 4 + 3] = alpha.pixels[i];
+        }
+        writePng(dir / "grille_albedo_alpha.png", albedoAlpha);
     }
 }
 
 // ---- Geometry ------------------------------------------------------------------------------
+
+// A glTF metallic-roughness material, as the MTL materials of this scene translate.
+struct GltfMaterial {
+    glm::vec4 color{1.0f};
+    float roughness = 1.0f;
+    float metallic = 0.0f;
+    std::string baseColorImage, metalRoughImage, normalImage;  // files beside the model, or none
+    bool mask = false;                                         // alphaMode MASK (cutoff 0.5)
+};
 
 struct Obj {
     std::vector<vec3> positions, normals;
@@ -302,7 +336,54 @@ struct Obj {
         }
         if (!out) throw std::runtime_error("cannot write " + common::utf8(path));
     }
+
+    // The same model as glTF: one primitive per group, in the material `materials` names for
+    // its group. glTF's texture v runs down the image (v = 1 - the OBJ's).
+    void writeGltf(const fs::path& path, const std::map<std::string, GltfMaterial>& materials) const;
 };
+
+void Obj::writeGltf(const fs::path& path, const std::map<std::string, GltfMaterial>& materials) const {
+    gltf::File file;
+    std::map<std::string, int> materialIndex;
+    auto texture = [&](const std::string& image) { return nlohmann::json{{"index", file.texture(file.image(image))}}; };
+    nlohmann::json primitives = nlohmann::json::array();
+    for (const Group& g : groups) {
+        if (!materialIndex.count(g.material)) {
+            const GltfMaterial& m = materials.at(g.material);
+            nlohmann::json pbr = {{"baseColorFactor", {m.color.r, m.color.g, m.color.b, m.color.a}},
+                                  {"roughnessFactor", m.roughness},
+                                  {"metallicFactor", m.metallic}};
+            if (!m.baseColorImage.empty()) pbr["baseColorTexture"] = texture(m.baseColorImage);
+            if (!m.metalRoughImage.empty()) pbr["metallicRoughnessTexture"] = texture(m.metalRoughImage);
+            nlohmann::json json = {{"name", g.material}, {"pbrMetallicRoughness", pbr}};
+            if (!m.normalImage.empty()) json["normalTexture"] = texture(m.normalImage);
+            if (m.mask) json["alphaMode"] = "MASK";
+            materialIndex[g.material] = file.material(json);
+        }
+        std::vector<vec3> p, n;
+        std::vector<vec2> t;
+        std::vector<uint32_t> indices;
+        std::map<uint32_t, uint32_t> local;
+        for (uint32_t corner : g.corners) {
+            auto [it, added] = local.try_emplace(corner, uint32_t(p.size()));
+            if (added) {
+                p.push_back(positions[corner - 1]);
+                n.push_back(normals[corner - 1]);
+                t.push_back({uvs[corner - 1].x, 1.0f - uvs[corner - 1].y});
+            }
+            indices.push_back(it->second);
+        }
+        primitives.push_back({{"attributes",
+                               {{"POSITION", file.positions(p)},
+                                {"NORMAL", file.values(n, gltf::kFloat, "VEC3")},
+                                {"TEXCOORD_0", file.values(t, gltf::kFloat, "VEC2")}}},
+                              {"indices", file.values(indices, gltf::kUnsignedInt, "SCALAR")},
+                              {"material", materialIndex[g.material]}});
+    }
+    file.node({{"mesh", file.mesh(primitives)}});
+    file.scene({0});
+    file.writeGltf(path);
+}
 
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream out(path);
@@ -343,7 +424,8 @@ int main(int argc, char** argv) {
         courtyard.write(dir / "courtyard.obj", "courtyard.mtl");
         writeText(
             dir / "courtyard.mtl",
-            "newmtl floor\nKd 1 1 1\nPr 0.8\nPm 0\nmap_Kd floor_albedo.png\nnorm floor_normal.png\n\n"
+            "newmtl floor\nKd 1 1 1\nPr 1\nPm 0\nmap_Kd floor_albedo.png\nnorm floor_normal.png\n"
+            "map_Pr floor_rough.png\n\n"
             "newmtl wall\nKd 1 1 1\nPr 0.9\nPm 0\nmap_Kd wall_albedo.png\nnorm wall_normal.png\n\n"
             "newmtl column\nKd 1 1 1\nPr 0.35\nPm 0\nmap_Kd column_albedo.png\nnorm column_normal.png\n");
 
@@ -367,6 +449,19 @@ int main(int argc, char** argv) {
         cube.box({0, 0, 0}, {1, 1, 1}, 2.0f);
         cube.write(dir / "cube.obj", "cube.mtl");
         writeText(dir / "cube.mtl", "newmtl marker\nKd 0 1 0\nPr 1\nPm 0\n");
+
+        // The same four models as glTF, with the materials their MTL files give.
+        courtyard.writeGltf(dir / "courtyard.gltf",
+                            {{"floor", {.roughness = 1.0f, .baseColorImage = "floor_albedo.png",
+                                        .metalRoughImage = "floor_metal_rough.png", .normalImage = "floor_normal.png"}},
+                             {"wall", {.roughness = 0.9f, .baseColorImage = "wall_albedo.png", .normalImage = "wall_normal.png"}},
+                             {"column",
+                              {.roughness = 0.35f, .baseColorImage = "column_albedo.png", .normalImage = "column_normal.png"}}});
+        sphere.writeGltf(dir / "sphere.gltf", {{"sphere", {.color = {0.8f, 0.8f, 0.8f, 1.0f}, .roughness = 0.5f}}});
+        grille.writeGltf(dir / "grille.gltf", {{"iron",
+                                                {.roughness = 0.45f, .metallic = 1.0f,
+                                                 .baseColorImage = "grille_albedo_alpha.png", .mask = true}}});
+        cube.writeGltf(dir / "cube.gltf", {{"marker", {.color = {0.0f, 1.0f, 0.0f, 1.0f}, .roughness = 1.0f}}});
 
         // The scene: the book's lights (white ambient 0.2, a directional light straight down, a
         // green point light marked by a small cube), spheres sweeping roughness along x, the back
@@ -410,6 +505,8 @@ int main(int argc, char** argv) {
                                 .intensity = 6.0f,
                                 .marker = int(scene.models.size()) - 1});  // the cube, added last
         writeText(dir / "scene.json", common::sceneToJson(scene));
+        for (common::ModelInstance& model : scene.models) model.file.replace_extension(".gltf");
+        writeText(dir / "scene-gltf.json", common::sceneToJson(scene));
 
         size_t triangles =
             courtyard.triangles() + 14 * sphere.triangles() + grille.triangles() + cube.triangles();

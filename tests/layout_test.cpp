@@ -26,7 +26,8 @@ const char* gShaderPath = nullptr;
 void run(const common::Options& options) {
     ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}, 37}, {{8, 9, 10}, 0u, 11, {12, 13, 14}, 38}};
     ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u, 39u};
-    ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, 35u, 0}, {{29, 30, 31, 32}, 33, 34, 36u, 0}};
+    ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, 35u, 40, 41, 42, {0, 0}},
+                                   {{29, 30, 31, 32}, 33, 34, 36u, 43, 44, 45, {0, 0}}};
     std::vector<float> expected;
     for (const ShaderLight& l : lights)
         expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
@@ -37,7 +38,8 @@ void run(const common::Options& options) {
                      float(scene.lightCount), float(scene.unboundedLightCount)});
     for (const ShaderMaterial& m : materials)
         expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
-                                         m.metallic, float(m.flags)});
+                                         m.metallic, float(m.flags), m.alphaCutoff, m.normalScale,
+                                         m.occlusionStrength});
     // Matrices: every element a distinct value, read back column by column.
     float next = 100.0f;
     auto fill = [&](float* values, int count) {

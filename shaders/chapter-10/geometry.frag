@@ -7,14 +7,17 @@ layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outAlbedo;
 
 layout(set = 2, binding = 0) uniform sampler2D albedoTexture;
-layout(set = 3, binding = 0) uniform Material { vec4 diffuse; } material;
+layout(set = 3, binding = 0) uniform Material {
+    vec4 diffuse;
+    float alphaCutoff;  // 0 for opaque materials (C++: GeometryMaterial)
+} material;
 
 void main() {
     // MTL semantics: the texture is modulated by Kd (the book adds them instead).
     vec4 albedo = material.diffuse * texture(albedoTexture, inUv);
     // Alpha-tested cut-outs (the grille): a G-buffer holds one surface per pixel, so a
     // fragment is either kept whole or discarded.
-    if (albedo.a < 0.5) discard;
+    if (albedo.a < material.alphaCutoff) discard;
     outAlbedo = vec4(albedo.rgb, 1.0);
 }
 //< geometry-frag

@@ -6,9 +6,10 @@ layout(location = 0) in vec2 inUv;
 
 layout(location = 0) out vec4 outAlbedo;  // colour attachment 0 of vkCmdBeginRendering
 
-// All materials in one storage buffer, selected by the index the draw pushes.
+// All materials in one storage buffer, selected by the index the draw pushes (C++: SceneMaterial).
 struct Material {
     vec4 diffuse;
+    float alphaCutoff;  // cut-outs: alpha below it is discarded (0 for opaque materials)
 };
 layout(set = 1, binding = 0) readonly buffer Materials {
     Material materials[];
@@ -20,8 +21,9 @@ layout(push_constant) uniform Draw {
 } draw;
 
 void main() {
-    vec4 albedo = materials[draw.materialIndex].diffuse * texture(albedoTexture, inUv);
-    if (albedo.a < 0.5) discard;
+    Material material = materials[draw.materialIndex];
+    vec4 albedo = material.diffuse * texture(albedoTexture, inUv);
+    if (albedo.a < material.alphaCutoff) discard;
     outAlbedo = vec4(albedo.rgb, 1.0);
 }
 //< scene-frag

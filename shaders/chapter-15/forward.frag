@@ -26,7 +26,7 @@ void main() {
     vec3 position = inWorldPosition - scene.cameraPosition;
     vec3 N = surfaceNormal(surface.normal);
     vec3 V = viewDirection(position, vec3(0.0), N);
-    vec3 color = scene.ambientColor * scene.ambientIntensity * surface.albedo;
+    vec3 color = scene.ambientColor * scene.ambientIntensity * surface.albedo * surface.ao;
     for (uint i = 0u; i < scene.lightCount; ++i) {  // every light, for every fragment that is shaded
         ShaderLight light = lights[i];
         bool directional = light.directional != 0u;

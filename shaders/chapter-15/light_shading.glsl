@@ -58,7 +58,7 @@ SurfaceSample readGBuffer(vec2 uv) {
     s.surface = albedoCoverage.a > 0.5;
 #ifdef COMPACT_GBUFFER
     s.albedo = albedoCoverage.rgb * albedoCoverage.rgb;  // stored as sqrt(albedo)
-    s.pbr = vec3(0.5, textureLod(pbrAttachment, uv, 0.0).rg);  // AO (fixed 0.5, not stored), roughness, metallic
+    s.pbr = vec3(1.0, textureLod(pbrAttachment, uv, 0.0).rg);  // AO (not stored: none), roughness, metallic
     s.normal = decodeOctahedral(textureLod(normalAttachment, uv, 0.0).xy);
     // The pixel's clip-space point (y up under our flipped viewport) back to camera-relative space.
     vec4 clip = vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, s.depth, 1.0);
@@ -109,7 +109,9 @@ vec4 shadePixel(vec2 uv, ivec2 pixel) {
     } else {
         vec3 N = surfaceNormal(s.normal);
         vec3 V = viewDirection(s.position, vec3(0.0), N);  // the camera is the origin here
-        vec3 color = scene.ambientColor * scene.ambientIntensity * s.albedo;
+        // Ambient light, darkened by the surface's occlusion (glTF applies occlusion maps to
+        // indirect light only: the lights below are not).
+        vec3 color = scene.ambientColor * scene.ambientIntensity * s.albedo * s.pbr.r;
 #ifdef TILED_LIGHTS
         color += shadeTileLights(pixel, s, N, V);  // beyond the book: light_tiles.glsl
 #else

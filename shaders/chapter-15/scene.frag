@@ -3,7 +3,7 @@
 // map applied) and PBR data (AO, roughness, metallic) -- one colour attachment each. Compiled a
 // second time with COMPACT_GBUFFER for --gbuffer compact: no position (the light pass
 // reconstructs it from depth), the normal octahedral-encoded in 2 x 16 bits, albedo in 3 x 10
-// bits (gamma 2), roughness and metallic in 2 x 16 bits (AO is a constant: not stored).
+// bits (gamma 2), roughness and metallic in 2 x 16 bits (no AO: occlusion maps are not drawn).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.glsl"
 #include "octahedral.glsl"
@@ -24,7 +24,6 @@ layout(location = 3) out vec4 outPbr;
 
 void main() {
     SceneSurface surface = sceneSurface();  // scene_surface.glsl: discards cut-out texels
-    float ao = 0.5;  // fixed, as in the book (no AO maps yet); the lighting does not read it
 #ifdef COMPACT_GBUFFER
     outNormal = encodeOctahedral(surface.normal);
     // Gamma 2 puts the 10 bits where the eye needs them (dark values), like sRGB but cheap to undo.
@@ -34,7 +33,9 @@ void main() {
     outPosition = vec4(inWorldPosition, 1.0);
     outNormal = vec4(surface.normal, 1.0);
     outAlbedo = vec4(surface.albedo, 1.0);  // alpha 1 marks "a surface is here" (cleared to 0)
-    outPbr = vec4(ao, surface.roughness, surface.metallic, 1.0);
+    // The book writes a fixed AO of 0.5 here and never reads it; ours comes from the material's
+    // occlusion map (1 without one) and darkens the ambient light only (light_shading.glsl).
+    outPbr = vec4(surface.ao, surface.roughness, surface.metallic, 1.0);
 #endif
 }
 //< scene-frag

@@ -1,5 +1,5 @@
 // chapter-15 scene pass: the surface a fragment shows -- albedo, shading normal (normal map
-// applied), roughness, metallic -- from the draw's material and textures. scene.frag writes it
+// applied), roughness, metallic, ambient occlusion -- from the draw's material and textures. scene.frag writes it
 // into the G-buffer; beyond the book, forward.frag (--shading forward) lights it on the spot.
 
 //> scene-surface
@@ -16,10 +16,11 @@ layout(location = 4) in vec2 inUv;
 layout(std430, set = 1, binding = 0) readonly buffer Materials {
     ShaderMaterial materials[];
 };
-// The draw's material's textures (defaults: white, a flat normal map, white).
+// The draw's material's textures (defaults: white, a flat normal map, white, white).
 layout(set = 2, binding = 0) uniform sampler2D albedoTexture;
 layout(set = 2, binding = 1) uniform sampler2D normalTexture;
 layout(set = 2, binding = 2) uniform sampler2D metalRoughTexture;
+layout(set = 2, binding = 3) uniform sampler2D occlusionTexture;
 
 layout(push_constant) uniform Draw {
     layout(offset = 112) uint materialIndex;
@@ -30,6 +31,7 @@ struct SceneSurface {
     vec3 normal;  // unit length, world space
     float roughness;
     float metallic;
+    float ao;  // ambient occlusion: 1 unless an occlusion map darkens the ambient light
 };
 
 SceneSurface sceneSurface() {
@@ -37,7 +39,7 @@ SceneSurface sceneSurface() {
     ShaderMaterial material = materials[draw.materialIndex];
     vec4 albedo = material.diffuse * texture(albedoTexture, inUv);
     // A G-buffer pixel holds one surface: cut-outs are all or nothing (docs: transparency).
-    if (ALPHA_TEST && albedo.a < 0.5) discard;
+    if (ALPHA_TEST && albedo.a < material.alphaCutoff) discard;
     surface.albedo = albedo.rgb;
 
     // The tangent frame, re-orthonormalised after interpolation: T made perpendicular to N
@@ -47,9 +49,17 @@ SceneSurface sceneSurface() {
                                                                               : cross(N, vec3(0, 1, 0)));
     T = safeNormalize(T, vec3(1.0, 0.0, 0.0));
     vec3 B = cross(N, T) * (dot(cross(N, T), inBitangent) < 0.0 ? -1.0 : 1.0);
+    // A double-sided material's back face is lit as a front face: its whole frame turns over
+    // (glTF 2.0 specification, 3.9.5 "Double Sided").
+    if ((material.flags & MATERIAL_DOUBLE_SIDED) != 0u && !gl_FrontFacing) {
+        N = -N;
+        T = -T;
+        B = -B;
+    }
     surface.normal = N;
     if ((material.flags & MATERIAL_NORMAL_MAP) != 0u) {  // the same for the whole draw: cheap to branch on
         vec3 mapped = texture(normalTexture, inUv).rgb * 2.0 - 1.0;  // tangent space, z out of the surface
+        mapped.xy *= material.normalScale;                           // glTF's scale (1 for OBJ)
         surface.normal = safeNormalize(mat3(T, B, N) * mapped, N);
     }
 
@@ -58,6 +68,9 @@ SceneSurface sceneSurface() {
                           : vec4(1.0);
     surface.roughness = material.roughness * metalRough.g;
     surface.metallic = material.metallic * metalRough.b;
+    surface.ao = (material.flags & MATERIAL_OCCLUSION_MAP) != 0u
+                     ? 1.0 + material.occlusionStrength * (texture(occlusionTexture, inUv).r - 1.0)
+                     : 1.0;
     return surface;
 }
 //< scene-surface

@@ -24,15 +24,20 @@ struct ShaderSceneInfo {
     uint unboundedLightCount;  // beyond the book (tiled culling): the first lights, shaded everywhere
 };
 
-// Materials: a storage buffer, std430 layout. 32 bytes.
+// Materials: a storage buffer, std430 layout. 48 bytes.
 const uint MATERIAL_NORMAL_MAP = 1u;       // flags: the material has a normal map
 const uint MATERIAL_METAL_ROUGH_MAP = 2u;  //        ... a metal-rough map
+const uint MATERIAL_OCCLUSION_MAP = 4u;    //        ... an occlusion map (glTF)
+const uint MATERIAL_DOUBLE_SIDED = 8u;     //        back faces are seen: their normals are flipped
 struct ShaderMaterial {
     vec4 diffuse;
     float roughness;  // factors, multiplied by the metal-rough texture's when there is one
     float metallic;
     uint flags;       // the MATERIAL_ bits: textures not worth sampling are skipped
-    float padding;
+    float alphaCutoff;        // cut-outs: alpha below it is discarded
+    float normalScale;        // glTF normalTexture.scale: scales the map's x and y
+    float occlusionStrength;  // glTF occlusionTexture.strength: ao = 1 + strength * (sample - 1)
+    vec2 padding;
 };
 //< gpu-types
 

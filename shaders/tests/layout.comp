@@ -48,6 +48,9 @@ void main() {
         fields[i++] = materials[m].roughness;
         fields[i++] = materials[m].metallic;
         fields[i++] = float(materials[m].flags);
+        fields[i++] = materials[m].alphaCutoff;
+        fields[i++] = materials[m].normalScale;
+        fields[i++] = materials[m].occlusionStrength;
     }
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) fields[i++] = camera.projection[c][r];

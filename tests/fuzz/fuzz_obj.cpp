@@ -21,6 +21,7 @@
 
 #include "common/check.hpp"
 #include "common/model.hpp"
+#include "model_checks.hpp"
 
 namespace {
 
@@ -65,50 +66,6 @@ std::string mtlName(std::string_view obj) {
     return std::string(fallback);
 }
 
-[[noreturn]] void broken(const char* what) {
-    std::fprintf(stderr, "fuzz_obj: the model breaks a promise of ModelData: %s\n", what);
-    std::abort();
-}
-
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-bool unit(const glm::vec3& v) {
-    return finite(v) && std::abs(glm::length(v) - 1.0f) < 1e-3f;
-}
-
-// What model.hpp promises of every mesh: valid indices and finite, unit tangent frames.
-void checkMesh(const common::MeshData& mesh, size_t materials) {
-    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) broken("indices are not whole triangles");
-    if (mesh.material >= materials) broken("a mesh names a material that does not exist");
-    for (uint32_t index : mesh.indices)
-        if (index >= mesh.vertices.size()) broken("an index is out of range");
-    for (const common::Vertex& v : mesh.vertices) {
-        if (!finite(v.position) || !std::isfinite(v.uv.x) || !std::isfinite(v.uv.y))
-            broken("a non-finite position or uv");
-        if (!unit(v.normal)) broken("a normal is not finite and unit length");
-        if (!unit(v.tangent)) broken("a tangent is not finite and unit length");
-        if (!unit(v.bitangent)) broken("a bitangent is not finite and unit length");
-        if (std::abs(glm::dot(v.normal, v.tangent)) > 1e-3f)
-            broken("a tangent is not orthogonal to its normal");
-    }
-}
-
-void checkModel(const common::ModelData& model) {
-    if (model.meshes.empty() || model.materials.empty()) broken("no meshes or no materials");
-    if (!finite(model.boundsMin) || !finite(model.boundsMax) ||
-        glm::any(glm::greaterThan(model.boundsMin, model.boundsMax)))
-        broken("the bounds are not finite or not ordered");
-    for (const common::MeshData& mesh : model.meshes) {
-        checkMesh(mesh, model.materials.size());
-        // computeTangents on its own, again over the loaded mesh: the same promises hold.
-        common::MeshData again = mesh;
-        common::computeTangents(again);
-        checkMesh(again, model.materials.size());
-    }
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -141,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     try {
         common::ModelData model = common::loadObjModel(objPath);
-        checkModel(model);
+        fuzz::checkModel(model);
         if (gVerbose) std::fprintf(stderr, "fuzz_obj: loaded, %zu meshes\n", model.meshes.size());
     } catch (const common::InputError& error) {
         if (gVerbose) std::fprintf(stderr, "fuzz_obj: InputError: %s\n", error.what());

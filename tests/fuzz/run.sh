@@ -2,7 +2,7 @@
 # Fuzzes the loaders (docs/reliability.md): builds the libFuzzer targets of tests/fuzz/
 # with clang (into build-fuzz/ unless FUZZ_BUILD_DIR says otherwise) and runs each target for
 # SECONDS (default 60), one after the other, over a copy of its committed corpus
-# (tests/fuzz/corpus/<obj|scene>/), which is never written to unless --merge is given.
+# (tests/fuzz/corpus/<obj|scene|gltf>/), which is never written to unless --merge is given.
 #
 #   tests/fuzz/run.sh [SECONDS] [--merge]
 #   tests/fuzz/run.sh --build-only       (the build alone: the fuzz-targets target of the main build)
@@ -10,7 +10,7 @@
 # --merge: afterwards, add the inputs that reach new edges to the committed corpus (libFuzzer
 #          -merge=1 without hit counts, which keeps it small); for a developer's long run, never in CI.
 # Environment: FUZZ_CXX (default clang++-14), FUZZ_BUILD_DIR (default <repo>/build-fuzz),
-# FUZZ_TARGETS (default "obj scene").
+# FUZZ_TARGETS (default "obj scene gltf").
 # Prints runs, speed, coverage and corpus per target; exits non-zero on any crash, timeout,
 # leak, out-of-memory or sanitizer report (the input is kept under <build>/artifacts/).
 set -euo pipefail
@@ -57,16 +57,18 @@ work=$build/run
 rm -rf "$work"
 mkdir -p "$work"
 failed=0
-for target in ${FUZZ_TARGETS:-obj scene}; do
+for target in ${FUZZ_TARGETS:-obj scene gltf}; do
     corpus=$work/corpus-$target
     artifacts=$build/artifacts/$target
     cp -r "$here/corpus/$target" "$corpus"
     mkdir -p "$artifacts"
     before=$(find "$artifacts" -type f | wc -l)
     log=$work/$target.log
+    dict=$here/dict
+    [ -f "$here/dict-$target" ] && dict=$here/dict-$target
     echo "fuzz_$target: ${seconds} s over a copy of tests/fuzz/corpus/$target ($(find "$corpus" -type f | wc -l) inputs)"
     rc=0
-    "$build/fuzz_$target" "$corpus" -dict="$here/dict" -max_total_time="$seconds" -timeout=5 \
+    "$build/fuzz_$target" "$corpus" -dict="$dict" -max_total_time="$seconds" -timeout=5 \
         -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 -artifact_prefix="$artifacts/" \
         >"$log" 2>&1 || rc=$?
     status=$(grep -E '^#[0-9]+' "$log" | tail -n 1 || true)

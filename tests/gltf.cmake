@@ -1,0 +1,116 @@
+# glTF 2.0 (docs/chapter-10.md, "glTF models"): the default scene's glTF form against the OBJ
+# form's golden images in chapters 10, 14 and 15; cases that show one rule of the specification
+# each (against golden images); the same model as .gltf, with data: URIs and as .glb, rendering
+# the same; hostile files, each refused in one line (exit 2) or taken with one warning. The files
+# are written at test time by tools/gltf_cases.cpp; the loader's numbers are checked by
+# unit/gltf_test.cpp.
+add_executable(gltf_cases tools/gltf_cases.cpp)
+target_link_libraries(gltf_cases PRIVATE vkbook::stb glm::glm nlohmann_json::nlohmann_json)
+vkbook_warnings(gltf_cases)
+set_target_properties(gltf_cases PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/bin)
+target_sources(unit_tests PRIVATE unit/gltf_test.cpp)
+target_link_libraries(unit_tests PRIVATE nlohmann_json::nlohmann_json)
+
+set(GLTF ${CMAKE_CURRENT_BINARY_DIR}/gltf)
+add_test(NAME gltf.generate-cases COMMAND gltf_cases ${GLTF})
+set_tests_properties(gltf.generate-cases PROPERTIES FIXTURES_SETUP gltf-cases)
+
+# The default courtyard as glTF (bin/scenes/default/scene-gltf.json) renders as the OBJ one: the
+# same golden images, the same tolerance.
+set(GLTF_SCENE ${CMAKE_BINARY_DIR}/bin/scenes/default/scene-gltf.json)
+foreach(chapter 10 14 15)
+    chapter_test(gltf.chapter-${chapter}-courtyard WORKDIR /
+        COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless --width 640 --height 360
+                --scene ${GLTF_SCENE} --screenshot ${TEST_OUT}/gltf-chapter-${chapter}.png
+        EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
+    set_tests_properties(gltf.chapter-${chapter}-courtyard PROPERTIES FIXTURES_SETUP gltf-ch${chapter})
+    add_test(NAME gltf.chapter-${chapter}-courtyard-image COMMAND image_compare ${TEST_OUT}/gltf-chapter-${chapter}.png
+        --size 640 360 --golden ${GOLDEN}/chapter-${chapter}-final.png --max-diff 5 --max-fraction 0.001)
+    set_tests_properties(gltf.chapter-${chapter}-courtyard-image PROPERTIES FIXTURES_REQUIRED gltf-ch${chapter})
+endforeach()
+
+# The cases: double- and single-sided quads seen from behind, MASK at 0.25 and 0.75, a mirrored
+# node, an occlusion map; under ambient light only (the occlusion map darkens half a quad) and under
+# a sun only (it darkens nothing).
+foreach(light ambient sun)
+    chapter_test(gltf.cases-${light} WORKDIR /
+        COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 640 --height 160
+                --scene ${GLTF}/cases/${light}.json --screenshot ${TEST_OUT}/gltf-cases-${light}.png
+        EXPECT_STDOUT "chapter-15: 6 draws" QUIET_STDERR)
+    set_tests_properties(gltf.cases-${light} PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP gltf-cases-${light})
+    add_test(NAME gltf.cases-${light}-image COMMAND image_compare ${TEST_OUT}/gltf-cases-${light}.png
+        --size 640 160 --golden ${GOLDEN}/gltf-cases-${light}.png --max-diff 5 --max-fraction 0.001)
+    set_tests_properties(gltf.cases-${light}-image PROPERTIES FIXTURES_REQUIRED gltf-cases-${light})
+endforeach()
+
+# The same model as .gltf + .bin, .gltf with data: URIs, and .glb: the same image, to the bit.
+foreach(form model.gltf model_embedded.gltf model.glb)
+    chapter_test(gltf.same-${form} WORKDIR /
+        COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 320 --height 180
+                --model ${GLTF}/same/${form} --screenshot ${TEST_OUT}/gltf-same-${form}.png
+        EXPECT_STDOUT "chapter-15: 2 draws, 4 triangles" QUIET_STDERR)
+    set_tests_properties(gltf.same-${form} PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP gltf-same-${form})
+endforeach()
+foreach(form model_embedded.gltf model.glb)
+    add_test(NAME gltf.same-${form}-image COMMAND image_compare ${TEST_OUT}/gltf-same-${form}.png
+        --size 320 180 --golden ${TEST_OUT}/gltf-same-model.gltf.png --max-diff 0 --max-fraction 0)
+    set_tests_properties(gltf.same-${form}-image PROPERTIES
+        FIXTURES_REQUIRED "gltf-same-${form};gltf-same-model.gltf")
+endforeach()
+
+# Hostile files: one line and exit 2 (or one warning), in every chapter that loads models.
+set(GH ${GLTF}/hostile)
+function(gltf_hostile name exit expected file)
+    foreach(chapter 10 14 15)
+        hostile_test(gltf-${name}-${chapter} ${chapter} ${exit} "${expected}" --model ${GH}/${file})
+        set_tests_properties(hostile.gltf-${name}-${chapter} PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
+    endforeach()
+endfunction()
+gltf_hostile(syntax 2 "${GH}/syntax.gltf: invalid JSON: parse error at line 1, column 41: syntax error" syntax.gltf)
+gltf_hostile(version-1 2 "${GH}/version1.gltf: glTF version '1.0'; only glTF 2.0 is read" version1.gltf)
+gltf_hostile(index-past-vertices 2
+    "${GH}/index_past_vertices.gltf: meshes\\[0\\].primitives\\[0\\] indices \\(accessor 2\\) refers to vertex 7 of 3"
+    index_past_vertices.gltf)
+gltf_hostile(accessor-past-view 2
+    "${GH}/accessor_past_view.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\): 4 elements end at byte 48, past the end of buffer view 0"
+    accessor_past_view.gltf)
+gltf_hostile(view-past-buffer 2 "${GH}/view_past_buffer.gltf: bufferViews\\[0\\] \\(bytes 0..4000\\) runs past the end of buffer 0"
+    view_past_buffer.gltf)
+gltf_hostile(stride-lies 2
+    "${GH}/stride_lies.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\): byteStride 8 is smaller than an element \\(12 bytes\\)"
+    stride_lies.gltf)
+gltf_hostile(stride-odd 2 "${GH}/stride_odd.gltf: bufferViews\\[0\\].byteStride 6 is not a multiple of 4 from 4 to 252"
+    stride_odd.gltf)
+gltf_hostile(cycle 2 "${GH}/cycle.gltf: node 1 is on a cycle of the node hierarchy" cycle.gltf)
+gltf_hostile(two-parents 2 "${GH}/two_parents.gltf: node 0 has more than one parent or is its own child" two_parents.gltf)
+gltf_hostile(deep 2 "${GH}/deep.gltf: the node hierarchy is deeper than 1024" deep.gltf)
+gltf_hostile(missing-bin 2 "${GH}/missing_bin.gltf: File not found : missing_bin.bin" missing_bin.gltf)
+gltf_hostile(nan-position 2 "${GH}/nan_position.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 2\\) holds a non-finite number"
+    nan_position.gltf)
+gltf_hostile(huge-count 2
+    "${GH}/huge_count.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\) has 2000000000 elements \\(1 to 33554432 are read\\)"
+    huge_count.gltf)
+gltf_hostile(huge-buffer 2 "${GH}/huge_buffer.gltf: buffers\\[0\\].byteLength must be a whole number from 0 to 2147483648"
+    huge_buffer.gltf)
+gltf_hostile(absolute-uri 2 "${GH}/absolute_uri.gltf: images\\[0\\].uri '/etc/passwd' is an absolute path \\(a model reads only files in its own directory\\)"
+    absolute_uri.gltf)
+gltf_hostile(scheme-uri 2 "${GH}/scheme_uri.gltf: images\\[0\\].uri 'https://example.com/texture.png' is not a relative path"
+    scheme_uri.gltf)
+gltf_hostile(climbing-uri 2 "${GH}/climbing_uri.gltf: images\\[0\\].uri 'textures/../../secret.png' leaves the model's directory"
+    climbing_uri.gltf)
+gltf_hostile(draco 2 "${GH}/draco.gltf: requires the extension 'KHR_draco_mesh_compression', which this loader does not implement"
+    draco.gltf)
+gltf_hostile(meshopt 2 "${GH}/meshopt.gltf: requires the extension 'EXT_meshopt_compression'" meshopt.gltf)
+gltf_hostile(shell-uri 2 "${GH}/shell_uri.gltf: File not found" shell_uri.gltf)
+gltf_hostile(truncated-glb 2 "${GH}/truncated.glb: the GLB header says [0-9]+ bytes, the file has [0-9]+" truncated.glb)
+gltf_hostile(lying-chunk-glb 2 "${GH}/lying_chunk.glb: the GLB's JSON chunk \\([0-9]+ bytes\\) runs past the end of the file"
+    lying_chunk.glb)
+hostile_test(gltf-unknown-extension 15 2 "${DATA}/syntax_error.json: not a model file we read \\(.obj, .gltf or .glb\\)"
+    --model ${DATA}/syntax_error.json)
+# Warnings: a missing image is a missing texture (the default one); BLEND is drawn as MASK.
+gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found; using the default texture" missing_image.gltf)
+gltf_hostile(blend warn "${GH}/blend.gltf: alphaMode BLEND is drawn as MASK with a cutoff of 0.5 \\(a G-buffer holds one surface per pixel\\)"
+    blend.gltf)
+# Points and lines are skipped with a warning; with nothing else, there is nothing to draw.
+hostile_test(gltf-lines-only 15 2 "${GH}/lines_only.gltf: the model's default scene has no triangles" --model ${GH}/lines_only.gltf)
+set_tests_properties(hostile.gltf-lines-only PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")

@@ -1,0 +1,290 @@
+// gltf_cases DIR: writes the glTF files of tests/gltf.cmake into DIR. Good ones, each made to show
+// one rule of the glTF 2.0 specification in a picture (cases/ and the scenes naming them), the
+// same model as .gltf + .bin, as one .gltf with data: URIs and as .glb (same/), and hostile ones
+// (hostile/), each breaking one rule a loader must not trust. Deterministic: the same bytes on
+// every run.
+#include <stb_image_write.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../../scenes/gltf_writer.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gltf::json;
+using glm::vec2;
+using glm::vec3;
+
+// A quad of 2 x 2 in the xy plane, facing +z, counter-clockwise, texture (0, 0) at its top left.
+struct Quad {
+    std::vector<vec3> positions{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    std::vector<vec3> normals{4, vec3(0, 0, 1)};
+    std::vector<vec2> uvs{{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    std::vector<uint16_t> indices{0, 1, 2, 0, 2, 3};
+};
+
+json quadPrimitive(gltf::File& file, int material, bool withNormals = true) {
+    Quad q;
+    json attributes = {{"POSITION", file.positions(q.positions)}, {"TEXCOORD_0", file.values(q.uvs, gltf::kFloat, "VEC2")}};
+    if (withNormals) attributes["NORMAL"] = file.values(q.normals, gltf::kFloat, "VEC3");
+    json p = {{"attributes", attributes}, {"indices", file.values(q.indices, gltf::kUnsignedShort, "SCALAR")}};
+    if (material >= 0) p["material"] = material;
+    return p;
+}
+
+json color(float r, float g, float b, float a = 1.0f) {
+    return {{"baseColorFactor", {r, g, b, a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}};
+}
+
+void writePng(const fs::path& path, int w, int h, int channels, const std::vector<uint8_t>& pixels) {
+    if (!stbi_write_png(path.string().c_str(), w, h, channels, pixels.data(), w * channels))
+        throw std::runtime_error("cannot write " + path.string());
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// A one-quad model in a material.
+void quadModel(const fs::path& path, json material, bool withNormals = true) {
+    gltf::File file;
+    int m = file.material(std::move(material));
+    file.node({{"mesh", file.mesh(json::array({quadPrimitive(file, m, withNormals)}))}});
+    file.scene({0});
+    file.writeGltf(path);
+}
+
+// ---- Cases drawn in the cases scenes --------------------------------------------------------
+
+void writeCases(const fs::path& dir) {
+    fs::create_directories(dir);
+    // A texture whose alpha rises from 0 at the left to 1 at the right, white; and an occlusion
+    // map, black on its left half, white on its right.
+    std::vector<uint8_t> ramp(64 * 8 * 4), occlusion(64 * 8 * 3);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 64; ++x) {
+            uint8_t* p = &ramp[size_t(y * 64 + x) * 4];
+            p[0] = p[1] = p[2] = 255;
+            p[3] = uint8_t(std::lround((x + 0.5) / 64.0 * 255.0));
+            uint8_t* o = &occlusion[size_t(y * 64 + x) * 3];
+            o[0] = o[1] = o[2] = x < 32 ? 0 : 255;
+        }
+    writePng(dir / "alpha_ramp.png", 64, 8, 4, ramp);
+    writePng(dir / "occlusion_halves.png", 64, 8, 3, occlusion);
+
+    // doubleSided (3.9.5): both models are seen from behind in the scene; only this one shows.
+    quadModel(dir / "double_sided.gltf", {{"pbrMetallicRoughness", color(0.9f, 0.2f, 0.1f)}, {"doubleSided", true}});
+    quadModel(dir / "single_sided.gltf", {{"pbrMetallicRoughness", color(0.9f, 0.2f, 0.1f)}});
+    // MASK (3.9.4) at two cutoffs: the quad is cut where the ramp's alpha is below the cutoff,
+    // so 75% of it remains at 0.25 and 25% at 0.75 (nearest filtering: no blur at the edge).
+    for (float cutoff : {0.25f, 0.75f}) {
+        gltf::File file;
+        json pbr = color(0.2f, 0.5f, 0.9f);
+        int sampler = file.add("samplers", {{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}});
+        pbr["baseColorTexture"] = {{"index", file.texture(file.image("alpha_ramp.png"), sampler)}};
+        int m = file.material({{"pbrMetallicRoughness", pbr}, {"alphaMode", "MASK"}, {"alphaCutoff", cutoff}});
+        file.node({{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}});
+        file.scene({0});
+        file.writeGltf(dir / (cutoff < 0.5f ? "mask_25.gltf" : "mask_75.gltf"));
+    }
+    // A mirrored node (3.7.4): an L whose parent node has scale (-1, 1, 1). Single-sided, so it
+    // shows only if the loader turns its winding around; it must appear as a mirrored L.
+    {
+        gltf::File file;
+        std::vector<vec3> p{{-1, -1, 0}, {1, -1, 0}, {1, -0.5f, 0}, {-0.5f, -0.5f, 0}, {-0.5f, 1, 0}, {-1, 1, 0}};
+        std::vector<uint16_t> i{0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5};
+        std::vector<vec3> n(p.size(), vec3(0, 0, 1));
+        int m = file.material({{"pbrMetallicRoughness", color(0.9f, 0.8f, 0.2f)}});
+        json prim = {{"attributes", {{"POSITION", file.positions(p)}, {"NORMAL", file.values(n, gltf::kFloat, "VEC3")}}},
+                     {"indices", file.values(i, gltf::kUnsignedShort, "SCALAR")},
+                     {"material", m}};
+        int child = file.node({{"mesh", file.mesh(json::array({prim}))}});
+        file.node({{"scale", {-1, 1, 1}}, {"children", {child}}});
+        file.scene({1});
+        file.writeGltf(dir / "mirrored.gltf");
+    }
+    // An occlusion map (3.9.3): darkens the left half under ambient light, nothing under the sun.
+    {
+        gltf::File file;
+        json material = {{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}};
+        material["occlusionTexture"] = {{"index", file.texture(file.image("occlusion_halves.png"))}, {"strength", 1.0}};
+        int m = file.material(material);
+        file.node({{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}});
+        file.scene({0});
+        file.writeGltf(dir / "occlusion.gltf");
+    }
+
+    // The scenes: the five models in a row, seen from the front (+z), the two sided ones turned
+    // around; lit by ambient light only, and by a sun from the camera's side only.
+    auto scene = [&](const char* name, float ambient, bool sun) {
+        json models = json::array();
+        const char* files[] = {"double_sided.gltf", "single_sided.gltf", "mask_25.gltf", "mask_75.gltf",
+                               "mirrored.gltf", "occlusion.gltf"};
+        for (int k = 0; k < 6; ++k) {
+            json model = {{"file", files[k]}, {"position", {-6.25 + 2.5 * k, 0, 0}}};
+            if (k < 2) model["rotation"] = {0, 180, 0};
+            models.push_back(model);
+        }
+        json lights = json::array();
+        if (sun) lights.push_back({{"type", "directional"}, {"direction", {0, 0, -1}}, {"intensity", 1.0}});
+        json root = {{"models", models},
+                     {"camera", {{"position", {0, 0, 4.5}}, {"fov", 60}, {"near", 0.5}, {"far", 50}}},
+                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", ambient}}},
+                     {"lights", lights}};
+        writeText(dir / name, root.dump(2));
+    };
+    scene("ambient.json", 1.0f, false);
+    scene("sun.json", 0.0f, true);
+}
+
+// ---- The same model three ways --------------------------------------------------------------
+
+void writeSame(const fs::path& dir) {
+    fs::create_directories(dir);
+    std::vector<uint8_t> checker(16 * 16 * 3);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c)
+                checker[size_t(y * 16 + x) * 3 + size_t(c)] = ((x / 4 + y / 4) % 2) ? 230 : uint8_t(40 + 60 * c);
+    writePng(dir / "checker.png", 16, 16, 3, checker);
+    gltf::File file;
+    json pbr = color(1, 1, 1);
+    pbr["baseColorTexture"] = {{"index", file.texture(file.image("checker.png"))}};
+    int m = file.material({{"pbrMetallicRoughness", pbr}, {"doubleSided", true}});
+    int quad = file.mesh(json::array({quadPrimitive(file, m)}));
+    int a = file.node({{"mesh", quad}, {"translation", {-1.2, 0, 0}}});
+    int b = file.node({{"mesh", quad}, {"translation", {1.2, 0, 0}}, {"rotation", {0, 0.3826834, 0, 0.9238795}}});
+    file.scene({a, b});
+    file.writeGltf(dir / "model.gltf");
+    file.writeEmbedded(dir / "model_embedded.gltf", dir);
+    file.writeGlb(dir / "model.glb", dir);
+}
+
+// ---- Hostile files --------------------------------------------------------------------------
+
+// A valid triangle model's JSON and buffer, for the hostile cases to break.
+struct Triangle {
+    gltf::File file;
+    Triangle() {
+        std::vector<vec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        std::vector<uint16_t> i{0, 1, 2};
+        json prim = {{"attributes", {{"POSITION", file.positions(p)}}},
+                     {"indices", file.values(i, gltf::kUnsignedShort, "SCALAR")}};
+        file.node({{"mesh", file.mesh(json::array({prim}))}});
+        file.scene({0});
+    }
+};
+
+void writeHostile(const fs::path& dir) {
+    fs::create_directories(dir / "inner");
+    auto make = [&](const std::string& name, const std::function<void(gltf::File&)>& edit) {
+        Triangle t;
+        edit(t.file);
+        t.file.writeGltf(dir / name);
+    };
+    writeText(dir / "syntax.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [}");
+    writeText(dir / "version1.gltf", "{\"asset\": {\"version\": \"1.0\"}}");
+    make("index_past_vertices.gltf", [](gltf::File& f) {
+        std::vector<uint16_t> bad{0, 1, 7};
+        f.root["meshes"][0]["primitives"][0]["indices"] = f.values(bad, gltf::kUnsignedShort, "SCALAR");
+    });
+    make("accessor_past_view.gltf", [](gltf::File& f) { f.root["accessors"][0]["count"] = 4; });
+    make("view_past_buffer.gltf", [](gltf::File& f) { f.root["bufferViews"][0]["byteLength"] = 4000; });
+    make("stride_lies.gltf", [](gltf::File& f) { f.root["bufferViews"][0]["byteStride"] = 8; });
+    make("stride_odd.gltf", [](gltf::File& f) { f.root["bufferViews"][0]["byteStride"] = 6; });
+    make("cycle.gltf", [](gltf::File& f) {
+        f.root["nodes"].push_back({{"children", {2}}});
+        f.root["nodes"].push_back({{"children", {1}}});
+    });
+    make("two_parents.gltf", [](gltf::File& f) {
+        f.root["nodes"].push_back({{"children", {0}}});
+        f.root["nodes"].push_back({{"children", {0}}});
+        f.root["scenes"][0]["nodes"] = {1, 2};
+    });
+    make("deep.gltf", [](gltf::File& f) {
+        for (int k = 1; k <= 2000; ++k) f.root["nodes"].push_back({{"children", {k - 1}}});
+        f.root["scenes"][0]["nodes"] = {2000};
+    });
+    make("missing_bin.gltf", [](gltf::File&) {});
+    fs::remove(dir / "missing_bin.bin");
+    make("nan_position.gltf", [](gltf::File& f) {
+        std::vector<float> p{0, 0, 0, 1, 0, 0, 0, NAN, 0};
+        f.root["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = f.values(p, gltf::kFloat, "VEC3");
+    });
+    make("huge_count.gltf", [](gltf::File& f) {
+        // Zeros and one sparse value: nothing in the buffer bounds the count.
+        std::vector<uint32_t> index{0};
+        std::vector<float> value{1, 2, 3};
+        int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
+        f.root["accessors"][0] = {{"componentType", gltf::kFloat}, {"count", 2000000000}, {"type", "VEC3"},
+                                  {"sparse", {{"count", 1},
+                                              {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                                              {"values", {{"bufferView", values}}}}}};
+    });
+    // Edits of what File::writeGltf wrote (its buffers are set there).
+    auto edit = [&](const std::string& name, const std::function<void(json&)>& change) {
+        make(name, [](gltf::File&) {});
+        std::ifstream in(dir / name);
+        json root = json::parse(in);
+        change(root);
+        writeText(dir / name, root.dump());
+    };
+    edit("huge_buffer.gltf", [](json& root) { root["buffers"][0]["byteLength"] = 1000000000000000000ull; });
+    make("absolute_uri.gltf", [](gltf::File& f) { f.image("/etc/passwd"); });
+    make("scheme_uri.gltf", [](gltf::File& f) { f.image("https://example.com/texture.png"); });
+    make("climbing_uri.gltf", [](gltf::File& f) { f.image("textures/../../secret.png"); });
+    make("draco.gltf", [](gltf::File& f) {
+        f.root["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+        f.root["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    });
+    make("meshopt.gltf", [](gltf::File& f) { f.root["extensionsRequired"] = {"EXT_meshopt_compression"}; });
+    make("lines_only.gltf", [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["mode"] = gltf::kLines; });
+    make("blend.gltf", [](gltf::File& f) {
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"alphaMode", "BLEND"}});
+    });
+    make("missing_image.gltf", [](gltf::File& f) {
+        json pbr = {{"baseColorTexture", {{"index", f.texture(f.image("no_such_image.png"))}}}};
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
+    });
+    // A URI with the shell's syntax: read as a file name, never expanded (tinygltf's own file
+    // callbacks would run it through wordexp).
+    edit("shell_uri.gltf", [](json& root) { root["buffers"][0]["uri"] = "$(touch shell_was_run)`touch shell_was_run`.bin"; });
+    // GLB: one whose header claims more bytes than the file has (cut short), and one whose JSON
+    // chunk claims more than there is.
+    Triangle t;
+    t.file.writeGlb(dir / "good.glb", dir);
+    std::vector<uint8_t> glb = gltf::readBytes(dir / "good.glb");
+    gltf::writeBytes(dir / "truncated.glb", glb.data(), glb.size() - 8);
+    std::vector<uint8_t> lying = glb;
+    lying[12] = 0xff, lying[13] = 0xff, lying[14] = 0x00;
+    gltf::writeBytes(dir / "lying_chunk.glb", lying.data(), lying.size());
+    fs::remove(dir / "good.glb");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: gltf_cases DIR\n");
+        return 2;
+    }
+    try {
+        fs::path dir = argv[1];
+        writeCases(dir / "cases");
+        writeSame(dir / "same");
+        writeHostile(dir / "hostile");
+        return 0;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "gltf_cases: %s\n", error.what());
+        return 1;
+    }
+}
