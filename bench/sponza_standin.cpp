@@ -21,10 +21,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-using gltf::json;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+using gltf::json;
 
 uint32_t hash(uint32_t x, uint32_t y, uint32_t seed) {
     uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu;
@@ -44,9 +44,12 @@ std::vector<uint8_t> image(int size, int channels, uint32_t seed, int kind) {
             bool edge = (x % 128) < 3 || (y % 96) < 3;
             for (int c = 0; c < channels; ++c) {
                 float v;
-                if (kind == 1) v = c == 2 ? 0.95f : 0.5f + (grain - 0.12f) * (c == 0 ? 1.0f : 0.7f);  // normal map
-                else if (kind == 2) v = c == 1 ? 0.4f + 0.5f * blotch : c == 2 ? (blotch > 0.8f ? 1.0f : 0.0f) : 1.0f;
-                else v = (0.25f + 0.5f * blotch + grain) * (0.7f + 0.1f * float(c)) * (edge ? 0.4f : 1.0f);
+                if (kind == 1)
+                    v = c == 2 ? 0.95f : 0.5f + (grain - 0.12f) * (c == 0 ? 1.0f : 0.7f);  // normal map
+                else if (kind == 2)
+                    v = c == 1 ? 0.4f + 0.5f * blotch : c == 2 ? (blotch > 0.8f ? 1.0f : 0.0f) : 1.0f;
+                else
+                    v = (0.25f + 0.5f * blotch + grain) * (0.7f + 0.1f * float(c)) * (edge ? 0.4f : 1.0f);
                 if (c == 3) v = ((x / 32 + y / 32) % 3) ? 1.0f : 0.0f;  // cut-out holes
                 pixels[(size_t(y) * size + size_t(x)) * channels + size_t(c)] =
                     uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
@@ -79,26 +82,35 @@ int main(int argc, char** argv) {
             stbi_write_png((dir / base.back()).string().c_str(), kSize, kSize, 4, b.data(), kSize * 4);
         else
             stbi_write_jpg((dir / base.back()).string().c_str(), kSize, kSize, 3, b.data(), 90);
-        std::vector<uint8_t> n = image(kSize, 3, uint32_t(3 * m + 1), 1), r = image(kSize, 3, uint32_t(3 * m + 2), 2);
-        if (m == kTextured - 1) normal.back().clear();  // one material without a normal map: 68 + 1 images
-        else stbi_write_jpg((dir / normal.back()).string().c_str(), kSize, kSize, 3, n.data(), 90);
+        std::vector<uint8_t> n = image(kSize, 3, uint32_t(3 * m + 1), 1),
+                             r = image(kSize, 3, uint32_t(3 * m + 2), 2);
+        if (m == kTextured - 1)
+            normal.back().clear();  // one material without a normal map: 68 + 1 images
+        else
+            stbi_write_jpg((dir / normal.back()).string().c_str(), kSize, kSize, 3, n.data(), 90);
         stbi_write_jpg((dir / metalRough.back()).string().c_str(), kSize, kSize, 3, r.data(), 90);
     }
     std::vector<uint8_t> tiny = image(4, 3, 999, 0);
     stbi_write_png((dir / "tiny.png").string().c_str(), 4, 4, 3, tiny.data(), 12);
 
     gltf::File file;
-    int sampler = file.add("samplers", {{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}});
-    auto texture = [&](const std::string& name) { return json{{"index", file.texture(file.image(name), sampler)}}; };
+    int sampler =
+        file.add("samplers", {{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}});
+    auto texture = [&](const std::string& name) {
+        return json{{"index", file.texture(file.image(name), sampler)}};
+    };
     std::string mtl;
     for (int m = 0; m < kMaterials; ++m) {
-        json pbr = {{"baseColorFactor", {0.588, 0.588, 0.588, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", 1.0}};
+        json pbr = {{"baseColorFactor", {0.588, 0.588, 0.588, 1.0}},
+                    {"metallicFactor", 1.0},
+                    {"roughnessFactor", 1.0}};
         json material = {{"name", "material_" + std::to_string(m)}};
         mtl += "newmtl material_" + std::to_string(m) + "\nKd 0.588 0.588 0.588\nPr 1\nPm 1\n";
         if (m < kTextured) {
             pbr["baseColorTexture"] = texture(base[size_t(m)]);
             pbr["metallicRoughnessTexture"] = texture(metalRough[size_t(m)]);
-            mtl += "map_Kd " + base[size_t(m)] + "\nmap_Pr " + metalRough[size_t(m)] + "\nmap_Pm " + metalRough[size_t(m)] + "\n";
+            mtl += "map_Kd " + base[size_t(m)] + "\nmap_Pr " + metalRough[size_t(m)] + "\nmap_Pm " +
+                   metalRough[size_t(m)] + "\n";
             if (!normal[size_t(m)].empty()) {
                 material["normalTexture"] = texture(normal[size_t(m)]);
                 mtl += "norm " + normal[size_t(m)] + "\n";
@@ -174,8 +186,8 @@ int main(int argc, char** argv) {
         char line[128];
         for (size_t k = 0; k < positions.size(); ++k) {
             vec3 q = positions[k] * 0.008f;
-            std::snprintf(line, sizeof line, "v %.5f %.5f %.5f\nvn %.4f %.4f %.4f\nvt %.5f %.5f\n", q.x, q.y, q.z,
-                          normals[k].x, normals[k].y, normals[k].z, uvs[k].x, 1.0f - uvs[k].y);
+            std::snprintf(line, sizeof line, "v %.5f %.5f %.5f\nvn %.4f %.4f %.4f\nvt %.5f %.5f\n", q.x, q.y,
+                          q.z, normals[k].x, normals[k].y, normals[k].z, uvs[k].x, 1.0f - uvs[k].y);
             obj << line;
         }
         for (size_t k = 0; k < indices.size(); k += 3) {

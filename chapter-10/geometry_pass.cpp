@@ -165,9 +165,9 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     for (const common::GpuMaterial& material : scene.materials) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
-        common::writeImageDescriptor(device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
-                                     scene.textures[material.albedo.image].view,
-                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        common::writeImageDescriptor(
+            device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
+            scene.textures[material.albedo.image].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
 
     //> materials

@@ -50,7 +50,8 @@ struct GeometryPass {
     common::Buffer projection;
     std::vector<ViewFrame> views;  // per frame in flight
     common::Buffer materials;
-    VkDeviceSize materialStride = 0;  // sizeof(GeometryMaterial) rounded up to minUniformBufferOffsetAlignment
+    VkDeviceSize materialStride =
+        0;  // sizeof(GeometryMaterial) rounded up to minUniformBufferOffsetAlignment
     VkDescriptorSet projectionSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> textureSets;
     VkDescriptorSet materialSet = VK_NULL_HANDLE;

@@ -51,9 +51,9 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     for (const common::GpuMaterial& material : scene.materials)
         materialData.push_back({material.diffuse, material.alphaTested ? material.alphaCutoff : 0.0f, {}});
     common::StagingBatch batch = common::beginStaging(device);
-    pass.materials = common::uploadStaged(device, batch, materialData.data(),
-                                          materialData.size() * sizeof(SceneMaterial),
-                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    pass.materials =
+        common::uploadStaged(device, batch, materialData.data(), materialData.size() * sizeof(SceneMaterial),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     common::endStaging(device, batch);
     pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
@@ -63,9 +63,9 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     for (const common::GpuMaterial& material : scene.materials) {
         pass.textureSets.push_back(
             common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
-        common::writeImageDescriptor(device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
-                                     scene.textures[material.albedo.image].view,
-                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        common::writeImageDescriptor(
+            device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
+            scene.textures[material.albedo.image].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
 }
 

@@ -52,7 +52,8 @@ struct ShaderMaterial {
 static_assert(sizeof(ShaderMaterial) == 48);
 static_assert(offsetof(ShaderMaterial, roughness) == 16 && offsetof(ShaderMaterial, metallic) == 20 &&
               offsetof(ShaderMaterial, flags) == 24 && offsetof(ShaderMaterial, alphaCutoff) == 28 &&
-              offsetof(ShaderMaterial, normalScale) == 32 && offsetof(ShaderMaterial, occlusionStrength) == 36);
+              offsetof(ShaderMaterial, normalScale) == 32 &&
+              offsetof(ShaderMaterial, occlusionStrength) == 36);
 //< gpu-types
 
 // The scene pass's vertex-stage push constants: the model matrix and its inverse-transpose (a

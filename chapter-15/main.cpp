@@ -215,8 +215,8 @@ void run(const common::Options& options) {
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
 
-    common::GpuScene gpuScene =
-        common::loadGpuScene(device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
+    common::GpuScene gpuScene = common::loadGpuScene(
+        device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     models.clear();
     std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
                 gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),

@@ -52,12 +52,13 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
 
     std::vector<ShaderMaterial> shaderMaterials;
     for (const common::GpuMaterial& m : scene.materials)
-        shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic,
-                                   (m.normal.image != common::kFlatNormalTexture ? kMaterialNormalMap : 0u) |
-                                       (m.metalRough.image != common::kWhiteTexture ? kMaterialMetalRoughMap : 0u) |
-                                       (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
-                                       (m.doubleSided ? kMaterialDoubleSided : 0u),
-                                   m.alphaCutoff, m.normalScale, m.occlusionStrength, glm::vec2(0.0f)});
+        shaderMaterials.push_back(
+            {m.diffuse, m.roughness, m.metallic,
+             (m.normal.image != common::kFlatNormalTexture ? kMaterialNormalMap : 0u) |
+                 (m.metalRough.image != common::kWhiteTexture ? kMaterialMetalRoughMap : 0u) |
+                 (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
+                 (m.doubleSided ? kMaterialDoubleSided : 0u),
+             m.alphaCutoff, m.normalScale, m.occlusionStrength, glm::vec2(0.0f)});
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
                                           shaderMaterials.size() * sizeof(ShaderMaterial),
@@ -105,35 +106,37 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
     VkShaderModule fragment = common::loadShaderModule(device, target.fragmentShader);
     for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
-    for (bool doubleSided : {false, true}) {
-        VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-        VkSpecializationInfo specialization{
-            .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
-        VkPipeline& pipeline = doubleSided ? (alphaTest ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
-                                           : (alphaTest ? pipelines.cutout : pipelines.opaque);
-        pipeline = common::createGraphicsPipeline(
-            device, cache,
-            {
-                .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                           common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
-                .vertexInput = &vertexInput.state,
-                // Back faces are never seen on closed meshes (the book culls none): culling them saves
-                // their fragments, and removes depth ties where a back face meets a front face at a
-                // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
-                // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
-                // Double-sided materials show both faces.
-                .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE) : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
-                .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-                .depthTest = true,
-                .depthWrite = true,
-                // Reversed-Z: nearer is larger.
-                .depthCompare =
-                    target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
-                .colorAttachmentCount = uint32_t(target.colorFormats.size()),
-                .layout = pipelines.layout,
-                .pNext = &rendering,
-            });
-    }
+        for (bool doubleSided : {false, true}) {
+            VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+            VkSpecializationInfo specialization{
+                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
+            VkPipeline& pipeline =
+                doubleSided ? (alphaTest ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
+                            : (alphaTest ? pipelines.cutout : pipelines.opaque);
+            pipeline = common::createGraphicsPipeline(
+                device, cache,
+                {
+                    .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                               common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
+                    .vertexInput = &vertexInput.state,
+                    // Back faces are never seen on closed meshes (the book culls none): culling them saves
+                    // their fragments, and removes depth ties where a back face meets a front face at a
+                    // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
+                    // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
+                    // Double-sided materials show both faces.
+                    .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
+                                            : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
+                    .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+                    .depthTest = true,
+                    .depthWrite = true,
+                    // Reversed-Z: nearer is larger.
+                    .depthCompare =
+                        target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                    .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+                    .layout = pipelines.layout,
+                    .pNext = &rendering,
+                });
+        }
     vkDestroyShaderModule(device.handle, fragment, nullptr);
     vkDestroyShaderModule(device.handle, vertex, nullptr);
     return pipelines;
@@ -218,9 +221,10 @@ void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePip
     for (const auto& [key, drawPointer] : order) {
         const common::Draw& draw = *drawPointer;
         const common::GpuMaterial& material = scene.materials[draw.material];
-        VkPipeline pipeline = material.doubleSided
-                                  ? (material.alphaTested ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
-                                  : (material.alphaTested ? pipelines.cutout : pipelines.opaque);
+        VkPipeline pipeline =
+            material.doubleSided
+                ? (material.alphaTested ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
+                : (material.alphaTested ? pipelines.cutout : pipelines.opaque);
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;

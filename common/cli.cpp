@@ -242,7 +242,9 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
         if (options.help) {
             std::printf("%s: %s\n\n", name, info.summary);
             std::printf(kUsage, name,
-                        info.views.empty() ? "" : " [--scene FILE.json | --model FILE | --book-scene PATH] [--view NAME]");
+                        info.views.empty()
+                            ? ""
+                            : " [--scene FILE.json | --model FILE | --book-scene PATH] [--view NAME]");
             if (!info.views.empty()) {
                 std::string names;
                 for (const std::string& view : info.views) names += (names.empty() ? "" : "|") + view;

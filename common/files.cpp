@@ -84,13 +84,18 @@ std::vector<char> readFile(const std::filesystem::path& path) {
     return bytes;
 }
 
-std::string readInputFile(const std::filesystem::path& path) {
+void requireInputFile(const std::filesystem::path& path) {
     std::error_code ec;
     std::filesystem::file_status status = std::filesystem::status(path, ec);
     if (!std::filesystem::exists(status)) throw InputError(utf8(path) + ": no such file");
     if (std::filesystem::is_directory(status)) throw InputError(utf8(path) + ": is a directory, not a file");
     if (!std::filesystem::is_regular_file(status))
         throw InputError(utf8(path) + ": not a regular file (a device, a pipe or a socket)");
+}
+
+std::string readInputFile(const std::filesystem::path& path) {
+    requireInputFile(path);
+    std::error_code ec;
     uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw InputError(utf8(path) + ": cannot read (" + ec.message() + ")");
     if (size > kMaxInputFileBytes)

@@ -39,6 +39,10 @@ std::vector<char> readFile(const std::filesystem::path& path);
 // needs several times its size again.
 inline constexpr uintmax_t kMaxInputFileBytes = uintmax_t{2} << 30;  // 2 GiB
 
+// Throws InputError with one line naming the file unless it exists and is a regular file (not a
+// directory, a device or a pipe).
+void requireInputFile(const std::filesystem::path& path);
+
 // A reader's input file (a model, a material library, a scene), whole. Throws InputError with
 // one line naming the file when it does not exist, is a directory or a device or a pipe (which
 // could be endless: /dev/zero), is larger than kMaxInputFileBytes, or cannot be read.

@@ -52,7 +52,10 @@ std::string percentDecoded(const std::string& uri) {
     std::string out;
     for (size_t i = 0; i < uri.size(); ++i) {
         auto hex = [](char c) {
-            return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+            return c >= '0' && c <= '9'   ? c - '0'
+                   : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                   : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                          : -1;
         };
         if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
             out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
@@ -110,8 +113,8 @@ bool readIndex(const json& object, const char* key, uint64_t max, uint64_t* valu
                const std::string& where) {
     if (!object.is_object() || !object.contains(key)) return false;
     const json& v = object[key];
-    if (!v.is_number_integer() || (v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0) ||
-        v.get<uint64_t>() > max)
+    if (!v.is_number_integer() ||
+        (v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0) || v.get<uint64_t>() > max)
         throw InputError(origin + ": " + where + "." + key + " must be a whole number from 0 to " +
                          std::to_string(max));
     *value = v.get<uint64_t>();
@@ -155,7 +158,8 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
             throw InputError(origin + ": " + where + ".byteLength is missing or 0");
         bufferBytes.push_back(bytes);
         if (buffers[i].contains("uri")) {
-            if (!buffers[i]["uri"].is_string()) throw InputError(origin + ": " + where + ".uri is not a string");
+            if (!buffers[i]["uri"].is_string())
+                throw InputError(origin + ": " + where + ".uri is not a string");
             checkUri(origin, where + ".uri", buffers[i]["uri"].get<std::string>());
         } else if (!glb || i != 0) {
             throw InputError(origin + ": " + where + " has no uri (only a .glb's first buffer may omit it)");
@@ -165,7 +169,8 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
     for (size_t i = 0; i < views.size(); ++i) {
         std::string where = "bufferViews[" + std::to_string(i) + "]";
         uint64_t buffer = 0, offset = 0, length = 0, stride = 0;
-        if (bufferBytes.empty() || !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
+        if (bufferBytes.empty() ||
+            !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
             throw InputError(origin + ": " + where + ".buffer is missing or names no buffer");
         readIndex(views[i], "byteOffset", kMaxInputFileBytes, &offset, origin, where);
         if (!readIndex(views[i], "byteLength", kMaxInputFileBytes, &length, origin, where) || length == 0)
@@ -184,10 +189,12 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
         std::string where = "images[" + std::to_string(i) + "]";
         uint64_t view = 0;
         if (images[i].is_object() && images[i].contains("uri")) {
-            if (!images[i]["uri"].is_string()) throw InputError(origin + ": " + where + ".uri is not a string");
+            if (!images[i]["uri"].is_string())
+                throw InputError(origin + ": " + where + ".uri is not a string");
             checkUri(origin, where + ".uri", images[i]["uri"].get<std::string>());
         } else if (images[i].is_object() && images[i].contains("bufferView") &&
-                   (views.empty() || !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
+                   (views.empty() ||
+                    !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
             throw InputError(origin + ": " + where + ".bufferView names no buffer view");
         }
     }
@@ -201,7 +208,8 @@ struct ModelFiles {
 };
 
 bool insideModel(const std::string& path, const ModelFiles& files) {
-    return path.size() > files.directory.size() + 1 && path.compare(0, files.directory.size(), files.directory) == 0 &&
+    return path.size() > files.directory.size() + 1 &&
+           path.compare(0, files.directory.size(), files.directory) == 0 &&
            path[files.directory.size()] == '/';
 }
 
@@ -276,7 +284,8 @@ public:
         if (std::find(types.begin(), types.end(), accessor.type) == types.end())
             fail(where + " has the wrong type for its use");
         bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-        if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) == componentTypes.end() ||
+        if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) ==
+                componentTypes.end() ||
             (requireNormalized && !isFloat && !accessor.normalized))
             fail(where + " has a component type the specification does not allow for it (" +
                  std::to_string(accessor.componentType) + (accessor.normalized ? ", normalized" : "") + ")");
@@ -284,12 +293,12 @@ public:
         const size_t count = elementCount(accessor, where);
         std::vector<float> out(count * components, 0.0f);
         if (accessor.bufferView >= 0) {
-            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, components,
-                             true, where);
+            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType,
+                             components, true, where);
             for (size_t i = 0; i < count; ++i)
                 for (size_t c = 0; c < components; ++c)
-                    out[i * components + c] =
-                        component(span.data + i * span.stride, c, accessor.componentType, accessor.normalized);
+                    out[i * components + c] = component(span.data + i * span.stride, c,
+                                                        accessor.componentType, accessor.normalized);
         }
         if (accessor.sparse.isSparse) {
             const auto& sparse = accessor.sparse;
@@ -298,7 +307,8 @@ public:
                      std::to_string(count) + " elements");
             int indexType = sparse.indices.componentType;
             if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+                indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
                 fail(where + " has sparse indices of component type " + std::to_string(indexType));
             Span indices = view(sparse.indices.bufferView, size_t(std::max(sparse.indices.byteOffset, 0)),
                                 size_t(sparse.count), indexType, 1, false, where + " sparse indices");
@@ -309,8 +319,8 @@ public:
                 float target = component(indices.data + k * indices.stride, 0, indexType, false);
                 if (!(target < float(count))) fail(where + " has a sparse index past its elements");
                 for (size_t c = 0; c < components; ++c)
-                    out[size_t(target) * components + c] =
-                        component(values.data + k * values.stride, c, accessor.componentType, accessor.normalized);
+                    out[size_t(target) * components + c] = component(
+                        values.data + k * values.stride, c, accessor.componentType, accessor.normalized);
             }
         }
         for (float value : out)
@@ -331,19 +341,22 @@ public:
         const size_t count = elementCount(accessor, what);
         std::vector<uint32_t> out(count);
         if (accessor.bufferView >= 0 && !accessor.sparse.isSparse) {
-            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, 1, false, what);
-            for (size_t i = 0; i < count; ++i) out[i] = integer(span.data + i * span.stride, accessor.componentType);
+            Span span =
+                view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, 1, false, what);
+            for (size_t i = 0; i < count; ++i)
+                out[i] = integer(span.data + i * span.stride, accessor.componentType);
         } else {
             values = floats(index, what, {TINYGLTF_TYPE_SCALAR},
                             {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                              TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
                             false);
-            for (size_t i = 0; i < count; ++i) out[i] = values[i] < 4294967296.0f ? uint32_t(values[i]) : UINT32_MAX;
+            for (size_t i = 0; i < count; ++i)
+                out[i] = values[i] < 4294967296.0f ? uint32_t(values[i]) : UINT32_MAX;
         }
         for (uint32_t i : out)
             if (i >= vertices)
-                fail(what + " (accessor " + std::to_string(index) + ") refers to vertex " + std::to_string(i) +
-                     " of " + std::to_string(vertices));
+                fail(what + " (accessor " + std::to_string(index) + ") refers to vertex " +
+                     std::to_string(i) + " of " + std::to_string(vertices));
         return out;
     }
 
@@ -378,12 +391,16 @@ private:
     static size_t componentBytes(int componentType) {
         switch (componentType) {
             case TINYGLTF_COMPONENT_TYPE_BYTE:
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                return 1;
             case TINYGLTF_COMPONENT_TYPE_SHORT:
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                return 2;
             case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-            default: return 0;
+            case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                return 4;
+            default:
+                return 0;
         }
     }
 
@@ -413,7 +430,8 @@ private:
 
     static uint32_t integer(const uint8_t* element, int componentType) {
         switch (componentType) {
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return element[0];
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                return element[0];
             case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
                 uint16_t v;
                 std::memcpy(&v, element, 2);
@@ -474,7 +492,8 @@ public:
         if (std::find(notes_.begin(), notes_.end(), what) == notes_.end()) notes_.push_back(what);
     }
     void print() const {
-        for (const std::string& what : notes_) std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
+        for (const std::string& what : notes_)
+            std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
     }
 
 private:
@@ -486,9 +505,12 @@ private:
 
 Wrap wrapMode(int mode) {
     switch (mode) {
-        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
-        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
-        default: return Wrap::Repeat;  // 10497, the default
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+            return Wrap::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+            return Wrap::MirroredRepeat;
+        default:
+            return Wrap::Repeat;  // 10497, the default
     }
 }
 
@@ -498,8 +520,12 @@ SamplerDesc samplerDesc(const tinygltf::Sampler& s) {
     SamplerDesc d;
     d.magFilter = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? Filter::Nearest : Filter::Linear;
     switch (s.minFilter) {
-        case TINYGLTF_TEXTURE_FILTER_NEAREST: d = {d.magFilter, Filter::Nearest, false, Filter::Nearest}; break;
-        case TINYGLTF_TEXTURE_FILTER_LINEAR: d = {d.magFilter, Filter::Linear, false, Filter::Nearest}; break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST:
+            d = {d.magFilter, Filter::Nearest, false, Filter::Nearest};
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR:
+            d = {d.magFilter, Filter::Linear, false, Filter::Nearest};
+            break;
         case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
             d = {d.magFilter, Filter::Nearest, true, Filter::Nearest};
             break;
@@ -509,7 +535,8 @@ SamplerDesc samplerDesc(const tinygltf::Sampler& s) {
         case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
             d = {d.magFilter, Filter::Nearest, true, Filter::Linear};
             break;
-        default: break;  // LINEAR_MIPMAP_LINEAR, or undefined
+        default:
+            break;  // LINEAR_MIPMAP_LINEAR, or undefined
     }
     d.wrapU = wrapMode(s.wrapS);
     d.wrapV = wrapMode(s.wrapT);
@@ -548,8 +575,9 @@ public:
             if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
                 reader_.fail(where + ".alphaCutoff must be a finite number of at least 0");
             if (m.alphaMode == "BLEND")
-                skipped_.note("alphaMode BLEND is drawn as MASK with a cutoff of 0.5 (a G-buffer holds one "
-                              "surface per pixel)");
+                skipped_.note(
+                    "alphaMode BLEND is drawn as MASK with a cutoff of 0.5 (a G-buffer holds one "
+                    "surface per pixel)");
         } else if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) {
             out.alphaMode = AlphaMode::Opaque;
         } else {
@@ -560,7 +588,8 @@ public:
         if (m.emissiveTexture.index >= 0 ||
             std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(), [](double v) { return v != 0.0; }))
             skipped_.note("emissive light is not drawn");
-        for (const auto& [name, value] : m.extensions) skipped_.note("material extension " + name + " is skipped");
+        for (const auto& [name, value] : m.extensions)
+            skipped_.note("material extension " + name + " is skipped");
         return out;
     }
 
@@ -592,7 +621,8 @@ private:
         if (texture.source < 0) return {};  // allowed when an extension supplies the image
         const tinygltf::Image& image = reader_.get(model_.images, texture.source, where + ": image");
         TextureRef ref;
-        if (texture.sampler >= 0) ref.sampler = samplerDesc(reader_.get(model_.samplers, texture.sampler, where + ": sampler"));
+        if (texture.sampler >= 0)
+            ref.sampler = samplerDesc(reader_.get(model_.samplers, texture.sampler, where + ": sampler"));
         size_t source = size_t(texture.source);
         if (source < embedded_.size() && embedded_[source]) {
             ref.image = {reader_.path(), embedded_[source], "image " + std::to_string(source)};
@@ -640,8 +670,9 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const GltfReader& reader, con
 }
 
 // One triangle primitive of a node, baked into the model's space.
-MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& world, const GltfReader& reader,
-                       const std::string& where, Skipped& skipped, uint32_t defaultMaterial) {
+MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
+                       const GltfReader& reader, const std::string& where, Skipped& skipped,
+                       uint32_t defaultMaterial) {
     auto attribute = [&](const char* name) {
         auto it = primitive.attributes.find(name);
         return it == primitive.attributes.end() ? -1 : it->second;
@@ -657,7 +688,8 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
         if (accessor >= 0 && reader.count(accessor, where + " " + name) != vertexCount)
             reader.fail(where + " " + name + " has another count than POSITION");
     };
-    int normalAccessor = attribute("NORMAL"), tangentAccessor = attribute("TANGENT"), uvAccessor = attribute("TEXCOORD_0");
+    int normalAccessor = attribute("NORMAL"), tangentAccessor = attribute("TANGENT"),
+        uvAccessor = attribute("TEXCOORD_0");
     sameCount(normalAccessor, "NORMAL");
     sameCount(tangentAccessor, "TANGENT");
     sameCount(uvAccessor, "TEXCOORD_0");
@@ -667,9 +699,9 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
     if (tangentAccessor >= 0 && normalAccessor >= 0)  // 3.7.2.1: without normals, tangents are ignored
         tangents = reader.floats(tangentAccessor, where + " TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat}, false);
     if (uvAccessor >= 0)
-        uvs = reader.floats(uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
-                            {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                            true);
+        uvs = reader.floats(
+            uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
+            {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
     if (primitive.targets.size()) skipped.note("morph targets are not applied (drawn in the base shape)");
     for (const auto& [name, accessor] : primitive.attributes)
         if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn in the bind pose)");
@@ -728,8 +760,10 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
         for (size_t k = 0; k + 2 < triangles.size(); k += 3) {
             Vertex a = vertex(triangles[k]), b = vertex(triangles[k + 1]), c = vertex(triangles[k + 2]);
             if (mirrored) std::swap(b, c);
-            glm::dvec3 n = glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
-            glm::vec3 flat = glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
+            glm::dvec3 n =
+                glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
+            glm::vec3 flat =
+                glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
             for (Vertex* v : {&a, &b, &c}) {
                 v->normal = flat;
                 mesh.indices.push_back(uint32_t(mesh.vertices.size()));
@@ -748,7 +782,8 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
             mesh.indices.push_back(slot);
         }
         if (mirrored)
-            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3) std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
+            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
+                std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
     }
     // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp).
     if (tangents.empty()) computeTangents(mesh);
@@ -771,10 +806,11 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             return v;
         };
         if (bytes.size() < 20) throw InputError(origin + ": a GLB file shorter than its headers");
-        if (u32(4) != 2) throw InputError(origin + ": GLB version " + std::to_string(u32(4)) + "; only 2 is read");
+        if (u32(4) != 2)
+            throw InputError(origin + ": GLB version " + std::to_string(u32(4)) + "; only 2 is read");
         if (u32(8) != bytes.size())
-            throw InputError(origin + ": the GLB header says " + std::to_string(u32(8)) + " bytes, the file has " +
-                             std::to_string(bytes.size()));
+            throw InputError(origin + ": the GLB header says " + std::to_string(u32(8)) +
+                             " bytes, the file has " + std::to_string(bytes.size()));
         if (u32(16) != 0x4E4F534Au) throw InputError(origin + ": the GLB's first chunk is not JSON");
         if (uint64_t(u32(12)) + 20 > bytes.size())
             throw InputError(origin + ": the GLB's JSON chunk (" + std::to_string(u32(12)) +
@@ -784,7 +820,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         if (next < bytes.size()) {
             if (next + 8 > bytes.size() || uint64_t(u32(next)) + next + 8 > bytes.size())
                 throw InputError(origin + ": the GLB's binary chunk runs past the end of the file");
-            if (u32(next + 4) != 0x004E4942u) throw InputError(origin + ": the GLB's second chunk is not BIN");
+            if (u32(next + 4) != 0x004E4942u)
+                throw InputError(origin + ": the GLB's second chunk is not BIN");
         }
     } else {
         jsonText = bytes;
@@ -797,7 +834,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         } catch (const json::exception& error) {
             std::string what = error.what();
             size_t at = what.find("] ");
-            throw InputError(origin + ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+            throw InputError(origin +
+                             ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
         }
         checkGltfJson(root, origin, glb);
     }
@@ -838,7 +876,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     for (int i = 0; i < int(model.materials.size()); ++i) out.materials.push_back(materials.material(i));
     const uint32_t defaultMaterial = uint32_t(out.materials.size());
     // 3.9.6 "Default Material": a primitive without one is opaque white, metallic 1, roughness 1.
-    out.materials.push_back(MaterialData{.name = "default", .roughness = 1.0f, .metallic = 1.0f, .alphaMode = AlphaMode::Opaque});
+    out.materials.push_back(
+        MaterialData{.name = "default", .roughness = 1.0f, .metallic = 1.0f, .alphaMode = AlphaMode::Opaque});
 
     // 3.5.1 "Scenes": the default scene's root nodes (every root node when there is no scene).
     std::vector<int> parents(model.nodes.size(), -1);
@@ -847,7 +886,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             reader.get(model.nodes, child, "nodes[" + std::to_string(i) + "].children: node");
             // 3.5.3 "Node Hierarchy": the nodes form a forest, one parent each.
             if (parents[size_t(child)] >= 0 || size_t(child) == i)
-                reader.fail("node " + std::to_string(child) + " has more than one parent or is its own child");
+                reader.fail("node " + std::to_string(child) +
+                            " has more than one parent or is its own child");
             parents[size_t(child)] = int(i);
         }
     // With one parent each, a node that no root reaches lies on a cycle (or below one).
@@ -863,7 +903,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             for (int child : model.nodes[size_t(node)].children) stack.push_back(child);
         }
         for (size_t i = 0; i < model.nodes.size(); ++i)
-            if (!reached[i]) reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
+            if (!reached[i])
+                reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
     }
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -871,7 +912,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         roots = reader.get(model.scenes, scene, "scene").nodes;
         for (int root : roots) {
             reader.get(model.nodes, root, "scenes[" + std::to_string(scene) + "].nodes: node");
-            if (parents[size_t(root)] >= 0) reader.fail("node " + std::to_string(root) + " is a root and a child");
+            if (parents[size_t(root)] >= 0)
+                reader.fail("node " + std::to_string(root) + " is a root and a child");
         }
     } else {
         for (size_t i = 0; i < model.nodes.size(); ++i)
@@ -880,7 +922,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
 
     uint64_t vertices = 0;
     bool first = true;
-    std::function<void(int, const glm::dmat4&, int)> visit = [&](int index, const glm::dmat4& parent, int depth) {
+    std::function<void(int, const glm::dmat4&, int)> visit = [&](int index, const glm::dmat4& parent,
+                                                                 int depth) {
         if (depth > kMaxNodeDepth)
             reader.fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " (a cycle?)");
         const tinygltf::Node& node = model.nodes[size_t(index)];
@@ -891,12 +934,15 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             const tinygltf::Mesh& mesh = reader.get(model.meshes, node.mesh, where + ".mesh: mesh");
             for (size_t p = 0; p < mesh.primitives.size(); ++p) {
                 const tinygltf::Primitive& primitive = mesh.primitives[p];
-                std::string at = "meshes[" + std::to_string(node.mesh) + "].primitives[" + std::to_string(p) + "]";
-                if (primitive.material >= 0) reader.get(model.materials, primitive.material, at + ".material: material");
+                std::string at =
+                    "meshes[" + std::to_string(node.mesh) + "].primitives[" + std::to_string(p) + "]";
+                if (primitive.material >= 0)
+                    reader.get(model.materials, primitive.material, at + ".material: material");
                 int mode = primitive.mode;
                 if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
                     mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-                    if (mode < 0 || mode > 6) reader.fail(at + ".mode " + std::to_string(mode) + " is not 0 to 6");
+                    if (mode < 0 || mode > 6)
+                        reader.fail(at + ".mode " + std::to_string(mode) + " is not 0 to 6");
                     skipped.note("points and lines are not drawn");
                     continue;
                 }

@@ -28,8 +28,8 @@ Pixels solid(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
 // A texture to make, and from what. Materials that ask for the same one share it.
 struct TextureRequest {
     enum class Kind : uint8_t {
-        Albedo,      // `first` as sRGB colour; alpha from the first channel of `second` (OBJ map_d) when given
-        Linear,      // `first` as it is, linear: normal, metal-rough (glTF) or occlusion maps
+        Albedo,  // `first` as sRGB colour; alpha from the first channel of `second` (OBJ map_d) when given
+        Linear,  // `first` as it is, linear: normal, metal-rough (glTF) or occlusion maps
         MetalRough,  // OBJ: the book's metal-rough texture, G from `first` (map_Pr), B from `second` (map_Pm)
     };
     Kind kind;
@@ -120,7 +120,8 @@ private:
             size_t request;
             {
                 std::unique_lock lock(mutex_);
-                changed_.wait(lock, [&] { return error_ || stopped_ || ready_.size() < kReadyPerWorker * workers; });
+                changed_.wait(
+                    lock, [&] { return error_ || stopped_ || ready_.size() < kReadyPerWorker * workers; });
                 if (error_ || stopped_ || next_ >= requests_.size()) return;
                 request = next_++;
             }
@@ -146,10 +147,13 @@ private:
         switch (request.kind) {
             case TextureRequest::Kind::Albedo:
                 if (!a && !b) break;
-                pixels = a ? std::move(*a) : Pixels{b->width, b->height, std::vector<uint8_t>(b->rgba.size(), 255)};
+                pixels = a ? std::move(*a)
+                           : Pixels{b->width, b->height, std::vector<uint8_t>(b->rgba.size(), 255)};
                 if (b) copyChannel(*b, 0, *pixels, 3);
                 break;
-            case TextureRequest::Kind::Linear: pixels = std::move(a); break;
+            case TextureRequest::Kind::Linear:
+                pixels = std::move(a);
+                break;
             case TextureRequest::Kind::MetalRough:
                 if (!a && !b) break;
                 {
@@ -162,7 +166,8 @@ private:
         }
         PreparedTexture prepared{index, std::nullopt, false};
         if (!pixels) return prepared;
-        for (size_t i = 3; i < pixels->rgba.size() && !prepared.hasAlpha; i += 4) prepared.hasAlpha = pixels->rgba[i] < 255;
+        for (size_t i = 3; i < pixels->rgba.size() && !prepared.hasAlpha; i += 4)
+            prepared.hasAlpha = pixels->rgba[i] < 255;
         bool srgb = request.kind == TextureRequest::Kind::Albedo;
         prepared.chain = makeMipChain(*pixels, srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
                                       srgb ? srgbMips_ : unormMips_);
@@ -174,7 +179,8 @@ private:
         if (source.empty()) return std::nullopt;
         uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
         if (source.embedded)
-            return decodePixels(source.embedded->data(), source.embedded->size(), source.name(), maxDimension);
+            return decodePixels(source.embedded->data(), source.embedded->size(), source.name(),
+                                maxDimension);
         std::error_code ec;
         if (!std::filesystem::exists(source.file, ec)) {
             std::lock_guard lock(mutex_);
@@ -295,7 +301,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 using Kind = TextureRequest::Kind;
                 if (!albedo.empty() || !m.alphaTexture.empty()) {
                     p.albedo = textures.request({Kind::Albedo, albedo.image, m.alphaTexture.image});
-                    material.albedo.sampler = sampler(albedo.empty() ? m.alphaTexture.sampler : albedo.sampler);
+                    material.albedo.sampler =
+                        sampler(albedo.empty() ? m.alphaTexture.sampler : albedo.sampler);
                 }
                 if (wanted.normalMaps && !normal.empty()) {
                     p.normal = textures.request({Kind::Linear, normal.image, {}});
@@ -304,9 +311,10 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 if (wanted.metalRoughMaps && !m.metalRoughTexture.empty()) {
                     p.metalRough = textures.request({Kind::Linear, m.metalRoughTexture.image, {}});
                     material.metalRough.sampler = sampler(m.metalRoughTexture.sampler);
-                } else if (wanted.metalRoughMaps && (!m.roughnessTexture.empty() || !m.metallicTexture.empty())) {
-                    p.metalRough =
-                        textures.request({Kind::MetalRough, m.roughnessTexture.image, m.metallicTexture.image});
+                } else if (wanted.metalRoughMaps &&
+                           (!m.roughnessTexture.empty() || !m.metallicTexture.empty())) {
+                    p.metalRough = textures.request(
+                        {Kind::MetalRough, m.roughnessTexture.image, m.metallicTexture.image});
                 }
                 if (wanted.occlusionMaps && !m.occlusionTexture.empty()) {
                     p.occlusion = textures.request({Kind::Linear, m.occlusionTexture.image, {}});
@@ -336,7 +344,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
     // The textures, then the materials that use them (a missing file leaves the default).
     std::vector<uint32_t> made = textures.build(batch, gpu);
     auto image = [&](uint32_t request, uint32_t fallback) {
-        return request == PendingMaterial::kNone || made[request] == TextureBuilder::kMissing ? fallback : made[request];
+        return request == PendingMaterial::kNone || made[request] == TextureBuilder::kMissing ? fallback
+                                                                                              : made[request];
     };
     for (PendingMaterial& p : pending) {
         GpuMaterial& material = p.material;

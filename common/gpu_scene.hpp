@@ -40,13 +40,13 @@ struct GpuMaterial {
     glm::vec4 diffuse{1.0f};
     float roughness = 1.0f;
     float metallic = 0.0f;
-    TextureBinding albedo{kWhiteTexture};         // sRGB; alpha from map_d when given
-    TextureBinding normal{kFlatNormalTexture};    // tangent-space normal map
-    TextureBinding metalRough{kWhiteTexture};     // G = roughness, B = metallic, as in the book
-    TextureBinding occlusion{kWhiteTexture};      // R = ambient occlusion (glTF)
-    float normalScale = 1.0f;                     // glTF normalTexture.scale
-    float occlusionStrength = 1.0f;               // glTF occlusionTexture.strength
-    float alphaCutoff = 0.5f;                     // alpha below it is discarded when alphaTested
+    TextureBinding albedo{kWhiteTexture};       // sRGB; alpha from map_d when given
+    TextureBinding normal{kFlatNormalTexture};  // tangent-space normal map
+    TextureBinding metalRough{kWhiteTexture};   // G = roughness, B = metallic, as in the book
+    TextureBinding occlusion{kWhiteTexture};    // R = ambient occlusion (glTF)
+    float normalScale = 1.0f;                   // glTF normalTexture.scale
+    float occlusionStrength = 1.0f;             // glTF occlusionTexture.strength
+    float alphaCutoff = 0.5f;                   // alpha below it is discarded when alphaTested
     bool alphaTested = false;  // a cut-out: glTF MASK (or BLEND); OBJ: some texel or the colour has alpha < 1
     bool doubleSided = false;  // drawn without back-face culling, back faces' normals flipped
 };

@@ -4,9 +4,9 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <climits>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -433,6 +433,7 @@ std::string ImageSource::name() const {
 }
 
 ModelData loadModel(const std::filesystem::path& path) {
+    requireInputFile(path);  // "no such file" before "not a model file" for a mistyped name
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });

@@ -35,7 +35,7 @@ enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
 struct SamplerDesc {
     Filter magFilter = Filter::Linear;
     Filter minFilter = Filter::Linear;
-    bool mipmaps = true;               // false: glTF's NEAREST or LINEAR minification, level 0 only
+    bool mipmaps = true;                // false: glTF's NEAREST or LINEAR minification, level 0 only
     Filter mipFilter = Filter::Linear;  // between mip levels
     Wrap wrapU = Wrap::Repeat;
     Wrap wrapV = Wrap::Repeat;
@@ -77,13 +77,13 @@ enum class AlphaMode : uint8_t {
 // specification, 3.9 "Materials"). Paths are resolved against the model's directory.
 struct MaterialData {
     std::string name;
-    glm::vec4 diffuse{1.0f};   // Kd, with d (dissolve) as alpha; glTF baseColorFactor
-    float roughness = 1.0f;    // Pr; glTF roughnessFactor
-    float metallic = 0.0f;     // Pm; glTF metallicFactor
-    TextureRef diffuseTexture;  // map_Kd; glTF baseColorTexture (sRGB)
-    TextureRef alphaTexture;    // map_d (its first channel is the alpha); glTF: in the base colour's alpha
-    TextureRef normalTexture;   // norm, or bump / map_bump; glTF normalTexture
-    float normalScale = 1.0f;   // glTF normalTexture.scale: x and y of the tangent-space normal
+    glm::vec4 diffuse{1.0f};       // Kd, with d (dissolve) as alpha; glTF baseColorFactor
+    float roughness = 1.0f;        // Pr; glTF roughnessFactor
+    float metallic = 0.0f;         // Pm; glTF metallicFactor
+    TextureRef diffuseTexture;     // map_Kd; glTF baseColorTexture (sRGB)
+    TextureRef alphaTexture;       // map_d (its first channel is the alpha); glTF: in the base colour's alpha
+    TextureRef normalTexture;      // norm, or bump / map_bump; glTF normalTexture
+    float normalScale = 1.0f;      // glTF normalTexture.scale: x and y of the tangent-space normal
     TextureRef metalRoughTexture;  // glTF metallicRoughnessTexture: G = roughness, B = metallic
     TextureRef roughnessTexture;   // map_Pr (first channel), when there is no metalRoughTexture
     TextureRef metallicTexture;    // map_Pm (first channel)

@@ -333,13 +333,19 @@ Scene bookScene(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path, ec))
         gltf = path / "booksamples" / "chapter-15" / "resources" / "models" / "sponza" / "Sponza.gltf";
     if (!std::filesystem::is_regular_file(gltf, ec))
-        throw InputError(utf8(gltf) + ": no such file (--book-scene takes the book's clone or its Sponza.gltf)");
+        throw InputError(utf8(gltf) +
+                         ": no such file (--book-scene takes the book's clone or its Sponza.gltf)");
     Scene scene;
     scene.models.push_back(ModelInstance{.file = gltf});
     // Main.java: camera at (0, 5, 0), rotated 20 degrees about x and 90 about y in the book's
     // convention (view = rotateX * rotateY * translate): it looks along +x, tilted down. In ours,
     // yaw 90 looks along +x and pitch -20 down. Projection: fov 60, zNear 1, zFar 50.
-    scene.camera = {.position = {0.0f, 5.0f, 0.0f}, .yaw = 90.0f, .pitch = -20.0f, .fov = 60.0f, .near = 1.0f, .far = 50.0f};
+    scene.camera = {.position = {0.0f, 5.0f, 0.0f},
+                    .yaw = 90.0f,
+                    .pitch = -20.0f,
+                    .fov = 60.0f,
+                    .near = 1.0f,
+                    .far = 50.0f};
     scene.ambientColor = glm::vec3(1.0f);
     scene.ambientIntensity = 0.2f;
     scene.lights.push_back(Light{.type = Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}});

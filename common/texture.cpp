@@ -68,7 +68,8 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
 }
 
 Pixels decodePixels(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
-    if (size == 0 || size > size_t(INT32_MAX)) throw InputError(name + ": not a readable image (empty or too large)");
+    if (size == 0 || size > size_t(INT32_MAX))
+        throw InputError(name + ": not a readable image (empty or too large)");
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw InputError(name + ": not a readable image (" + stbi_failure_reason() + ")");
@@ -149,8 +150,8 @@ Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& 
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toTransfer);
-    vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           mipLevels, chain.regions.data());
+    vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, mipLevels,
+                           chain.regions.data());
     VkImageMemoryBarrier toShader = textureBarrier(
         image.handle, mipLevels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);

@@ -136,7 +136,8 @@ void writeTextures(const fs::path& dir) {
                 float d = edgeDistance(x, y, S / 4, S / 4, false, &cx, &cy);
                 float r = d < 4 ? 1.0f : 0.55f + 0.35f * fractalNoise(float(x), float(y), S, 13);
                 rough.pixels[size_t(y) * S + size_t(x)] = uint8_t(std::lround(r * 255.0f));
-                metalRough.set(x, y, vec3(1.0f, float(rough.pixels[size_t(y) * S + size_t(x)]) / 255.0f, 1.0f));
+                metalRough.set(x, y,
+                               vec3(1.0f, float(rough.pixels[size_t(y) * S + size_t(x)]) / 255.0f, 1.0f));
             }
         writePng(dir / "floor_rough.png", rough);
         writePng(dir / "floor_metal_rough.png", metalRough);
@@ -345,7 +346,9 @@ struct Obj {
 void Obj::writeGltf(const fs::path& path, const std::map<std::string, GltfMaterial>& materials) const {
     gltf::File file;
     std::map<std::string, int> materialIndex;
-    auto texture = [&](const std::string& image) { return nlohmann::json{{"index", file.texture(file.image(image))}}; };
+    auto texture = [&](const std::string& image) {
+        return nlohmann::json{{"index", file.texture(file.image(image))}};
+    };
     nlohmann::json primitives = nlohmann::json::array();
     for (const Group& g : groups) {
         if (!materialIndex.count(g.material)) {
@@ -451,17 +454,28 @@ int main(int argc, char** argv) {
         writeText(dir / "cube.mtl", "newmtl marker\nKd 0 1 0\nPr 1\nPm 0\n");
 
         // The same four models as glTF, with the materials their MTL files give.
-        courtyard.writeGltf(dir / "courtyard.gltf",
-                            {{"floor", {.roughness = 1.0f, .baseColorImage = "floor_albedo.png",
-                                        .metalRoughImage = "floor_metal_rough.png", .normalImage = "floor_normal.png"}},
-                             {"wall", {.roughness = 0.9f, .baseColorImage = "wall_albedo.png", .normalImage = "wall_normal.png"}},
-                             {"column",
-                              {.roughness = 0.35f, .baseColorImage = "column_albedo.png", .normalImage = "column_normal.png"}}});
-        sphere.writeGltf(dir / "sphere.gltf", {{"sphere", {.color = {0.8f, 0.8f, 0.8f, 1.0f}, .roughness = 0.5f}}});
+        courtyard.writeGltf(
+            dir / "courtyard.gltf",
+            {{"floor",
+              {.roughness = 1.0f,
+               .baseColorImage = "floor_albedo.png",
+               .metalRoughImage = "floor_metal_rough.png",
+               .normalImage = "floor_normal.png"}},
+             {"wall",
+              {.roughness = 0.9f, .baseColorImage = "wall_albedo.png", .normalImage = "wall_normal.png"}},
+             {"column",
+              {.roughness = 0.35f,
+               .baseColorImage = "column_albedo.png",
+               .normalImage = "column_normal.png"}}});
+        sphere.writeGltf(dir / "sphere.gltf",
+                         {{"sphere", {.color = {0.8f, 0.8f, 0.8f, 1.0f}, .roughness = 0.5f}}});
         grille.writeGltf(dir / "grille.gltf", {{"iron",
-                                                {.roughness = 0.45f, .metallic = 1.0f,
-                                                 .baseColorImage = "grille_albedo_alpha.png", .mask = true}}});
-        cube.writeGltf(dir / "cube.gltf", {{"marker", {.color = {0.0f, 1.0f, 0.0f, 1.0f}, .roughness = 1.0f}}});
+                                                {.roughness = 0.45f,
+                                                 .metallic = 1.0f,
+                                                 .baseColorImage = "grille_albedo_alpha.png",
+                                                 .mask = true}}});
+        cube.writeGltf(dir / "cube.gltf",
+                       {{"marker", {.color = {0.0f, 1.0f, 0.0f, 1.0f}, .roughness = 1.0f}}});
 
         // The scene: the book's lights (white ambient 0.2, a directional light straight down, a
         // green point light marked by a small cube), spheres sweeping roughness along x, the back

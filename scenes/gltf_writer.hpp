@@ -79,7 +79,8 @@ struct File {
 
     int accessor(int bufferView, int componentType, size_t count, const char* type, bool normalized = false,
                  size_t byteOffset = 0) {
-        json a = {{"bufferView", bufferView}, {"componentType", componentType}, {"count", count}, {"type", type}};
+        json a = {
+            {"bufferView", bufferView}, {"componentType", componentType}, {"count", count}, {"type", type}};
         if (normalized) a["normalized"] = true;
         if (byteOffset) a["byteOffset"] = byteOffset;
         return add("accessors", a);
@@ -87,10 +88,13 @@ struct File {
 
     template <typename T>
     int values(const std::vector<T>& data, int componentType, const char* type, bool normalized = false) {
-        size_t components = std::string(type) == "SCALAR" ? 1 : std::string(type) == "VEC2" ? 2
-                            : std::string(type) == "VEC3" ? 3 : 4;
-        size_t componentBytes = componentType == kFloat || componentType == kUnsignedInt ? 4
-                                : componentType == kShort || componentType == kUnsignedShort ? 2 : 1;
+        size_t components = std::string(type) == "SCALAR" ? 1
+                            : std::string(type) == "VEC2" ? 2
+                            : std::string(type) == "VEC3" ? 3
+                                                          : 4;
+        size_t componentBytes = componentType == kFloat || componentType == kUnsignedInt     ? 4
+                                : componentType == kShort || componentType == kUnsignedShort ? 2
+                                                                                             : 1;
         size_t count = data.size() * sizeof(T) / (components * componentBytes);
         return accessor(view(data.data(), data.size() * sizeof(T)), componentType, count, type, normalized);
     }

@@ -71,7 +71,7 @@ ch10_bad(json-missing-model ".*no_such_model.obj: no such file" --scene ${DATA}/
 ch10_bad(json-no-models ".*no_models.json: models: expected a non-empty array" --scene ${DATA}/no_models.json)
 ch10_bad(json-infinite-number ".*huge_number.json: invalid JSON: number overflow" --scene ${DATA}/huge_number.json)
 ch10_bad(unknown-view "--view must be one of final\\|albedo\\|depth, got 'normal'" --view normal)
-ch10_bad(scene-and-model "--scene and --model exclude each other" --scene a.json --model b.obj)
+ch10_bad(scene-and-model "--scene, --model and --book-scene exclude each other" --scene a.json --model b.obj)
 
 # chapter-06 draws no scene: the scene options are refused there.
 chapter_test(chapter-06.bad-scene-option COMMAND ${CH06} --headless --scene x.json

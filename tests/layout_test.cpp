@@ -37,9 +37,9 @@ void run(const common::Options& options) {
                      scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y, scene.ambientColor.z,
                      float(scene.lightCount), float(scene.unboundedLightCount)});
     for (const ShaderMaterial& m : materials)
-        expected.insert(expected.end(), {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness,
-                                         m.metallic, float(m.flags), m.alphaCutoff, m.normalScale,
-                                         m.occlusionStrength});
+        expected.insert(expected.end(),
+                        {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness, m.metallic,
+                         float(m.flags), m.alphaCutoff, m.normalScale, m.occlusionStrength});
     // Matrices: every element a distinct value, read back column by column.
     float next = 100.0f;
     auto fill = [&](float* values, int count) {

@@ -1,8 +1,9 @@
 # The tests of a Windows build (label "windows"). The cross build on Linux (the windows-cross
 # preset, scripts/windows-cross.sh) runs every .exe under Wine, all on one Xvfb display that a
 # fixture starts first and ends last (Wine's Vulkan needs an X display even to render headless);
-# a native Windows build runs them directly. Every chapter renders its default scene and every --view, compared with the same
-# golden images as the Linux build within the same tolerance; bad command lines exit 2 with one
+# a native Windows build runs them directly. Every chapter renders its default scene and every
+# --view, and chapters 10, 14 and 15 its glTF form, compared with the same golden images as the
+# Linux build within the same tolerance; bad command lines exit 2 with one
 # line; the data is found next to the .exe from any working directory, also from a directory
 # whose name has spaces and non-ASCII characters; chapter-15 runs in a window with a resize, and
 # with tiled light culling on a many-light scene.
@@ -65,6 +66,15 @@ foreach(spec "10;final;albedo;depth" "14;final;albedo;depth" "15;final;position;
         windows_image(${name} ${WIN_OUT}/chapter-${number}-${view}.png --size 640 360
             --golden ${GOLDEN}/chapter-${number}-${view}.png ${GOLDEN_MATCH})
     endforeach()
+endforeach()
+# The default courtyard as glTF (tinygltf, fetched for this build): the OBJ form's golden images.
+foreach(number 10 14 15)
+    windows_test(windows.chapter-${number}-gltf WORKDIR /
+        COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --headless ${SIZE}
+                --scene $<TARGET_FILE_DIR:chapter-${number}>/scenes/default/scene-gltf.json
+                --screenshot ${WIN_OUT}/chapter-${number}-gltf.png EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
+    windows_image(windows.chapter-${number}-gltf ${WIN_OUT}/chapter-${number}-gltf.png --size 640 360
+        --golden ${GOLDEN}/chapter-${number}-final.png ${GOLDEN_MATCH})
 endforeach()
 windows_test(windows.chapter-14-fxaa WORKDIR /
     COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-14> --device llvmpipe --validation --headless ${SIZE} --fxaa

@@ -50,7 +50,8 @@ inline void checkMaterial(const common::MaterialData& m) {
         broken("a base colour outside [0, 1]");
     if (!in01(m.roughness) || !in01(m.metallic)) broken("a roughness or metallic factor outside [0, 1]");
     if (!in01(m.occlusionStrength)) broken("an occlusion strength outside [0, 1]");
-    if (!std::isfinite(m.alphaCutoff) || m.alphaCutoff < 0.0f) broken("a negative or non-finite alpha cutoff");
+    if (!std::isfinite(m.alphaCutoff) || m.alphaCutoff < 0.0f)
+        broken("a negative or non-finite alpha cutoff");
     if (!std::isfinite(m.normalScale)) broken("a non-finite normal scale");
 }
 

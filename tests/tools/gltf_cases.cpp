@@ -18,9 +18,9 @@
 namespace {
 
 namespace fs = std::filesystem;
-using gltf::json;
 using glm::vec2;
 using glm::vec3;
+using gltf::json;
 
 // A quad of 2 x 2 in the xy plane, facing +z, counter-clockwise, texture (0, 0) at its top left.
 struct Quad {
@@ -32,9 +32,11 @@ struct Quad {
 
 json quadPrimitive(gltf::File& file, int material, bool withNormals = true) {
     Quad q;
-    json attributes = {{"POSITION", file.positions(q.positions)}, {"TEXCOORD_0", file.values(q.uvs, gltf::kFloat, "VEC2")}};
+    json attributes = {{"POSITION", file.positions(q.positions)},
+                       {"TEXCOORD_0", file.values(q.uvs, gltf::kFloat, "VEC2")}};
     if (withNormals) attributes["NORMAL"] = file.values(q.normals, gltf::kFloat, "VEC3");
-    json p = {{"attributes", attributes}, {"indices", file.values(q.indices, gltf::kUnsignedShort, "SCALAR")}};
+    json p = {{"attributes", attributes},
+              {"indices", file.values(q.indices, gltf::kUnsignedShort, "SCALAR")}};
     if (material >= 0) p["material"] = material;
     return p;
 }
@@ -82,16 +84,19 @@ void writeCases(const fs::path& dir) {
     writePng(dir / "occlusion_halves.png", 64, 8, 3, occlusion);
 
     // doubleSided (3.9.5): both models are seen from behind in the scene; only this one shows.
-    quadModel(dir / "double_sided.gltf", {{"pbrMetallicRoughness", color(0.9f, 0.2f, 0.1f)}, {"doubleSided", true}});
+    quadModel(dir / "double_sided.gltf",
+              {{"pbrMetallicRoughness", color(0.9f, 0.2f, 0.1f)}, {"doubleSided", true}});
     quadModel(dir / "single_sided.gltf", {{"pbrMetallicRoughness", color(0.9f, 0.2f, 0.1f)}});
     // MASK (3.9.4) at two cutoffs: the quad is cut where the ramp's alpha is below the cutoff,
     // so 75% of it remains at 0.25 and 25% at 0.75 (nearest filtering: no blur at the edge).
     for (float cutoff : {0.25f, 0.75f}) {
         gltf::File file;
         json pbr = color(0.2f, 0.5f, 0.9f);
-        int sampler = file.add("samplers", {{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}});
+        int sampler = file.add(
+            "samplers", {{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}});
         pbr["baseColorTexture"] = {{"index", file.texture(file.image("alpha_ramp.png"), sampler)}};
-        int m = file.material({{"pbrMetallicRoughness", pbr}, {"alphaMode", "MASK"}, {"alphaCutoff", cutoff}});
+        int m =
+            file.material({{"pbrMetallicRoughness", pbr}, {"alphaMode", "MASK"}, {"alphaCutoff", cutoff}});
         file.node({{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}});
         file.scene({0});
         file.writeGltf(dir / (cutoff < 0.5f ? "mask_25.gltf" : "mask_75.gltf"));
@@ -100,11 +105,13 @@ void writeCases(const fs::path& dir) {
     // shows only if the loader turns its winding around; it must appear as a mirrored L.
     {
         gltf::File file;
-        std::vector<vec3> p{{-1, -1, 0}, {1, -1, 0}, {1, -0.5f, 0}, {-0.5f, -0.5f, 0}, {-0.5f, 1, 0}, {-1, 1, 0}};
+        std::vector<vec3> p{{-1, -1, 0},       {1, -1, 0},    {1, -0.5f, 0},
+                            {-0.5f, -0.5f, 0}, {-0.5f, 1, 0}, {-1, 1, 0}};
         std::vector<uint16_t> i{0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5};
         std::vector<vec3> n(p.size(), vec3(0, 0, 1));
         int m = file.material({{"pbrMetallicRoughness", color(0.9f, 0.8f, 0.2f)}});
-        json prim = {{"attributes", {{"POSITION", file.positions(p)}, {"NORMAL", file.values(n, gltf::kFloat, "VEC3")}}},
+        json prim = {{"attributes",
+                      {{"POSITION", file.positions(p)}, {"NORMAL", file.values(n, gltf::kFloat, "VEC3")}}},
                      {"indices", file.values(i, gltf::kUnsignedShort, "SCALAR")},
                      {"material", m}};
         int child = file.node({{"mesh", file.mesh(json::array({prim}))}});
@@ -116,7 +123,8 @@ void writeCases(const fs::path& dir) {
     {
         gltf::File file;
         json material = {{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}};
-        material["occlusionTexture"] = {{"index", file.texture(file.image("occlusion_halves.png"))}, {"strength", 1.0}};
+        material["occlusionTexture"] = {{"index", file.texture(file.image("occlusion_halves.png"))},
+                                        {"strength", 1.0}};
         int m = file.material(material);
         file.node({{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}});
         file.scene({0});
@@ -127,8 +135,8 @@ void writeCases(const fs::path& dir) {
     // around; lit by ambient light only, and by a sun from the camera's side only.
     auto scene = [&](const char* name, float ambient, bool sun) {
         json models = json::array();
-        const char* files[] = {"double_sided.gltf", "single_sided.gltf", "mask_25.gltf", "mask_75.gltf",
-                               "mirrored.gltf", "occlusion.gltf"};
+        const char* files[] = {"double_sided.gltf", "single_sided.gltf", "mask_25.gltf",
+                               "mask_75.gltf",      "mirrored.gltf",     "occlusion.gltf"};
         for (int k = 0; k < 6; ++k) {
             json model = {{"file", files[k]}, {"position", {-6.25 + 2.5 * k, 0, 0}}};
             if (k < 2) model["rotation"] = {0, 180, 0};
@@ -154,7 +162,8 @@ void writeSame(const fs::path& dir) {
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x)
             for (int c = 0; c < 3; ++c)
-                checker[size_t(y * 16 + x) * 3 + size_t(c)] = ((x / 4 + y / 4) % 2) ? 230 : uint8_t(40 + 60 * c);
+                checker[size_t(y * 16 + x) * 3 + size_t(c)] =
+                    ((x / 4 + y / 4) % 2) ? 230 : uint8_t(40 + 60 * c);
     writePng(dir / "checker.png", 16, 16, 3, checker);
     gltf::File file;
     json pbr = color(1, 1, 1);
@@ -162,7 +171,8 @@ void writeSame(const fs::path& dir) {
     int m = file.material({{"pbrMetallicRoughness", pbr}, {"doubleSided", true}});
     int quad = file.mesh(json::array({quadPrimitive(file, m)}));
     int a = file.node({{"mesh", quad}, {"translation", {-1.2, 0, 0}}});
-    int b = file.node({{"mesh", quad}, {"translation", {1.2, 0, 0}}, {"rotation", {0, 0.3826834, 0, 0.9238795}}});
+    int b =
+        file.node({{"mesh", quad}, {"translation", {1.2, 0, 0}}, {"rotation", {0, 0.3826834, 0, 0.9238795}}});
     file.scene({a, b});
     file.writeGltf(dir / "model.gltf");
     file.writeEmbedded(dir / "model_embedded.gltf", dir);
@@ -225,10 +235,14 @@ void writeHostile(const fs::path& dir) {
         std::vector<uint32_t> index{0};
         std::vector<float> value{1, 2, 3};
         int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
-        f.root["accessors"][0] = {{"componentType", gltf::kFloat}, {"count", 2000000000}, {"type", "VEC3"},
-                                  {"sparse", {{"count", 1},
-                                              {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
-                                              {"values", {{"bufferView", values}}}}}};
+        f.root["accessors"][0] = {
+            {"componentType", gltf::kFloat},
+            {"count", 2000000000},
+            {"type", "VEC3"},
+            {"sparse",
+             {{"count", 1},
+              {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+              {"values", {{"bufferView", values}}}}}};
     });
     // Edits of what File::writeGltf wrote (its buffers are set there).
     auto edit = [&](const std::string& name, const std::function<void(json&)>& change) {
@@ -247,7 +261,8 @@ void writeHostile(const fs::path& dir) {
         f.root["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     });
     make("meshopt.gltf", [](gltf::File& f) { f.root["extensionsRequired"] = {"EXT_meshopt_compression"}; });
-    make("lines_only.gltf", [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["mode"] = gltf::kLines; });
+    make("lines_only.gltf",
+         [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["mode"] = gltf::kLines; });
     make("blend.gltf", [](gltf::File& f) {
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"alphaMode", "BLEND"}});
     });
@@ -257,7 +272,8 @@ void writeHostile(const fs::path& dir) {
     });
     // A URI with the shell's syntax: read as a file name, never expanded (tinygltf's own file
     // callbacks would run it through wordexp).
-    edit("shell_uri.gltf", [](json& root) { root["buffers"][0]["uri"] = "$(touch shell_was_run)`touch shell_was_run`.bin"; });
+    edit("shell_uri.gltf",
+         [](json& root) { root["buffers"][0]["uri"] = "$(touch shell_was_run)`touch shell_was_run`.bin"; });
     // GLB: one whose header claims more bytes than the file has (cut short), and one whose JSON
     // chunk claims more than there is.
     Triangle t;

@@ -14,9 +14,9 @@
 namespace {
 
 namespace fs = std::filesystem;
-using gltf::json;
 using glm::vec2;
 using glm::vec3;
+using gltf::json;
 
 fs::path tempDir() {
     fs::path dir = fs::temp_directory_path() / "vkbook-gltf-test";
@@ -125,9 +125,10 @@ TEST(GltfLoader, SparseAccessorReplacesValues) {
     std::vector<uint16_t> indices{1};
     std::vector<float> values{5, 0, 0};
     json& position = file.root["accessors"][0];
-    position["sparse"] = {{"count", 1},
-                          {"indices", {{"bufferView", file.view(indices.data(), 2)}, {"componentType", gltf::kUnsignedShort}}},
-                          {"values", {{"bufferView", file.view(values.data(), 12)}}}};
+    position["sparse"] = {
+        {"count", 1},
+        {"indices", {{"bufferView", file.view(indices.data(), 2)}, {"componentType", gltf::kUnsignedShort}}},
+        {"values", {{"bufferView", file.view(values.data(), 12)}}}};
     position["max"] = {5, 1, 0};
     file.node({{"mesh", mesh}});
     file.scene({0});
@@ -140,10 +141,15 @@ TEST(GltfLoader, SparseAccessorReplacesValues) {
     std::vector<uint32_t> which{1, 2};
     std::vector<float> xyz{3, 0, 0, 0, 3, 0};
     zeros.root["accessors"][0] = {
-        {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {3, 3, 0}},
-        {"sparse", {{"count", 2},
-                    {"indices", {{"bufferView", zeros.view(which.data(), 8)}, {"componentType", gltf::kUnsignedInt}}},
-                    {"values", {{"bufferView", zeros.view(xyz.data(), 24)}}}}}};
+        {"componentType", gltf::kFloat},
+        {"count", 3},
+        {"type", "VEC3"},
+        {"min", {0, 0, 0}},
+        {"max", {3, 3, 0}},
+        {"sparse",
+         {{"count", 2},
+          {"indices", {{"bufferView", zeros.view(which.data(), 8)}, {"componentType", gltf::kUnsignedInt}}},
+          {"values", {{"bufferView", zeros.view(xyz.data(), 24)}}}}}};
     zeros.node({{"mesh", zeroMesh}});
     zeros.scene({0});
     std::vector<vec3> fromZeros = corners(load(zeros, "sparse_zeros.gltf").meshes[0]);
@@ -169,7 +175,8 @@ TEST(GltfLoader, NormalizedIntegerTexCoords) {
         }
         file.node({{"mesh", mesh}});
         file.scene({0});
-        const common::MeshData& mesh0 = load(file, "normalized.gltf").meshes[0];
+        common::ModelData model = load(file, "normalized.gltf");
+        const common::MeshData& mesh0 = model.meshes[0];
         float max = type == gltf::kUnsignedByte ? 255.0f : 65535.0f;
         EXPECT_FLOAT_EQ(mesh0.vertices[0].uv.x, 0.0f);
         EXPECT_FLOAT_EQ(mesh0.vertices[0].uv.y, 1.0f);
@@ -243,10 +250,12 @@ TEST(GltfLoader, TangentsComputedOrTakenWithTheirSign) {
     gltf::File file;
     int mesh = addPrimitive(file, p);
     std::vector<glm::vec4> tangents(3, glm::vec4(1, 0, 0, -1));
-    file.root["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = file.values(tangents, gltf::kFloat, "VEC4");
+    file.root["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
+        file.values(tangents, gltf::kFloat, "VEC4");
     file.node({{"mesh", mesh}});
     file.scene({0});
-    for (const common::Vertex& v : load(file, "tangents.gltf").meshes[0].vertices) {
+    common::ModelData model = load(file, "tangents.gltf");
+    for (const common::Vertex& v : model.meshes[0].vertices) {
         expectNear(v.tangent, {1, 0, 0});
         expectNear(v.bitangent, {0, -1, 0});
     }
@@ -254,7 +263,8 @@ TEST(GltfLoader, TangentsComputedOrTakenWithTheirSign) {
 
 TEST(GltfLoader, MaterialsAndSamplers) {
     gltf::File file;
-    int sampler = file.add("samplers", {{"magFilter", 9728}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33648}});
+    int sampler =
+        file.add("samplers", {{"magFilter", 9728}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33648}});
     int image = file.image("base.png");
     int withSampler = file.texture(image, sampler), plain = file.texture(image);
     json pbr = {{"baseColorFactor", {0.5, 0.25, 1, 0.75}},
@@ -299,7 +309,7 @@ TEST(GltfLoader, MaterialsAndSamplers) {
     EXPECT_FALSE(s.mipmaps);  // LINEAR minification: level 0 only
     EXPECT_EQ(s.wrapU, common::Wrap::ClampToEdge);
     EXPECT_EQ(s.wrapV, common::Wrap::MirroredRepeat);
-    EXPECT_EQ(m.metalRoughTexture.sampler, common::SamplerDesc{});  // no sampler: the default
+    EXPECT_EQ(m.metalRoughTexture.sampler, common::SamplerDesc{});     // no sampler: the default
     EXPECT_EQ(model.materials[1].alphaMode, common::AlphaMode::Mask);  // BLEND, drawn as a mask
     EXPECT_FLOAT_EQ(model.materials[1].alphaCutoff, 0.5f);
     EXPECT_EQ(model.materials[2].alphaMode, common::AlphaMode::Opaque);
@@ -321,7 +331,8 @@ TEST(GltfLoader, ThreeFormsLoadTheSame) {
     file.writeGltf(dir / "three.gltf");
     file.writeEmbedded(dir / "three_embedded.gltf", dir);
     file.writeGlb(dir / "three.glb", dir);
-    common::ModelData a = common::loadModel(dir / "three.gltf"), b = common::loadModel(dir / "three_embedded.gltf"),
+    common::ModelData a = common::loadModel(dir / "three.gltf"),
+                      b = common::loadModel(dir / "three_embedded.gltf"),
                       c = common::loadModel(dir / "three.glb");
     for (const common::ModelData* other : {&b, &c}) {
         ASSERT_EQ(other->meshes.size(), 1u);
