@@ -5,6 +5,7 @@
 #include <stb_image_resize.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -31,6 +32,57 @@ VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLa
         .image = image,
         .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mipLevels, 0, 1},
     };
+}
+
+// One mip level from the one above when both sides are even: each texel the mean of a 2x2 block,
+// colour weighted by alpha (a transparent texel's colour does not bleed into its neighbours), in
+// linear light for sRGB data. The result is what stb_image_resize's box filter gives for these
+// sizes (its sRGB tables round slightly differently), about ten times faster: on a book-sized
+// model the mip chains were most of the start-up (docs/performance.md). Odd sizes go to stb.
+void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool srgb) {
+    struct Tables {
+        float toLinear[256];
+        uint8_t toSrgb[65536];  // linear in [0, 1] at 16 bits: fine enough for sRGB's darkest steps
+        Tables() {
+            for (int i = 0; i < 256; ++i) {
+                float c = float(i) / 255.0f;
+                toLinear[i] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+            }
+            for (int i = 0; i < 65536; ++i) {
+                float l = (float(i) + 0.5f) / 65536.0f;
+                float c = l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
+                toSrgb[i] = uint8_t(std::clamp(c * 255.0f + 0.5f, 0.0f, 255.0f));
+            }
+        }
+    };
+    static const Tables tables;
+    const int outWidth = width / 2, outHeight = height / 2;
+    const size_t row = size_t(width) * 4;
+    for (int y = 0; y < outHeight; ++y) {
+        const uint8_t* top = above + size_t(2 * y) * row;
+        const uint8_t* bottom = top + row;
+        uint8_t* texel = out + size_t(y) * size_t(outWidth) * 4;
+        for (int x = 0; x < outWidth; ++x, top += 8, bottom += 8, texel += 4) {
+            const uint8_t* block[4] = {top, top + 4, bottom, bottom + 4};
+            float alpha = 0.0f, colour[3] = {0.0f, 0.0f, 0.0f}, plain[3] = {0.0f, 0.0f, 0.0f};
+            for (const uint8_t* t : block) {
+                float a = float(t[3]) * (1.0f / 255.0f);
+                alpha += a;
+                for (int c = 0; c < 3; ++c) {
+                    float v = srgb ? tables.toLinear[t[c]] : float(t[c]) * (1.0f / 255.0f);
+                    colour[c] += v * a;
+                    plain[c] += v;
+                }
+            }
+            for (int c = 0; c < 3; ++c) {
+                float v = alpha > 0.0f ? colour[c] / alpha : plain[c] * 0.25f;
+                v = std::clamp(v, 0.0f, 1.0f);
+                texel[c] =
+                    srgb ? tables.toSrgb[std::min(int(v * 65536.0f), 65535)] : uint8_t(v * 255.0f + 0.5f);
+            }
+            texel[3] = uint8_t(alpha * (255.0f / 4.0f) + 0.5f);
+        }
+    }
 }
 
 }  // namespace
@@ -95,18 +147,19 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
     if (mipmapped)
         for (uint32_t size = std::max(pixels.width, pixels.height); size > 1; size /= 2) ++mipLevels;
 
-    // The mip chain is made here on the CPU, each level a 2x2 box filter of the one above
-    // (stb_image_resize; in linear light for an _SRGB format, colour weighted by alpha), and goes
-    // up with level 0 in one copy. The book blits each level into the next on the GPU instead;
-    // on lavapipe the first blits cost ~110 ms of startup (llvmpipe compiles its blit shaders
-    // then), the CPU chain of a 512x512 texture ~3 ms (docs/performance.md).
+    // The mip chain is made here on the CPU, each level a 2x2 box filter of the one above (in
+    // linear light for an _SRGB format, colour weighted by alpha: halveEven, or stb_image_resize
+    // where a side is odd), and goes up with level 0 in one copy. The book blits each level into
+    // the next on the GPU instead; on lavapipe the first blits cost ~110 ms of startup (llvmpipe
+    // compiles its blit shaders then), the CPU chain of a 1024x1024 texture ~3 ms
+    // (docs/performance.md).
     MipChain chain{{pixels.width, pixels.height}, format, {}, {}};
     size_t total = 0;
     for (uint32_t level = 0, w = pixels.width, h = pixels.height; level < mipLevels;
          ++level, w = std::max(w / 2, 1u), h = std::max(h / 2, 1u))
         total += size_t(w) * h * 4;
     chain.bytes.reserve(total);
-    chain.bytes = pixels.rgba;
+    chain.bytes.assign(pixels.rgba.begin(), pixels.rgba.end());
     int width = int(pixels.width), height = int(pixels.height);
     size_t above = 0;  // offset of the level above in `bytes`
     for (uint32_t level = 0; level < mipLevels; ++level) {
@@ -115,10 +168,12 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
             size_t offset = chain.bytes.size();
             chain.bytes.resize(offset + size_t(nextWidth) * size_t(nextHeight) * 4);
             bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
-            if (!stbir_resize_uint8_generic(chain.bytes.data() + above, width, height, 0,
-                                            chain.bytes.data() + offset, nextWidth, nextHeight, 0, 4, 3, 0,
-                                            STBIR_EDGE_WRAP, STBIR_FILTER_BOX,
-                                            srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
+            if (width % 2 == 0 && height % 2 == 0)
+                halveEven(chain.bytes.data() + above, width, height, chain.bytes.data() + offset, srgb);
+            else if (!stbir_resize_uint8_generic(
+                         chain.bytes.data() + above, width, height, 0, chain.bytes.data() + offset, nextWidth,
+                         nextHeight, 0, 4, 3, 0, STBIR_EDGE_WRAP, STBIR_FILTER_BOX,
+                         srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
                 throw std::runtime_error("stb_image_resize failed on a mip level");
             above = offset;
             width = nextWidth;

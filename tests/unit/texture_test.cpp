@@ -1,0 +1,85 @@
+// Mip chains (common/texture.cpp, makeMipChain): each level the 2x2 box filter of the one above,
+// in linear light for sRGB and weighted by alpha, as stb_image_resize computes it.
+#include <gtest/gtest.h>
+#include <stb_image_resize.h>
+
+#include <bit>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+#include "common/texture.hpp"
+
+namespace {
+
+common::Pixels noise(uint32_t width, uint32_t height, bool withAlpha) {
+    std::mt19937 random(7);
+    common::Pixels pixels{width, height, std::vector<uint8_t>(size_t(width) * height * 4)};
+    for (size_t i = 0; i < pixels.rgba.size(); ++i)
+        pixels.rgba[i] = i % 4 == 3 && !withAlpha ? 255 : uint8_t(random() & 0xff);
+    // Fully transparent blocks too: their colour must not turn black.
+    if (withAlpha)
+        for (uint32_t x = 0; x < 4; ++x) pixels.rgba[size_t(x) * 4 + 3] = 0;
+    return pixels;
+}
+
+// The largest difference between level `level` of `chain` and stb_image_resize's box filter of
+// the level above it.
+int differenceFromStb(const common::MipChain& chain, uint32_t level, bool srgb) {
+    const VkBufferImageCopy& above = chain.regions[level - 1];
+    const VkBufferImageCopy& here = chain.regions[level];
+    int w = int(above.imageExtent.width), h = int(above.imageExtent.height);
+    int nw = int(here.imageExtent.width), nh = int(here.imageExtent.height);
+    std::vector<uint8_t> expected(size_t(nw) * size_t(nh) * 4);
+    stbir_resize_uint8_generic(chain.bytes.data() + above.bufferOffset, w, h, 0, expected.data(), nw, nh, 0,
+                               4, 3, 0, STBIR_EDGE_WRAP, STBIR_FILTER_BOX,
+                               srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr);
+    int worst = 0;
+    for (size_t i = 0; i < expected.size(); ++i) {
+        // stb leaves a fully transparent texel's colour black; ours keeps the plain mean.
+        size_t texel = i / 4 * 4;
+        if (i % 4 != 3 && expected[texel + 3] == 0) continue;
+        worst = std::max(worst, std::abs(int(chain.bytes[here.bufferOffset + i]) - int(expected[i])));
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST(MipChain, EveryLevelIsTheBoxFilterOfTheOneAbove) {
+    for (VkFormat format : {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UNORM}) {
+        bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
+        // 256x64 halves evenly down to 4x1; 96x40 meets odd sides (3, 5) on the way.
+        for (auto [w, h] : {std::pair{256u, 64u}, std::pair{96u, 40u}}) {
+            common::MipChain chain = common::makeMipChain(noise(w, h, true), format, true);
+            ASSERT_EQ(chain.regions.size(), size_t(std::bit_width(std::max(w, h))));
+            for (uint32_t level = 1; level < chain.regions.size(); ++level)
+                EXPECT_LE(differenceFromStb(chain, level, srgb), 1)
+                    << (srgb ? "sRGB " : "UNORM ") << w << "x" << h << " level " << level;
+        }
+    }
+}
+
+TEST(MipChain, TransparentTexelsKeepTheirColour) {
+    // A 2x2 block of red texels with alpha 0: the mean is red, not black.
+    common::Pixels pixels{2, 2, std::vector<uint8_t>(16, 0)};
+    for (size_t i = 0; i < 16; i += 4) pixels.rgba[i] = 200;
+    common::MipChain chain = common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true);
+    ASSERT_EQ(chain.regions.size(), 2u);
+    const uint8_t* texel = chain.bytes.data() + chain.regions[1].bufferOffset;
+    EXPECT_EQ(texel[0], 200);
+    EXPECT_EQ(texel[3], 0);
+}
+
+TEST(MipChain, ChainOf1024x1024) {
+    // Not a timed assertion: the time is printed for docs/performance.md.
+    common::Pixels pixels = noise(1024, 1024, false);
+    auto start = std::chrono::steady_clock::now();
+    common::MipChain chain = common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("mip chain of a 1024x1024 sRGB texture: %zu levels in %.1f ms\n", chain.regions.size(), ms);
+    EXPECT_EQ(chain.regions.size(), 11u);
+    EXPECT_EQ(chain.bytes.size(), size_t(4) * 1398101);  // 4 bytes * (1024^2 + 512^2 + ... + 1) texels
+}
