@@ -135,9 +135,9 @@ int main(int argc, char** argv) {
     for (int p = 0; p < kPrimitives; ++p) {
         vec3 corner, u, v;
         int row = p % 10, band = p / 10;
-        if (band < 2) {  // floor: 20 panels
-            corner = {-15.0f + 2.9f * float(row), -1.0f, -9.5f + 9.25f * float(band)};
-            u = {2.9f, 0, 0}, v = {0, 0, 9.25f};
+        if (band < 2) {  // floor: 20 panels, facing up (u x v is the front face's normal)
+            corner = {-15.0f + 2.9f * float(row), -1.0f, -9.5f + 9.25f * float(band + 1)};
+            u = {2.9f, 0, 0}, v = {0, 0, -9.25f};
         } else if (band < 6) {  // long walls: 40 panels
             bool north = band % 2 == 0;
             float y = band < 4 ? -1.0f : 5.25f;
