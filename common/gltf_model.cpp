@@ -558,15 +558,14 @@ public:
         out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
         std::string where = "materials[" + std::to_string(index) + "]";
         out.diffuse = vector4(pbr.baseColorFactor, where + ".baseColorFactor");
-        out.diffuseTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, where);
+        out.diffuseTexture = texture(pbr.baseColorTexture, where);
         out.metallic = factor(pbr.metallicFactor, where + ".metallicFactor");
         out.roughness = factor(pbr.roughnessFactor, where + ".roughnessFactor");
         // One image: G = roughness, B = metallic (3.9.2), as the book's metal-rough texture.
-        out.metalRoughTexture =
-            texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, where);
-        out.normalTexture = texture(m.normalTexture.index, m.normalTexture.texCoord, where);
+        out.metalRoughTexture = texture(pbr.metallicRoughnessTexture, where);
+        out.normalTexture = texture(m.normalTexture, where);
         out.normalScale = finite(m.normalTexture.scale, where + ".normalTexture.scale");
-        out.occlusionTexture = texture(m.occlusionTexture.index, m.occlusionTexture.texCoord, where);
+        out.occlusionTexture = texture(m.occlusionTexture, where);
         out.occlusionStrength = factor(m.occlusionTexture.strength, where + ".occlusionTexture.strength");
         // 3.9.4 "Alpha Coverage". A G-buffer pixel holds one surface: BLEND becomes a mask.
         if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
@@ -611,10 +610,15 @@ private:
         return float(value);
     }
 
-    TextureRef texture(int index, int texCoord, const std::string& where) {
-        if (index < 0) return {};
-        const tinygltf::Texture& texture = reader_.get(model_.textures, index, where + ": texture");
-        if (texCoord != 0) skipped_.note("textures read TEXCOORD_0 only (a material asks for another set)");
+    // A material's texture (3.9.2 "textureInfo"): its image and sampler. Any textureInfo type.
+    template <typename Info>
+    TextureRef texture(const Info& info, const std::string& where) {
+        if (info.index < 0) return {};
+        const tinygltf::Texture& texture = reader_.get(model_.textures, info.index, where + ": texture");
+        if (info.texCoord != 0)
+            skipped_.note("textures read TEXCOORD_0 only (a material asks for another set)");
+        for (const auto& [name, value] : info.extensions)
+            skipped_.note("texture extension " + name + " is skipped");
         if (!texture.extensions.empty())
             for (const auto& [name, value] : texture.extensions)
                 skipped_.note("texture extension " + name + " is skipped");
@@ -866,7 +870,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     GltfReader reader(model, path);
     Skipped skipped(origin);
     for (const std::string& name : model.extensionsUsed)
-        if (name.rfind("KHR_materials_", 0) != 0 && name != "KHR_texture_transform")
+        if (name.rfind("KHR_materials_", 0) != 0 && name != "KHR_texture_transform")  // noted where used
             skipped.note("extension " + name + " is not used");
     if (!model.cameras.empty()) skipped.note("its cameras are not used (the scene's camera is)");
     if (!model.animations.empty()) skipped.note("animations are not played");

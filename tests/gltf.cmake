@@ -111,6 +111,9 @@ hostile_test(gltf-unknown-extension 15 2 "${DATA}/syntax_error.json: not a model
 gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found; using the default texture" missing_image.gltf)
 gltf_hostile(blend warn "${GH}/blend.gltf: alphaMode BLEND is drawn as MASK with a cutoff of 0.5 \\(a G-buffer holds one surface per pixel\\)"
     blend.gltf)
+gltf_hostile(emissive warn "${GH}/emissive.gltf: emissive light is not drawn" emissive.gltf)
+gltf_hostile(texture-transform warn "${GH}/texture_transform.gltf: texture extension KHR_texture_transform is skipped"
+    texture_transform.gltf)
 # Points and lines are skipped with a warning; with nothing else, there is nothing to draw.
 hostile_test(gltf-lines-only 15 2 "${GH}/lines_only.gltf: the model's default scene has no triangles" --model ${GH}/lines_only.gltf)
 set_tests_properties(hostile.gltf-lines-only PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")

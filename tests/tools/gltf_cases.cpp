@@ -266,6 +266,18 @@ void writeHostile(const fs::path& dir) {
     make("blend.gltf", [](gltf::File& f) {
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"alphaMode", "BLEND"}});
     });
+    // What is not drawn: one warning each.
+    make("emissive.gltf", [](gltf::File& f) {
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"emissiveFactor", {1, 0.5, 0}}});
+    });
+    writePng(dir / "white.png", 1, 1, 4, {255, 255, 255, 255});
+    make("texture_transform.gltf", [](gltf::File& f) {
+        f.root["extensionsUsed"] = {"KHR_texture_transform"};
+        json info = {{"index", f.texture(f.image("white.png"))},
+                     {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}};
+        f.root["meshes"][0]["primitives"][0]["material"] =
+            f.material({{"pbrMetallicRoughness", {{"baseColorTexture", info}}}});
+    });
     make("missing_image.gltf", [](gltf::File& f) {
         json pbr = {{"baseColorTexture", {{"index", f.texture(f.image("no_such_image.png"))}}}};
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
