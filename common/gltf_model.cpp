@@ -610,7 +610,7 @@ private:
         return float(value);
     }
 
-    // A material's texture (3.9.2 "textureInfo"): its image and sampler. Any textureInfo type.
+    // A material's texture (5.30 "Texture Info"): its image and sampler. Any textureInfo type.
     template <typename Info>
     TextureRef texture(const Info& info, const std::string& where) {
         if (info.index < 0) return {};
@@ -658,7 +658,7 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const GltfReader& reader, con
     check(node.translation, 3, "translation");
     check(node.rotation, 4, "rotation");
     check(node.scale, 3, "scale");
-    // 3.5.2 "Transformations": `matrix` (column-major), or T * R * S.
+    // 3.5.3 "Transformations": `matrix` (column-major), or T * R * S.
     if (!node.matrix.empty()) return glm::make_mat4(node.matrix.data());
     glm::dmat4 m(1.0);
     if (!node.translation.empty())
@@ -710,7 +710,7 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
     for (const auto& [name, accessor] : primitive.attributes)
         if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn in the bind pose)");
 
-    // The primitive's corners as triangles, counter-clockwise (3.7.2.2 "Topology").
+    // The primitive's corners as triangles, counter-clockwise (3.7.2.1, its topology types).
     std::vector<uint32_t> corners;
     if (primitive.indices >= 0) {
         corners = reader.indices(primitive.indices, vertexCount, where + " indices");
@@ -732,7 +732,7 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
     MeshData mesh;
     mesh.material = primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial;
     // Positions by the node's world matrix, normals by its inverse-transpose; a mirroring
-    // transform (negative determinant) turns the winding around (3.7.4 "Transformations").
+    // transform (negative determinant) turns the winding around (3.7.4 "Instantiation").
     const glm::dmat3 linear(world), normalMatrix = glm::transpose(glm::inverse(linear));
     const bool mirrored = glm::determinant(linear) < 0.0;
     auto vertex = [&](uint32_t i) {
@@ -753,7 +753,7 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
                 v.bitangent = glm::length(b) > 1e-30 ? glm::vec3(glm::normalize(b)) : glm::vec3(0.0f);
             }
         }
-        if (!uvs.empty()) v.uv = {uvs[2 * i], uvs[2 * i + 1]};  // (0, 0) is the image's first texel (3.8.4.4)
+        if (!uvs.empty()) v.uv = {uvs[2 * i], uvs[2 * i + 1]};  // (0, 0) is the image's first texel (3.8 "Texture Data")
         if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z))
             reader.fail(where + ": a transformed position is not finite");
         return v;
@@ -888,7 +888,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     for (size_t i = 0; i < model.nodes.size(); ++i)
         for (int child : model.nodes[i].children) {
             reader.get(model.nodes, child, "nodes[" + std::to_string(i) + "].children: node");
-            // 3.5.3 "Node Hierarchy": the nodes form a forest, one parent each.
+            // 3.5.2 "Nodes and Hierarchy": the nodes form a forest, one parent each.
             if (parents[size_t(child)] >= 0 || size_t(child) == i)
                 reader.fail("node " + std::to_string(child) +
                             " has more than one parent or is its own child");

@@ -1,5 +1,5 @@
 # Fuzzing (docs/reliability.md): tests/fuzz/run.sh builds the libFuzzer targets of
-# tests/fuzz/ (the OBJ/MTL loader with tangents, the scene JSON reader) with clang, in a build tree
+# tests/fuzz/ (the OBJ/MTL loader with tangents, the glTF loader, the scene JSON reader) with clang, in a build tree
 # of their own, and runs each for 20 s over a copy of its committed corpus, which holds the
 # regression inputs. A crash, hang, leak, sanitizer report or any exception but InputError fails.
 # Needs clang++-14 and its libFuzzer runtime (Debian: clang-14, libclang-rt-14-dev); without them

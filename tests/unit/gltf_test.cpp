@@ -82,7 +82,7 @@ void expectFrontFacing(const common::MeshData& mesh) {
 }
 
 TEST(GltfLoader, ComposesMatrixAndTrsNodes) {
-    // 3.5.2: a parent with `matrix` (column-major: translation in elements 12..14) and a child
+    // 3.5.3: a parent with `matrix` (column-major: translation in elements 12..14) and a child
     // with T * R * S; the vertex (1, 0, 0) goes through S, R, T of the child, then the parent.
     gltf::File file;
     int mesh = addPrimitive(file, Primitive{});
@@ -196,7 +196,7 @@ TEST(GltfLoader, NormalizedIntegerTexCoords) {
 }
 
 TEST(GltfLoader, FansBecomeCounterClockwiseTriangles) {
-    // 3.7.2.2: a fan of 5 vertices is 3 triangles about vertex 0, p_i = {v_i+1, v_i+2, v_0}.
+    // 3.7.2.1: a fan of 5 vertices is 3 triangles about vertex 0, p_i = {v_i+1, v_i+2, v_0}.
     Primitive fan;
     fan.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}};
     fan.normals.assign(5, vec3(0, 0, 1));
