@@ -50,6 +50,9 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
 
     pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 
+    //> shader-materials
+    // Each material as the shaders read it: its factors, and flags for the maps it has (a
+    // material without one samples the default texture and skips the work).
     std::vector<ShaderMaterial> shaderMaterials;
     for (const common::GpuMaterial& m : scene.materials)
         shaderMaterials.push_back(
@@ -59,6 +62,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                  (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
                  (m.doubleSided ? kMaterialDoubleSided : 0u),
              m.alphaCutoff, m.normalScale, m.occlusionStrength, glm::vec2(0.0f)});
+    //< shader-materials
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
                                           shaderMaterials.size() * sizeof(ShaderMaterial),

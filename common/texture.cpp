@@ -1,4 +1,5 @@
-// Image decoding (stb_image), mip chains (stb_image_resize), texture upload, samplers.
+// Image decoding (stb_image), mip chains (a box filter; stb_image_resize for odd sizes), texture
+// upload, samplers.
 #include "common/texture.hpp"
 
 #include <stb_image.h>
@@ -37,8 +38,9 @@ VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLa
 // One mip level from the one above when both sides are even: each texel the mean of a 2x2 block,
 // colour weighted by alpha (a transparent texel's colour does not bleed into its neighbours), in
 // linear light for sRGB data. The result is what stb_image_resize's box filter gives for these
-// sizes (its sRGB tables round slightly differently), about ten times faster: on a book-sized
-// model the mip chains were most of the start-up (docs/performance.md). Odd sizes go to stb.
+// sizes (its sRGB tables round slightly differently, by at most 1), about three times faster: on a
+// book-sized model the mip chains were most of the start-up (docs/performance.md). Odd sizes go
+// to stb.
 void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool srgb) {
     struct Tables {
         float toLinear[256];
@@ -151,7 +153,7 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
     // linear light for an _SRGB format, colour weighted by alpha: halveEven, or stb_image_resize
     // where a side is odd), and goes up with level 0 in one copy. The book blits each level into
     // the next on the GPU instead; on lavapipe the first blits cost ~110 ms of startup (llvmpipe
-    // compiles its blit shaders then), the CPU chain of a 1024x1024 texture ~3 ms
+    // compiles its blit shaders then), the CPU chain of a 1024x1024 texture ~7 ms
     // (docs/performance.md).
     MipChain chain{{pixels.width, pixels.height}, format, {}, {}};
     size_t total = 0;
