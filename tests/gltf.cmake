@@ -117,3 +117,32 @@ gltf_hostile(texture-transform warn "${GH}/texture_transform.gltf: texture exten
 # Points and lines are skipped with a warning; with nothing else, there is nothing to draw.
 hostile_test(gltf-lines-only 15 2 "${GH}/lines_only.gltf: the model's default scene has no triangles" --model ${GH}/lines_only.gltf)
 set_tests_properties(hostile.gltf-lines-only PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
+
+# --book-scene on a stand-in for a clone of the book's repository (tools/gltf_cases.cpp, book/):
+# Sponza.gltf where the book keeps it, a room of Sponza's extent under a node scaled 0.008. The
+# image shows the book's camera (looking along +x, down), its sun (the floor lit, the walls not)
+# and the green cube that marks its point light; chapters 10 and 14 open the same scene.
+chapter_test(gltf.book-scene WORKDIR /
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 640 --height 360
+            --book-scene ${GLTF}/book --screenshot ${TEST_OUT}/gltf-book-scene.png
+    EXPECT_STDOUT "chapter-15: 6 draws, 652 triangles.*2 lights" QUIET_STDERR)
+set_tests_properties(gltf.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP gltf-book-scene)
+add_test(NAME gltf.book-scene-image COMMAND image_compare ${TEST_OUT}/gltf-book-scene.png
+    --size 640 360 --golden ${GOLDEN}/gltf-book-scene.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(gltf.book-scene-image PROPERTIES FIXTURES_REQUIRED gltf-book-scene)
+foreach(chapter 10 14)
+    chapter_test(gltf.book-scene-chapter-${chapter} WORKDIR /
+        COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless --width 320 --height 180
+                --book-scene ${GLTF}/book/booksamples/chapter-15/resources/models/sponza/Sponza.gltf
+        EXPECT_STDOUT "652 triangles" QUIET_STDERR)
+    set_tests_properties(gltf.book-scene-chapter-${chapter} PROPERTIES FIXTURES_REQUIRED gltf-cases)
+endforeach()
+# A path that is neither a clone with Sponza.gltf in it nor a file: one line, exit 2.
+hostile_test(book-scene-not-a-clone 15 2
+    "${GLTF}/hostile/booksamples/chapter-15/resources/models/sponza/Sponza.gltf: no such file \\(--book-scene takes the book's clone or its Sponza.gltf\\)"
+    --book-scene ${GLTF}/hostile)
+hostile_test(book-scene-missing 10 2
+    "${GLTF}/no-such-clone: no such file \\(--book-scene takes the book's clone or its Sponza.gltf\\)"
+    --book-scene ${GLTF}/no-such-clone)
+set_tests_properties(hostile.book-scene-not-a-clone hostile.book-scene-missing PROPERTIES
+    FIXTURES_REQUIRED "hostile-inputs;gltf-cases")

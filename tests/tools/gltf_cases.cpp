@@ -1,8 +1,8 @@
 // gltf_cases DIR: writes the glTF files of tests/gltf.cmake into DIR. Good ones, each made to show
 // one rule of the glTF 2.0 specification in a picture (cases/ and the scenes naming them), the
 // same model as .gltf + .bin, as one .gltf with data: URIs and as .glb (same/), and hostile ones
-// (hostile/), each breaking one rule a loader must not trust. Deterministic: the same bytes on
-// every run.
+// (hostile/), each breaking one rule a loader must not trust, and a stand-in for a clone of the
+// book's repository (book/) for --book-scene. Deterministic: the same bytes on every run.
 #include <stb_image_write.h>
 
 #include <cmath>
@@ -298,6 +298,58 @@ void writeHostile(const fs::path& dir) {
     fs::remove(dir / "good.glb");
 }
 
+// ---- A stand-in for the book's clone (--book-scene) -----------------------------------------
+
+// DIR/booksamples/chapter-15/resources/models/sponza/Sponza.gltf, where the book keeps Sponza: a
+// floor and four walls of Sponza's extent (x -15..14, y -1..11.5, z -9.5..9), under one node
+// scaled 0.008 like the real file's, each face its own grey, so that the book's camera (at
+// (0, 5, 0), looking along +x and down) and lights show in one picture.
+void writeBookClone(const fs::path& dir) {
+    fs::path models = dir / "booksamples" / "chapter-15" / "resources" / "models" / "sponza";
+    fs::create_directories(models);
+    gltf::File file;
+    json primitives = json::array();
+    // corner, u, v: the face spans corner + s u + t v; u x v is its front (inward) normal.
+    struct Face {
+        vec3 corner, u, v;
+        float grey;
+    };
+    const Face faces[] = {
+        {{-15, -1, 9}, {29, 0, 0}, {0, 0, -18.5f}, 0.8f},       // floor, up
+        {{14, -1, -9.5f}, {0, 0, 18.5f}, {0, 12.5f, 0}, 0.6f},  // wall at +x, facing -x
+        {{-15, -1, -9.5f}, {29, 0, 0}, {0, 12.5f, 0}, 0.5f},    // wall at -z, facing +z
+        {{14, -1, 9}, {-29, 0, 0}, {0, 12.5f, 0}, 0.4f},        // wall at +z, facing -z
+        {{-15, -1, 9}, {0, 0, -18.5f}, {0, 12.5f, 0}, 0.7f},    // wall at -x, facing +x
+    };
+    for (const Face& f : faces) {
+        vec3 n = glm::normalize(glm::cross(f.u, f.v));
+        // A grid of 8 x 8 quads, so that the point light's falloff is sampled across the face.
+        std::vector<vec3> p, normals;
+        std::vector<uint16_t> i;
+        const int grid = 8;
+        for (int b = 0; b <= grid; ++b)
+            for (int a = 0; a <= grid; ++a) {
+                p.push_back((f.corner + f.u * (float(a) / grid) + f.v * (float(b) / grid)) / 0.008f);
+                normals.push_back(n);
+            }
+        for (int b = 0; b < grid; ++b)
+            for (int a = 0; a < grid; ++a) {
+                uint16_t k = uint16_t(b * (grid + 1) + a);
+                i.insert(i.end(), {k, uint16_t(k + 1), uint16_t(k + grid + 2), k, uint16_t(k + grid + 2),
+                                   uint16_t(k + grid + 1)});
+            }
+        int m = file.material({{"pbrMetallicRoughness", color(f.grey, f.grey, f.grey)}});
+        primitives.push_back(
+            {{"attributes",
+              {{"POSITION", file.positions(p)}, {"NORMAL", file.values(normals, gltf::kFloat, "VEC3")}}},
+             {"indices", file.values(i, gltf::kUnsignedShort, "SCALAR")},
+             {"material", m}});
+    }
+    file.node({{"mesh", file.mesh(primitives)}, {"scale", {0.008, 0.008, 0.008}}});
+    file.scene({0});
+    file.writeGltf(models / "Sponza.gltf");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -310,6 +362,7 @@ int main(int argc, char** argv) {
         writeCases(dir / "cases");
         writeSame(dir / "same");
         writeHostile(dir / "hostile");
+        writeBookClone(dir / "book");
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "gltf_cases: %s\n", error.what());
