@@ -753,7 +753,8 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
                 v.bitangent = glm::length(b) > 1e-30 ? glm::vec3(glm::normalize(b)) : glm::vec3(0.0f);
             }
         }
-        if (!uvs.empty()) v.uv = {uvs[2 * i], uvs[2 * i + 1]};  // (0, 0) is the image's first texel (3.8 "Texture Data")
+        if (!uvs.empty())
+            v.uv = {uvs[2 * i], uvs[2 * i + 1]};  // (0, 0) is the image's first texel (3.8 "Texture Data")
         if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z))
             reader.fail(where + ": a transformed position is not finite");
         return v;
