@@ -47,7 +47,7 @@ std::filesystem::path pathFromUtf8(const std::string& text) {
     return std::filesystem::path(std::u8string(text.begin(), text.end()));
 }
 
-// %XX escapes decoded (3.2 "URIs": relative references are URI-encoded).
+// %XX escapes decoded (2.8 "URIs": relative references are URI-encoded).
 std::string percentDecoded(const std::string& uri) {
     std::string out;
     for (size_t i = 0; i < uri.size(); ++i) {
@@ -123,8 +123,9 @@ bool readIndex(const json& object, const char* key, uint64_t max, uint64_t* valu
 
 // What tinygltf takes on trust, checked on the JSON before it reads anything: the version, the
 // extensions a model requires, every URI, and every buffer view against its buffer (tinygltf
-// reads images out of buffer views unchecked).
-void checkGltfJson(const json& root, const std::string& origin, bool glb) {
+// reads images out of buffer views unchecked). Returns the images' URIs that name files.
+std::vector<std::string> checkGltfJson(const json& root, const std::string& origin, bool glb) {
+    std::vector<std::string> imageFiles;
     if (!root.is_object()) throw InputError(origin + ": not a glTF file (the JSON is not an object)");
     if (!root.contains("asset") || !root["asset"].is_object() || !root["asset"].contains("version") ||
         !root["asset"]["version"].is_string())
@@ -132,9 +133,9 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
     std::string version = root["asset"]["version"].get<std::string>();
     if (version.rfind("2.", 0) != 0)
         throw InputError(origin + ": glTF version " + shown(version) + "; only glTF 2.0 is read");
-    // 3.12 "Extensions": a client must refuse a model that requires an extension it lacks. We
-    // implement none of those a model can require (Draco, meshopt, quantization, texture
-    // transforms, Basis Universal textures, ...).
+    // 3.2 "Asset" and 3.12 "Specifying Extensions": a model that requires an extension a client
+    // lacks should not be loaded. We implement none of those a model can require (Draco, meshopt,
+    // quantization, texture transforms, Basis Universal textures, ...).
     if (root.contains("extensionsRequired")) {
         const json& required = root["extensionsRequired"];
         if (!required.is_array()) throw InputError(origin + ": extensionsRequired is not an array");
@@ -179,7 +180,7 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
             throw InputError(origin + ": " + where + " (bytes " + std::to_string(offset) + ".." +
                              std::to_string(offset + length) + ") runs past the end of buffer " +
                              std::to_string(buffer) + " (" + std::to_string(bufferBytes[buffer]) + " bytes)");
-        // 3.6.2.4: a stride of 4 to 252, a multiple of 4.
+        // 5.11 "Buffer View": a stride of 4 to 252; 3.6.2.4: a multiple of 4.
         if (readIndex(views[i], "byteStride", 252, &stride, origin, where) && (stride < 4 || stride % 4 != 0))
             throw InputError(origin + ": " + where + ".byteStride " + std::to_string(stride) +
                              " is not a multiple of 4 from 4 to 252");
@@ -191,20 +192,27 @@ void checkGltfJson(const json& root, const std::string& origin, bool glb) {
         if (images[i].is_object() && images[i].contains("uri")) {
             if (!images[i]["uri"].is_string())
                 throw InputError(origin + ": " + where + ".uri is not a string");
-            checkUri(origin, where + ".uri", images[i]["uri"].get<std::string>());
+            const std::string uri = images[i]["uri"].get<std::string>();
+            checkUri(origin, where + ".uri", uri);
+            if (!uri.starts_with("data:")) imageFiles.push_back(uri);
         } else if (images[i].is_object() && images[i].contains("bufferView") &&
                    (views.empty() ||
                     !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
             throw InputError(origin + ": " + where + ".bufferView names no buffer view");
         }
     }
+    return imageFiles;
 }
 
 // The file system as tinygltf sees it: files inside the model's directory only (tinygltf also
 // looks in the working directory), regular files only (a pipe would block), no path expansion
-// (tinygltf's own runs the shell's wordexp on the URI), nothing written.
+// (tinygltf's own runs the shell's wordexp on the URI), nothing written. Image files are not read
+// here: tinygltf would read each one whole only for us to drop the bytes (the texture upload reads
+// and decodes them, on every core), so they are refused, which tinygltf takes as a warning and
+// keeps the image's URI.
 struct ModelFiles {
-    std::string directory;  // absolute, '/'-separated, UTF-8
+    std::string directory;             // absolute, '/'-separated, UTF-8
+    std::set<std::string> imageFiles;  // the paths tinygltf asks for the images' URIs
 };
 
 bool insideModel(const std::string& path, const ModelFiles& files) {
@@ -224,8 +232,13 @@ std::string expandFilePath(const std::string& path, void*) {
 }
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    if (!insideModel(path, *static_cast<const ModelFiles*>(user))) {
+    const ModelFiles& files = *static_cast<const ModelFiles*>(user);
+    if (!insideModel(path, files)) {
         *err = "outside the model's directory";
+        return false;
+    }
+    if (files.imageFiles.count(path)) {
+        *err = "an image file, read by the texture upload";
         return false;
     }
     try {
@@ -244,8 +257,8 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
 }
 
 // tinygltf hands over each image's encoded bytes. Those inside the model (a data: URI, a buffer
-// view) are kept, undecoded; an image file is left where it is (the texture upload decodes it,
-// on every core: common/gpu_scene.cpp).
+// view) are kept, undecoded; an image file is not read here (ModelFiles): the texture upload
+// reads and decodes it, on every core (common/gpu_scene.cpp).
 using EmbeddedImages = std::vector<std::shared_ptr<const std::vector<uint8_t>>>;
 
 bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
@@ -275,7 +288,7 @@ public:
     [[noreturn]] void fail(const std::string& what) const { throw InputError(origin_ + ": " + what); }
 
     // Element i of an accessor as `components` floats: float components as they are, normalized
-    // integers mapped to [0, 1] or [-1, 1] (3.11 "Implementation Note"), plain integers (indices)
+    // integers mapped to [0, 1] or [-1, 1] (the table of 3.11 "Animations"), plain integers (indices)
     // converted. Sparse accessors get their substituted values (3.6.2.3).
     std::vector<float> floats(int index, const std::string& what, std::initializer_list<int> types,
                               std::initializer_list<int> componentTypes, bool requireNormalized) const {
@@ -491,6 +504,10 @@ public:
     void note(const std::string& what) {
         if (std::find(notes_.begin(), notes_.end(), what) == notes_.end()) notes_.push_back(what);
     }
+    // An extension skipped: one warning per extension, however many places use it.
+    void extension(const std::string& name, const std::string& what) {
+        if (extensions_.insert(name).second) note(what);
+    }
     void print() const {
         for (const std::string& what : notes_)
             std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
@@ -499,6 +516,7 @@ public:
 private:
     std::string origin_;
     std::vector<std::string> notes_;
+    std::set<std::string> extensions_;
 };
 
 // ---- Materials (3.9) -----------------------------------------------------------------------
@@ -588,7 +606,7 @@ public:
             std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(), [](double v) { return v != 0.0; }))
             skipped_.note("emissive light is not drawn");
         for (const auto& [name, value] : m.extensions)
-            skipped_.note("material extension " + name + " is skipped");
+            skipped_.extension(name, "material extension " + name + " is skipped");
         return out;
     }
 
@@ -618,10 +636,9 @@ private:
         if (info.texCoord != 0)
             skipped_.note("textures read TEXCOORD_0 only (a material asks for another set)");
         for (const auto& [name, value] : info.extensions)
-            skipped_.note("texture extension " + name + " is skipped");
-        if (!texture.extensions.empty())
-            for (const auto& [name, value] : texture.extensions)
-                skipped_.note("texture extension " + name + " is skipped");
+            skipped_.extension(name, "texture extension " + name + " is skipped");
+        for (const auto& [name, value] : texture.extensions)
+            skipped_.extension(name, "texture extension " + name + " is skipped");
         if (texture.source < 0) return {};  // allowed when an extension supplies the image
         const tinygltf::Image& image = reader_.get(model_.images, texture.source, where + ": image");
         TextureRef ref;
@@ -707,8 +724,10 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
             uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
             {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
     if (primitive.targets.size()) skipped.note("morph targets are not applied (drawn in the base shape)");
-    for (const auto& [name, accessor] : primitive.attributes)
-        if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn in the bind pose)");
+    for (const auto& [name, accessor] : primitive.attributes) {
+        if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn unskinned)");
+        if (name.rfind("COLOR_", 0) == 0) skipped.note("vertex colours (COLOR_n) are not used");
+    }
 
     // The primitive's corners as triangles, counter-clockwise (3.7.2.1, its topology types).
     std::vector<uint32_t> corners;
@@ -832,6 +851,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         jsonText = bytes;
     }
     if (jsonText.starts_with("\xef\xbb\xbf")) jsonText.erase(0, 3);
+    std::vector<std::string> imageUris;
     {
         json root;
         try {
@@ -842,7 +862,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             throw InputError(origin +
                              ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
         }
-        checkGltfJson(root, origin, glb);
+        imageUris = checkGltfJson(root, origin, glb);
     }
 
     //> gltf-parse
@@ -852,6 +872,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
                          ? std::string()
                          : std::string(reinterpret_cast<const char*>(directory.generic_u8string().c_str()))};
     while (files.directory.size() > 1 && files.directory.back() == '/') files.directory.pop_back();
+    for (const std::string& uri : imageUris)
+        files.imageFiles.insert(files.directory + "/" + percentDecoded(uri));
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, &files});
     EmbeddedImages embedded;
@@ -870,15 +892,14 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
 
     GltfReader reader(model, path);
     Skipped skipped(origin);
-    for (const std::string& name : model.extensionsUsed)
-        if (name.rfind("KHR_materials_", 0) != 0 && name != "KHR_texture_transform")  // noted where used
-            skipped.note("extension " + name + " is not used");
     if (!model.cameras.empty()) skipped.note("its cameras are not used (the scene's camera is)");
     if (!model.animations.empty()) skipped.note("animations are not played");
 
     ModelData out;
     MaterialReader materials(model, reader, embedded, skipped);
     for (int i = 0; i < int(model.materials.size()); ++i) out.materials.push_back(materials.material(i));
+    for (const std::string& name : model.extensionsUsed)  // those the materials used are noted already
+        skipped.extension(name, "extension " + name + " is not used");
     const uint32_t defaultMaterial = uint32_t(out.materials.size());
     // 3.9.6 "Default Material": a primitive without one is opaque white, metallic 1, roughness 1.
     out.materials.push_back(
@@ -934,7 +955,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         const tinygltf::Node& node = model.nodes[size_t(index)];
         std::string where = "nodes[" + std::to_string(index) + "]";
         glm::dmat4 world = parent * localMatrix(node, reader, where);
-        if (node.skin >= 0) skipped.note("skins are not applied (drawn in the bind pose)");
+        if (node.skin >= 0) skipped.note("skins are not applied (drawn unskinned)");
         if (node.mesh >= 0) {
             const tinygltf::Mesh& mesh = reader.get(model.meshes, node.mesh, where + ".mesh: mesh");
             for (size_t p = 0; p < mesh.primitives.size(); ++p) {

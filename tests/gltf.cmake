@@ -112,6 +112,7 @@ gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found; us
 gltf_hostile(blend warn "${GH}/blend.gltf: alphaMode BLEND is drawn as MASK with a cutoff of 0.5 \\(a G-buffer holds one surface per pixel\\)"
     blend.gltf)
 gltf_hostile(emissive warn "${GH}/emissive.gltf: emissive light is not drawn" emissive.gltf)
+gltf_hostile(vertex-colors warn "${GH}/vertex_colors.gltf: vertex colours \\(COLOR_n\\) are not used" vertex_colors.gltf)
 gltf_hostile(texture-transform warn "${GH}/texture_transform.gltf: texture extension KHR_texture_transform is skipped"
     texture_transform.gltf)
 # Points and lines are skipped with a warning; with nothing else, there is nothing to draw.

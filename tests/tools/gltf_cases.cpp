@@ -270,6 +270,11 @@ void writeHostile(const fs::path& dir) {
     make("emissive.gltf", [](gltf::File& f) {
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"emissiveFactor", {1, 0.5, 0}}});
     });
+    make("vertex_colors.gltf", [](gltf::File& f) {
+        std::vector<glm::vec4> colors(3, glm::vec4(1, 0, 0, 1));
+        f.root["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
+            f.values(colors, gltf::kFloat, "VEC4");
+    });
     writePng(dir / "white.png", 1, 1, 4, {255, 255, 255, 255});
     make("texture_transform.gltf", [](gltf::File& f) {
         f.root["extensionsUsed"] = {"KHR_texture_transform"};
