@@ -2,9 +2,9 @@
 // this repository does not carry), of the same size and kind, for startup, memory and frame-time
 // measurements (bench/startup.sh): one node scaled 0.008; one mesh of 103 primitives with
 // POSITION, TEXCOORD_0, NORMAL and TANGENT and 16-bit indices, 266,976 triangles (Sponza: about
-// 262,000); 25
-// materials (three MASK, three doubleSided, two without textures); 68 images of 1024x1024 (65
-// JPEG, 3 PNG with alpha) and one 4x4 PNG; one sampler (linear, mipmapped, repeat). Written as
+// 262,000); 25 materials (three MASK, three doubleSided, two without textures); 68 images of
+// 1024x1024 (65 JPEG, 3 PNG with alpha) and one 4x4 PNG; one sampler (linear, mipmapped,
+// repeat). Written as
 // DIR/Sponza.gltf + Sponza.bin and as DIR/sponza.obj + sponza.mtl over the same images (the OBJ
 // naming the packed metal-rough image twice, as map_Pr and map_Pm). Deterministic.
 #include <stb_image_write.h>
