@@ -4,9 +4,9 @@
 // POSITION, TEXCOORD_0, NORMAL and TANGENT and 16-bit indices, 266,976 triangles (Sponza: about
 // 262,000); 25 materials (three MASK, three doubleSided, two without textures); 68 images of
 // 1024x1024 (65 JPEG, 3 PNG with alpha) and one 4x4 PNG; one sampler (linear, mipmapped,
-// repeat). Written as
-// DIR/Sponza.gltf + Sponza.bin and as DIR/sponza.obj + sponza.mtl over the same images (the OBJ
-// naming the packed metal-rough image twice, as map_Pr and map_Pm). Deterministic.
+// repeat). Written as DIR/Sponza.gltf + Sponza.bin and as DIR/sponza.obj + sponza.mtl over the
+// same images (the OBJ naming the packed metal-rough image twice, as map_Pr and map_Pm).
+// Deterministic.
 #include <stb_image_write.h>
 
 #include <algorithm>
