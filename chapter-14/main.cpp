@@ -8,7 +8,7 @@
 //   scene pass (scene_pass.cpp): the scene into the G-buffer (albedo + depth);
 //   light pass (light_pass.cpp): a full-screen triangle into an R32G32B32A32_SFLOAT image;
 //   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional);
-//   GUI pass   (gui_pass.cpp, --gui): Dear ImGui's overlay drawn over it, as the book's GuiRender.
+//   GUI pass   (common/gui_pass.cpp, --gui): Dear ImGui's overlay drawn over it, as the book's GuiRender.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -23,13 +23,13 @@
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
+#include "common/gui_pass.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
 #include "common/target.hpp"
-#include "gui_pass.hpp"
 #include "light_pass.hpp"
 #include "scene_pass.hpp"
 
@@ -89,9 +89,9 @@ void run(const common::Options& options) {
 
     // --gui: Dear ImGui's context and input (common/gui.cpp) and the pass that draws it.
     common::Gui gui = common::createGui(options, target);
-    GuiPass guiPass;
+    common::GuiPass guiPass;
     if (gui.enabled)
-        guiPass = createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
 
     // --frames, --resize, --benchmark (each pass timed), --screenshot.
     std::vector<std::string> passes{"scene", "light", "post"};
@@ -138,7 +138,7 @@ void run(const common::Options& options) {
             continue;
         }
         VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
-        if (gui.enabled) updateGuiBuffers(device, guiPass, slot, overlay);
+        if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
 
         // One command buffer for the whole frame: three passes (four with --gui), joined by
         // barriers only.
@@ -158,7 +158,7 @@ void run(const common::Options& options) {
         common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
         common::timePassEnd(run, sync.commandBuffer, slot, 2);
         if (gui.enabled) {
-            recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
+            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
             common::timePassEnd(run, sync.commandBuffer, slot, 3);
         }
         VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
@@ -211,7 +211,7 @@ void run(const common::Options& options) {
 
     //> teardown
     common::destroyRunControl(device, run);
-    if (gui.enabled) destroyGuiPass(device, guiPass);
+    if (gui.enabled) common::destroyGuiPass(device, guiPass);
     common::destroyGui(gui);
     common::savePipelineCache(device, pipelineCache);
     common::destroyPostPass(device, postPass);

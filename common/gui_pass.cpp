@@ -1,5 +1,7 @@
-// The GUI pass for the chapters after chapter-14 (chapter-14/gui_pass.cpp writes it out, its
-// pipeline included; here the pipeline comes from common::createGraphicsPipeline).
+// The GUI pass of chapters 14 and 15: Dear ImGui's draw data drawn by our own pipeline onto the
+// presented image, after the post pass, as the book's GuiRender does. The book teaches its GUI in
+// its chapter 12, which we do not carry, so the pass lives here once and chapter-14's page walks
+// through it (docs/chapter-14.md, "The GUI pass").
 #include "common/gui_pass.hpp"
 
 #include <algorithm>
@@ -21,6 +23,7 @@ struct GuiTransform {
     float translate[2];
 };
 
+//> gui-pipeline
 // Dear ImGui's vertex (ImDrawVert): position and font-atlas coordinate as two floats each, the
 // colour as four bytes.
 VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
@@ -58,6 +61,7 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
     vkDestroyShaderModule(device.handle, vertex, nullptr);
     return pipeline;
 }
+//< gui-pipeline
 
 // Makes room in a frame's buffers for `draw`: a growing buffer doubles, so a window that opens
 // with much text costs one or two growths, not one per frame.
@@ -123,6 +127,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
     return pass;
 }
 
+//> update-gui
 void updateGuiBuffers(const common::Device& device, GuiPass& pass, uint32_t frame, const ImDrawData* draw) {
     if (!draw || draw->TotalIdxCount == 0) return;
     GuiFrame& buffers = pass.frames[frame];
@@ -136,7 +141,9 @@ void updateGuiBuffers(const common::Device& device, GuiPass& pass, uint32_t fram
         indices = std::copy_n(list->IdxBuffer.Data, list->IdxBuffer.Size, indices);
     }
 }
+//< update-gui
 
+//> record-gui
 void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, const common::Target& target,
                    uint32_t imageIndex, const ImDrawData* draw) {
     bool drawing = draw && draw->TotalIdxCount > 0;
@@ -205,6 +212,7 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     common::pipelineBarrier(cmd, &finish, 1);
 }
+//< record-gui
 
 void destroyGuiPass(const common::Device& device, GuiPass& pass) {
     for (GuiFrame& frame : pass.frames) {

@@ -1,7 +1,7 @@
-// The GUI pass for chapter-15: Dear ImGui's draw data drawn by our own pipeline onto the presented
-// image, after the post pass. chapter-14/gui_pass.cpp writes it out for the reader, as the chapter
-// that introduces it; this is the same code, shared from here as common wraps every Vulkan call
-// for the chapters after the one that introduces it.
+// The GUI pass of chapters 14 and 15 (--gui): Dear ImGui's draw data drawn by our own pipeline
+// onto the presented image, after the post pass, as the book's GuiRender does. The widgets and
+// input are common/gui.cpp. The book teaches its GUI in its chapter 12, which we do not carry: the
+// pass lives here once, and chapter-14's page walks through it.
 #pragma once
 
 #include <imgui.h>

@@ -1,6 +1,5 @@
-# The --gui overlay of chapters 14 and 15 (common/gui.cpp, chapter-14/gui_pass.cpp,
-# common/gui_pass.cpp): golden images headless (the overlay is deterministic there: timings as
-# placeholders); clicks on the overlay (--gui-click, scripted) that switch chapter-15's G-buffer
+# The --gui overlay of chapters 14 and 15 (common/gui.cpp, common/gui_pass.cpp): golden images
+# headless (the overlay is deterministic there: timings as placeholders); clicks on the overlay (--gui-click, scripted) that switch chapter-15's G-buffer
 # layout and light pass live, with a resize, under validation; the buffers growing when the help
 # window opens; a size too small for the overlay; the GUI pass's row in --benchmark; and in a real
 # window under Xvfb, xdotool clicks, drags and F1.
