@@ -72,7 +72,8 @@ const common::ChapterInfo kChapter{
      {"shading",
       {"deferred", "forward"},
       "deferred: the G-buffer, then the light pass (the book's); "
-      "forward: the scene pass shades each fragment with every light (no G-buffer), to compare"},
+      "forward: the scene pass shades each fragment with every light (no light pass, the G-buffer "
+      "not written), to compare"},
      common::kGuiClickChoice},
 };
 
@@ -370,7 +371,7 @@ void run(const common::Options& options) {
         VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
         common::timeFrameStart(run, sync.commandBuffer, slot, frame);
         uint32_t pass = 0;
-        if (forward) {  // beyond the book: --shading forward, no G-buffer
+        if (forward) {  // beyond the book: --shading forward, the G-buffer not written
             recordForwardPass(sync.commandBuffer, forwardPass, scenePass, lightPass, gpuScene, slot,
                               camera.position);
             common::timePassEnd(run, sync.commandBuffer, slot, pass++);

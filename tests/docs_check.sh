@@ -7,12 +7,15 @@
 #   tests/docs_check.sh file-lines ROOT           every FILE:LINE a page quotes (docs/*.md, the
 #                                                 READMEs) names a file of the repository that has
 #                                                 that line
+#   tests/docs_check.sh counts ROOT BUILD         every count of tests a page marks, as
+#                                                 "N tests<!-- ctest: REGEX -->", is what
+#                                                 `ctest -N -R REGEX` counts in BUILD
 #
 # Prints each problem on a line of its own and exits 1 when there is one.
 set -euo pipefail
 mode=${1:-}
 root=${2:-}
-[ -n "$mode" ] && [ -d "$root" ] || { echo "usage: docs_check.sh options|file-lines ROOT [PROGRAM...]" >&2; exit 2; }
+[ -n "$mode" ] && [ -d "$root" ] || { echo "usage: docs_check.sh options|file-lines|counts ROOT [...]" >&2; exit 2; }
 shift 2
 root=$(cd "$root" && pwd)
 problems=0
@@ -64,6 +67,20 @@ case $mode in
                 problem "${page#"$root"/}: $ref: the file has $lines lines"
         done < <(grep -oE '[A-Za-z0-9_./-]+\.(cpp|hpp|h|glsl|frag|vert|comp|cmake|sh|json):[0-9]+' "${pages[@]}" |
                  sed -E 's/^([^:]+):/\1::/')
+        ;;
+    counts)
+        build=${1:?the build directory}
+        pages=("$root"/docs/*.md "$root/README.md")
+        # "N<anything but a digit or '<', at most 60 characters><!-- ctest: REGEX -->"
+        while IFS= read -r hit; do
+            page=${hit%%:*}
+            rest=${hit#*:}
+            quoted=$(grep -oE '^[0-9][0-9,]*' <<<"$rest" | tr -d ,)
+            regex=$(sed -E 's/.*<!-- ctest: (.*) -->$/\1/' <<<"$rest")
+            counted=$(ctest --test-dir "$build" -N -R "$regex" | sed -n 's/^Total Tests: //p')
+            [ "$quoted" = "$counted" ] ||
+                problem "${page#"$root"/}: says $quoted tests where \`ctest -N -R '$regex'\` counts ${counted:-none}"
+        done < <(grep -oE '[0-9][0-9,]*[^0-9<]{0,60}<!-- ctest: [^>]* -->' "${pages[@]}")
         ;;
     *)
         echo "docs_check.sh: unknown mode '$mode'" >&2
