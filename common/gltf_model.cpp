@@ -123,9 +123,13 @@ bool readIndex(const json& object, const char* key, uint64_t max, uint64_t* valu
 
 // What tinygltf takes on trust, checked on the JSON before it reads anything: the version, the
 // extensions a model requires, every URI, and every buffer view against its buffer (tinygltf
-// reads images out of buffer views unchecked). Returns the images' URIs that name files.
-std::vector<std::string> checkGltfJson(const json& root, const std::string& origin, bool glb) {
-    std::vector<std::string> imageFiles;
+// reads images out of buffer views unchecked). Returns the URIs that name files.
+struct FileUris {
+    std::vector<std::string> buffers, images;
+};
+
+FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
+    FileUris files;
     if (!root.is_object()) throw InputError(origin + ": not a glTF file (the JSON is not an object)");
     if (!root.contains("asset") || !root["asset"].is_object() || !root["asset"].contains("version") ||
         !root["asset"]["version"].is_string())
@@ -161,7 +165,9 @@ std::vector<std::string> checkGltfJson(const json& root, const std::string& orig
         if (buffers[i].contains("uri")) {
             if (!buffers[i]["uri"].is_string())
                 throw InputError(origin + ": " + where + ".uri is not a string");
-            checkUri(origin, where + ".uri", buffers[i]["uri"].get<std::string>());
+            const std::string uri = buffers[i]["uri"].get<std::string>();
+            checkUri(origin, where + ".uri", uri);
+            if (!uri.starts_with("data:")) files.buffers.push_back(uri);
         } else if (!glb || i != 0) {
             throw InputError(origin + ": " + where + " has no uri (only a .glb's first buffer may omit it)");
         }
@@ -194,14 +200,14 @@ std::vector<std::string> checkGltfJson(const json& root, const std::string& orig
                 throw InputError(origin + ": " + where + ".uri is not a string");
             const std::string uri = images[i]["uri"].get<std::string>();
             checkUri(origin, where + ".uri", uri);
-            if (!uri.starts_with("data:")) imageFiles.push_back(uri);
+            if (!uri.starts_with("data:")) files.images.push_back(uri);
         } else if (images[i].is_object() && images[i].contains("bufferView") &&
                    (views.empty() ||
                     !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
             throw InputError(origin + ": " + where + ".bufferView names no buffer view");
         }
     }
-    return imageFiles;
+    return files;
 }
 
 // The file system as tinygltf sees it: files inside the model's directory only (tinygltf also
@@ -211,14 +217,33 @@ std::vector<std::string> checkGltfJson(const json& root, const std::string& orig
 // and decodes them, on every core), so they are refused, which tinygltf takes as a warning and
 // keeps the image's URI.
 struct ModelFiles {
-    std::string directory;             // absolute, '/'-separated, UTF-8
+    std::string directory;             // absolute, '/'-separated, UTF-8, no '/' at the end but "/"
     std::set<std::string> imageFiles;  // the paths tinygltf asks for the images' URIs
+
+    explicit ModelFiles(const std::filesystem::path& dir) {
+        std::u8string generic = dir.generic_u8string();
+        directory.assign(generic.begin(), generic.end());
+        while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
+    }
+    // The path tinygltf asks for a URI, as its JoinPath makes it.
+    std::string join(const std::string& decoded) const {
+        return directory.ends_with('/') ? directory + decoded : directory + "/" + decoded;
+    }
+    // Image files are not read here (see above); a file that is also a buffer is.
+    void skipImages(const FileUris& uris) {
+        for (const std::string& uri : uris.images) imageFiles.insert(join(percentDecoded(uri)));
+        for (std::string uri : uris.buffers) {
+            imageFiles.erase(join(percentDecoded(uri)));
+            std::replace(uri.begin(), uri.end(), '+', ' ');  // tinygltf's decoder also reads '+' as ' '
+            imageFiles.erase(join(percentDecoded(uri)));
+        }
+    }
 };
 
 bool insideModel(const std::string& path, const ModelFiles& files) {
-    return path.size() > files.directory.size() + 1 &&
-           path.compare(0, files.directory.size(), files.directory) == 0 &&
-           path[files.directory.size()] == '/';
+    const std::string& dir = files.directory;
+    if (dir.ends_with('/')) return path.size() > dir.size() && path.starts_with(dir);  // the root
+    return path.size() > dir.size() + 1 && path.starts_with(dir) && path[dir.size()] == '/';
 }
 
 bool fileExists(const std::string& path, void* user) {
@@ -498,6 +523,21 @@ private:
 
 // Warnings for what we read but do not draw: one line each, once per model, printed when the
 // model has loaded (a model that is refused gets its one error line only).
+// The largest absolute component of v.
+double maxAbs(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// v made unit length, or `fallback` when it has none: scaled first by its largest component, so
+// that a transform of scale 1e200 (valid in a glTF file) overflows nothing.
+glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
+    double m = maxAbs(v);
+    if (!(m > 1e-300) || !std::isfinite(m)) return fallback;
+    glm::dvec3 u = v / m;
+    double length = glm::length(u);
+    return std::isfinite(length) && length > 1e-12 ? u / length : fallback;
+}
+
 class Skipped {
 public:
     explicit Skipped(std::string origin) : origin_(std::move(origin)) {}
@@ -588,9 +628,10 @@ public:
         // 3.9.4 "Alpha Coverage". A G-buffer pixel holds one surface: BLEND becomes a mask.
         if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
             out.alphaMode = AlphaMode::Mask;
-            out.alphaCutoff = m.alphaMode == "MASK" ? float(m.alphaCutoff) : 0.5f;
             if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
                 reader_.fail(where + ".alphaCutoff must be a finite number of at least 0");
+            // Above 1 every texel is cut; 2 says the same and stays a finite float.
+            out.alphaCutoff = m.alphaMode == "MASK" ? float(std::min(m.alphaCutoff, 2.0)) : 0.5f;
             if (m.alphaMode == "BLEND")
                 skipped_.note(
                     "alphaMode BLEND is drawn as MASK with a cutoff of 0.5 (a G-buffer holds one "
@@ -754,22 +795,32 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
     // transform (negative determinant) turns the winding around (3.7.4 "Instantiation").
     const glm::dmat3 linear(world), normalMatrix = glm::transpose(glm::inverse(linear));
     const bool mirrored = glm::determinant(linear) < 0.0;
+    bool unusableTangent = false;  // a file's tangent along its normal, or zero
     auto vertex = [&](uint32_t i) {
         Vertex v{};
         glm::dvec4 p = world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0);
         v.position = glm::vec3(p);
         if (!normals.empty()) {
-            glm::dvec3 n = normalMatrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-            v.normal = glm::length(n) > 1e-30 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
+            glm::dvec3 n0(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+            glm::dvec3 n = unitOr(normalMatrix * n0, glm::dvec3(0.0, 1.0, 0.0));
+            v.normal = glm::vec3(n);
             if (!tangents.empty()) {
-                // 3.7.2.1: bitangent = cross(normal, tangent.xyz) * w, in the primitive's space,
-                // then both transformed as directions in the surface.
-                glm::dvec3 n0(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+                // 3.7.2.1: bitangent = cross(normal, tangent.xyz) * w, in the primitive's space;
+                // tangent and bitangent transformed as directions in the surface, then the frame
+                // made orthonormal about the normal (a file's tangent need not be perpendicular to
+                // its normal), keeping the bitangent's side.
                 glm::dvec3 t0(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
                 double w = tangents[4 * i + 3] < 0.0f ? -1.0 : 1.0;
                 glm::dvec3 t = linear * t0, b = linear * (glm::cross(n0, t0) * w);
-                v.tangent = glm::length(t) > 1e-30 ? glm::vec3(glm::normalize(t)) : glm::vec3(0.0f);
-                v.bitangent = glm::length(b) > 1e-30 ? glm::vec3(glm::normalize(b)) : glm::vec3(0.0f);
+                t = unitOr(t, glm::dvec3(0.0));
+                t = unitOr(t - n * glm::dot(n, t), glm::dvec3(0.0));  // Gram-Schmidt
+                if (t == glm::dvec3(0.0)) {
+                    unusableTangent = true;  // computed for the whole primitive below instead
+                } else {
+                    glm::dvec3 side = glm::cross(n, t);
+                    v.tangent = glm::vec3(t);
+                    v.bitangent = glm::vec3(glm::dot(side, unitOr(b, side)) < 0.0 ? -side : side);
+                }
             }
         }
         if (!uvs.empty())
@@ -809,8 +860,9 @@ MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& w
             for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
                 std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
     }
-    // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp).
-    if (tangents.empty()) computeTangents(mesh);
+    // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp), or
+    // where one of its tangents is unusable.
+    if (tangents.empty() || unusableTangent) computeTangents(mesh);
     return mesh;
 }
 
@@ -851,7 +903,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         jsonText = bytes;
     }
     if (jsonText.starts_with("\xef\xbb\xbf")) jsonText.erase(0, 3);
-    std::vector<std::string> imageUris;
+    FileUris fileUris;
     {
         json root;
         try {
@@ -862,18 +914,13 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             throw InputError(origin +
                              ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
         }
-        imageUris = checkGltfJson(root, origin, glb);
+        fileUris = checkGltfJson(root, origin, glb);
     }
 
     //> gltf-parse
     // tinygltf parses the file and reads its buffers, through our file callbacks only.
-    std::filesystem::path directory = std::filesystem::absolute(path).parent_path();
-    ModelFiles files{directory.generic_u8string().empty()
-                         ? std::string()
-                         : std::string(reinterpret_cast<const char*>(directory.generic_u8string().c_str()))};
-    while (files.directory.size() > 1 && files.directory.back() == '/') files.directory.pop_back();
-    for (const std::string& uri : imageUris)
-        files.imageFiles.insert(files.directory + "/" + percentDecoded(uri));
+    ModelFiles files(std::filesystem::absolute(path).parent_path());
+    files.skipImages(fileUris);
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, &files});
     EmbeddedImages embedded;

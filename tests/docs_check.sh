@@ -28,12 +28,14 @@ case $mode in
     options)
         # The README's option tables: rows whose first cell starts with `--...`; every --name in
         # that cell counts (`--width W`, `--height H`).
-        documented=$(grep -E '^\| `--' "$root/README.md" | cut -d'|' -f2 | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u)
+        documented=$(grep -E '^\| `--' "$root/README.md" | cut -d'|' -f2 | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u || true)
+        [ -n "$documented" ] || problem "README.md: no option table (rows starting with | \`--)"
         offered=""
         for program in "$@"; do
             help=$("$program" --help) || { problem "$program --help failed"; continue; }
             # The options --help describes: lines that start (indented) with --name.
-            names=$(grep -oE -- '^ +--[a-z][a-z0-9-]*' <<<"$help" | tr -d ' ' | sort -u)
+            names=$(grep -oE -- '^ +--[a-z][a-z0-9-]*' <<<"$help" | tr -d ' ' | sort -u || true)
+            [ -n "$names" ] || problem "$(basename "$program") --help lists no option"
             offered+=$'\n'$names
             for name in $names; do
                 grep -qxF -- "$name" <<<"$documented" ||
@@ -77,7 +79,7 @@ case $mode in
             rest=${hit#*:}
             quoted=$(grep -oE '^[0-9][0-9,]*' <<<"$rest" | tr -d ,)
             regex=$(sed -E 's/.*<!-- ctest: (.*) -->$/\1/' <<<"$rest")
-            counted=$(ctest --test-dir "$build" -N -R "$regex" | sed -n 's/^Total Tests: //p')
+            counted=$(ctest --test-dir "$build" -N -R "$regex" | sed -n 's/^Total Tests: //p' || true)
             [ "$quoted" = "$counted" ] ||
                 problem "${page#"$root"/}: says $quoted tests where \`ctest -N -R '$regex'\` counts ${counted:-none}"
         done < <(grep -oE '[0-9][0-9,]*[^0-9<]{0,60}<!-- ctest: [^>]* -->' "${pages[@]}")

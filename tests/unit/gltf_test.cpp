@@ -261,6 +261,85 @@ TEST(GltfLoader, TangentsComputedOrTakenWithTheirSign) {
     }
 }
 
+// A frame model.hpp promises: unit normal, tangent and bitangent, the tangent perpendicular to the
+// normal.
+void expectOrthonormal(const common::MeshData& mesh) {
+    for (const common::Vertex& v : mesh.vertices) {
+        EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+        EXPECT_NEAR(glm::length(v.tangent), 1.0f, 1e-4f);
+        EXPECT_NEAR(glm::length(v.bitangent), 1.0f, 1e-4f);
+        EXPECT_NEAR(glm::dot(v.normal, v.tangent), 0.0f, 1e-4f);
+    }
+}
+
+TEST(GltfLoader, FileTangentsMadeOrthonormal) {
+    // A file's tangent need not be perpendicular to its normal (tilted: made so, its side kept),
+    // and may be unusable (zero, or along the normal: computed from the texture coordinates).
+    Primitive p;
+    p.uvs = {{0, 1}, {1, 1}, {0, 0}};
+    for (glm::vec4 tangent : {glm::vec4(1, 0, 0.5f, -1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 2, 1)}) {
+        gltf::File file;
+        int mesh = addPrimitive(file, p);
+        std::vector<glm::vec4> tangents(3, tangent);
+        file.root["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
+            file.values(tangents, gltf::kFloat, "VEC4");
+        file.node({{"mesh", mesh}});
+        file.scene({0});
+        common::ModelData model = load(file, "odd_tangents.gltf");
+        expectOrthonormal(model.meshes[0]);
+        for (const common::Vertex& v : model.meshes[0].vertices) {
+            expectNear(v.tangent, {1, 0, 0});
+            expectNear(v.bitangent, tangent.w < 0 ? vec3(0, -1, 0) : vec3(0, 1, 0));
+        }
+    }
+}
+
+TEST(GltfLoader, ExtremeScalesKeepUnitNormals) {
+    // A node scaled by 1e-200 along x is valid JSON and glTF; a triangle in the yz plane keeps
+    // finite positions, and its normal, through the inverse-transpose, grows to 1e200 (squared,
+    // past what a double holds): it must still come out unit length.
+    Primitive p;
+    p.positions = {{0, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    p.normals.assign(3, vec3(1, 0, 0));
+    p.uvs = {{0, 1}, {1, 1}, {0, 0}};
+    common::ModelData model = loadPrimitive(p, "extreme_scale.gltf", {{"scale", {1e-200, 1, 1}}});
+    expectOrthonormal(model.meshes[0]);
+    for (const common::Vertex& v : model.meshes[0].vertices) expectNear(v.normal, {1, 0, 0});
+}
+
+TEST(GltfLoader, BufferAndImageMayShareAFile) {
+    // An image file is left to the texture upload, but a file that is also a buffer is read.
+    gltf::File file;
+    int mesh = addPrimitive(
+        file, Primitive{},
+        file.material({{"pbrMetallicRoughness",
+                        {{"baseColorTexture", {{"index", file.texture(file.image("shared.bin"))}}}}}}));
+    file.node({{"mesh", mesh}});
+    file.scene({0});
+    fs::path path = tempDir() / "shared.gltf";
+    file.writeGltf(path);
+    // writeGltf names the buffer after the model: rename it to the image's name.
+    std::vector<uint8_t> text = gltf::readBytes(path);
+    json root = json::parse(text.begin(), text.end());
+    fs::rename(tempDir() / root["buffers"][0]["uri"].get<std::string>(), tempDir() / "shared.bin");
+    root["buffers"][0]["uri"] = "shared.bin";
+    std::string out = root.dump();
+    gltf::writeBytes(path, out.data(), out.size());
+    common::ModelData model = common::loadGltfModel(path);
+    EXPECT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.materials[0].diffuseTexture.image.file, tempDir() / "shared.bin");
+}
+
+TEST(GltfLoader, HugeAlphaCutoffStaysFinite) {
+    gltf::File file;
+    int mesh = addPrimitive(file, Primitive{}, file.material({{"alphaMode", "MASK"}, {"alphaCutoff", 1e39}}));
+    file.node({{"mesh", mesh}});
+    file.scene({0});
+    common::ModelData model = load(file, "huge_cutoff.gltf");
+    EXPECT_TRUE(std::isfinite(model.materials[0].alphaCutoff));
+    EXPECT_GT(model.materials[0].alphaCutoff, 1.0f);  // still cuts every texel
+}
+
 TEST(GltfLoader, MaterialsAndSamplers) {
     gltf::File file;
     int sampler =
