@@ -11,7 +11,8 @@
 # After this file, these targets exist whichever way they came: glfw, glm::glm,
 # tinyobjloader::tinyobjloader, nlohmann_json::nlohmann_json, vkbook::stb (stb_image,
 # stb_image_write, stb_image_resize, with their implementations), vkbook::imgui (Dear ImGui with
-# its GLFW platform backend, used for input only), vkbook::tinygltf (glTF 2.0) and Vulkan::Vulkan with
+# its GLFW platform backend, used for input only), vkbook::tinygltf (glTF 2.0), CLI11::CLI11 (the
+# command line) and Vulkan::Vulkan with
 # Vulkan::glslangValidator (the Vulkan SDK on Windows and macOS; not fetched).
 include_guard(GLOBAL)
 include(FetchContent)
@@ -158,3 +159,16 @@ else()
     target_compile_definitions(vkbook_tinygltf PRIVATE STBI_WINDOWS_UTF8)
 endif()
 add_library(vkbook::tinygltf ALIAS vkbook_tinygltf)
+
+# CLI11 (the command line): Debian's libcli11-dev (2.1); elsewhere the same release, fetched. Header
+# only either way.
+find_package(CLI11 2.1 CONFIG QUIET)
+if(NOT TARGET CLI11::CLI11)
+    set(CLI11_BUILD_TESTS OFF CACHE BOOL "")
+    set(CLI11_BUILD_EXAMPLES OFF CACHE BOOL "")
+    set(CLI11_BUILD_DOCS OFF CACHE BOOL "")
+    FetchContent_Declare(cli11
+        GIT_REPOSITORY https://github.com/CLIUtils/CLI11.git
+        GIT_TAG v2.1.2)
+    FetchContent_MakeAvailable(cli11)
+endif()

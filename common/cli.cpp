@@ -1,6 +1,10 @@
-// Command-line parsing shared by every chapter, and the mapping of failures to exit codes.
+// Command-line parsing shared by every chapter (with CLI11), and the mapping of failures to exit
+// codes.
 #include "common/cli.hpp"
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -93,16 +97,11 @@ void checkScreenshotPath(const std::filesystem::path& path) {
     checkOutputPath(path, "screenshot");
 }
 
-const Choice* findChoice(const ChapterInfo& chapter, std::string_view arg) {
-    for (const Choice& choice : chapter.choices)
-        if (arg == "--" + choice.name) return &choice;
-    return nullptr;
-}
-
-bool isSwitch(const ChapterInfo& chapter, std::string_view name) {
-    for (const auto& [switchName, help] : chapter.switches)
-        if (switchName == name) return true;
-    return false;
+// "a|b|c"
+std::string joined(const std::vector<std::string>& values) {
+    std::string out;
+    for (const std::string& value : values) out += (out.empty() ? "" : "|") + value;
+    return out;
 }
 
 // An error message as one printable line, whatever the input put into it (a file name or a token
@@ -119,98 +118,118 @@ std::string oneLine(std::string message) {
 
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter) {
     Options options;
-    bool framesGiven = false, warmupGiven = false;
     options.command = argc > 0 ? utf8(std::filesystem::path(argv[0]).filename()) : chapter.name;
     for (int i = 1; i < argc; ++i) options.command += std::string(" ") + argv[i];
-    for (int i = 1; i < argc; ++i) {
-        std::string_view arg = argv[i];
-        auto value = [&]() -> std::string_view {
-            if (i + 1 >= argc) throw InputError(std::string(arg) + " needs a value");
-            return argv[++i];
-        };
-        if (arg == "--headless") {
-            options.headless = true;
-        } else if (arg == "--width") {
-            options.width = parseNumber(arg, value(), 1, kMaxWindowDimension);
-        } else if (arg == "--height") {
-            options.height = parseNumber(arg, value(), 1, kMaxWindowDimension);
-        } else if (arg == "--frames") {
-            options.frames = parseNumber(arg, value(), 1, 10'000'000);
-            framesGiven = true;
-        } else if (arg == "--benchmark") {
-            options.benchmark = true;
-        } else if (arg == "--warmup") {
-            options.warmup = parseNumber(arg, value(), 0, 100000);
-            warmupGiven = true;
-        } else if (arg == "--json") {
-            options.json = value();
-            if (options.json.empty()) throw InputError("--json needs a file name");
-            checkOutputPath(options.json, "benchmark report");
-        } else if (arg == "--frames-in-flight") {
-            options.framesInFlight = parseNumber(arg, value(), 1, 3);
-        } else if (arg == "--screenshot") {
-            options.screenshot = value();
-            checkScreenshotPath(options.screenshot);
-        } else if (arg == "--device") {
-            options.device = value();
-            if (options.device.empty()) throw InputError("--device needs a non-empty name");
-        } else if (arg == "--validation") {
-            options.validation = true;
-        } else if (arg == "--resize") {
-            options.resizeTo = parseExtent(arg, value());
-        } else if ((arg == "--scene" || arg == "--model" || arg == "--book-scene" || arg == "--view") &&
-                   chapter.views.empty()) {
-            throw InputError(std::string(chapter.name) + " draws no scene and takes no " + std::string(arg));
-        } else if (arg == "--scene") {
-            options.scene = value();
-            if (options.scene.empty()) throw InputError("--scene needs a file name");
-        } else if (arg == "--model") {
-            options.model = value();
-            if (options.model.empty()) throw InputError("--model needs a file name");
-        } else if (arg == "--book-scene") {
-            options.bookScene = value();
-            if (options.bookScene.empty()) throw InputError("--book-scene needs a path");
-        } else if (arg == "--view") {
-            std::string_view name = value();
-            std::string names;
-            bool found = false;
-            for (uint32_t v = 0; v < chapter.views.size(); ++v) {
-                names += (v ? "|" : "") + chapter.views[v];
-                if (chapter.views[v] == name) options.view = v, found = true;
+
+    // CLI11 binds each option to its field; our validators check each value as it is given and
+    // throw InputError with our one-line message (CLI11 passes any exception but its own through).
+    // --help is ours (runChapter prints it); extra arguments are collected and refused below.
+    CLI::App app{chapter.summary, chapter.name};
+    app.set_help_flag();
+    app.allow_extras();
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    auto check = [](std::function<void(const std::string&)> test) {
+        return CLI::Validator(
+            [test](std::string& value) {
+                test(value);
+                return std::string();
+            },
+            "");
+    };
+    auto number = [&](const char* flag, uint32_t min, uint32_t max) {
+        return check([=](const std::string& text) { parseNumber(flag, text, min, max); });
+    };
+    auto nonEmpty = [&](const std::string& message) {
+        return check([=](const std::string& text) {
+            if (text.empty()) throw InputError(message);
+        });
+    };
+    app.add_flag("--headless", options.headless);
+    app.add_option("--width", options.width)->check(number("--width", 1, kMaxWindowDimension));
+    app.add_option("--height", options.height)->check(number("--height", 1, kMaxWindowDimension));
+    app.add_option("--frames", options.frames)->check(number("--frames", 1, 10'000'000));
+    app.add_option("--frames-in-flight", options.framesInFlight)->check(number("--frames-in-flight", 1, 3));
+    app.add_flag("--benchmark", options.benchmark);
+    app.add_option("--warmup", options.warmup)->check(number("--warmup", 0, 100000));
+    std::string json, screenshot, resize, scene, model, bookScene, view;
+    app.add_option("--json", json)->check(check([](const std::string& file) {
+        if (file.empty()) throw InputError("--json needs a file name");
+        checkOutputPath(file, "benchmark report");
+    }));
+    app.add_option("--screenshot", screenshot)->check(check([](const std::string& file) {
+        checkScreenshotPath(file);
+    }));
+    app.add_option("--device", options.device)->check(nonEmpty("--device needs a non-empty name"));
+    app.add_flag("--validation", options.validation);
+    app.add_option("--resize", resize)->check(check([](const std::string& text) {
+        parseExtent("--resize", text);
+    }));
+    // The scene chapters' options; a chapter without a scene refuses them by name (below).
+    app.add_option("--scene", scene)->check(nonEmpty("--scene needs a file name"));
+    app.add_option("--model", model)->check(nonEmpty("--model needs a file name"));
+    app.add_option("--book-scene", bookScene)->check(nonEmpty("--book-scene needs a path"));
+    app.add_option("--view", view)->check(check([&](const std::string& name) {
+        if (std::find(chapter.views.begin(), chapter.views.end(), name) == chapter.views.end())
+            throw InputError("--view must be one of " + joined(chapter.views) + ", got '" + name + "'");
+    }));
+    // The chapter's own: fixed choices, free values, switches.
+    std::map<std::string, std::string> given;
+    for (const Choice& choice : chapter.choices) {
+        std::string flag = "--" + choice.name;
+        app.add_option(flag, given[choice.name])->check(check([flag, &choice](const std::string& value) {
+            if (choice.values.empty()) {
+                if (value.empty()) throw InputError(flag + " needs a non-empty value");
+            } else if (std::find(choice.values.begin(), choice.values.end(), value) == choice.values.end()) {
+                throw InputError(flag + " must be one of " + joined(choice.values) + ", got '" + value + "'");
             }
-            if (!found)
-                throw InputError("--view must be one of " + names + ", got '" + std::string(name) + "'");
-        } else if (const Choice* choice = findChoice(chapter, arg)) {
-            std::string_view given = value();
-            if (choice->values.empty()) {
-                if (given.empty()) throw InputError(std::string(arg) + " needs a non-empty value");
-                options.values[choice->name] = given;
-                continue;
-            }
-            std::string names;
-            bool found = false;
-            for (uint32_t v = 0; v < choice->values.size(); ++v) {
-                names += (v ? "|" : "") + choice->values[v];
-                if (choice->values[v] == given) options.choices[choice->name] = v, found = true;
-            }
-            if (!found)
-                throw InputError(std::string(arg) + " must be one of " + names + ", got '" +
-                                 std::string(given) + "'");
-        } else if (arg.starts_with("--") && isSwitch(chapter, arg.substr(2))) {
-            options.switches.insert(std::string(arg.substr(2)));
-        } else if (arg == "--help" || arg == "-h") {
-            options.help = true;
-        } else if (arg.starts_with("-")) {
-            throw InputError("unknown option '" + std::string(arg) + "' (see --help)");
-        } else {
-            throw InputError("unexpected argument '" + std::string(arg) + "' (see --help)");
-        }
+        }));
     }
+    for (const auto& [name, help] : chapter.switches) app.add_flag("--" + name);
+    app.add_flag("-h,--help", options.help);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ArgumentMismatch& error) {
+        // An option at the end, or followed by another option, without its value.
+        std::string what = error.what();
+        throw InputError(what.substr(0, what.find(':')) + " needs a value");
+    } catch (const CLI::ParseError& error) {
+        throw InputError(error.what());
+    }
+    for (const std::string& extra : app.remaining()) {
+        if (extra.starts_with("-")) throw InputError("unknown option '" + extra + "' (see --help)");
+        throw InputError("unexpected argument '" + extra + "' (see --help)");
+    }
+
+    for (const char* flag : {"--scene", "--model", "--book-scene", "--view"})
+        if (chapter.views.empty() && app.count(flag))
+            throw InputError(std::string(chapter.name) + " draws no scene and takes no " + flag);
+    options.json = json;
+    options.screenshot = screenshot;
+    if (app.count("--resize")) options.resizeTo = parseExtent("--resize", resize);
+    options.scene = scene;
+    options.model = model;
+    options.bookScene = bookScene;
+    if (app.count("--view"))
+        options.view =
+            uint32_t(std::find(chapter.views.begin(), chapter.views.end(), view) - chapter.views.begin());
+    for (const Choice& choice : chapter.choices) {
+        if (!app.count("--" + choice.name)) continue;
+        const std::string& value = given[choice.name];
+        if (choice.values.empty())
+            options.values[choice.name] = value;
+        else
+            options.choices[choice.name] = uint32_t(
+                std::find(choice.values.begin(), choice.values.end(), value) - choice.values.begin());
+    }
+    for (const auto& [name, help] : chapter.switches)
+        if (app.count("--" + name)) options.switches.insert(name);
+
     if (!options.json.empty() && !options.benchmark) throw InputError("--json goes with --benchmark");
-    if (warmupGiven && !options.benchmark) throw InputError("--warmup goes with --benchmark");
+    if (app.count("--warmup") && !options.benchmark) throw InputError("--warmup goes with --benchmark");
     if (int(!options.scene.empty()) + int(!options.model.empty()) + int(!options.bookScene.empty()) > 1)
         throw InputError("--scene, --model and --book-scene exclude each other");
-    if (options.resizeTo && (!framesGiven || options.frames < 2))
+    if (options.resizeTo && (!app.count("--frames") || options.frames < 2))
         throw InputError("--resize needs --frames 2 or more (it happens after half of them)");
     return options;
 }

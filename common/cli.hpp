@@ -66,7 +66,8 @@ struct ChapterInfo {
     std::vector<Choice> choices = {};
 };
 
-// Parses argv; throws InputError with a one-line message on any bad argument.
+// Parses argv with CLI11, each option bound to its field and each value checked as it is given;
+// throws InputError with a one-line message naming the first bad argument.
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter);
 
 // How many frames this run renders: --frames, or the default for the mode (0 = until closed).

@@ -23,7 +23,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers           # Vulkan loader + headers, lavapipe (CPU device)
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
     libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libgtest-dev
-    libimgui-dev
+    libimgui-dev libcli11-dev
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
     clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/fuzz/), symbolized reports
 )

@@ -23,7 +23,7 @@ packages=(g++-mingw-w64-x86-64-posix mingw-w64-tools wine64 wine libwine dpkg-de
 # Source package -> the name FetchContent knows it by (cmake/Dependencies.cmake).
 declare -A source_packages=([glfw3]=glfw3 [glm]=glm [nlohmann-json3]=nlohmann_json
                             [tinyobjloader]=tinyobjloader [libstb]=stb [imgui]=imgui
-                            [tinygltf]=tinygltf)
+                            [tinygltf]=tinygltf [cli11]=cli11)
 
 install_packages() {
     local missing=()

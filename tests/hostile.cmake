@@ -190,6 +190,7 @@ hostile_test(cli-frames-in-flight-1 15 0 "chapter-15:" --frames-in-flight 1 --fr
 hostile_test(cli-frames-in-flight-3 15 0 "chapter-15:" --frames-in-flight 3 --frames 4)
 hostile_test(cli-resize-1x1 15 0 "chapter-15:" --frames 2 --resize 1x1)
 hostile_test(cli-warmup-0 15 0 "GPU frame" --benchmark --warmup 0 --frames 1)
+hostile_test(cli-equals-form 15 0 "chapter-15: 19 draws" --width=32 --height=18 --view=albedo)
 # Repeated options: the last one wins (bench/run.sh relies on it); the image is 32x18.
 chapter_test(hostile.cli-repeated COMMAND ${CH15} ${HOSTILE_RUN} --width 9999 --width 32 --height 18
              --screenshot ${TEST_OUT}/hostile-repeated.png QUIET_STDERR)
