@@ -13,7 +13,7 @@ layout(set = 0, binding = 0) uniform sampler2D albedoAttachment;
 layout(set = 0, binding = 1) uniform sampler2D depthAttachment;
 
 layout(push_constant) uniform LightingView {
-    int view;  // 0 final, 1 albedo, 2 depth (the order of kViews in main.cpp)
+    int view;  // 0 final, 1 albedo, 2 depth (the order of kChapter.views in main.cpp)
     float near;
     float far;
 } show;

@@ -3,8 +3,9 @@
 // into the G-buffer; beyond the book, forward.frag (--shading forward) lights it on the spot.
 
 //> scene-surface
-// Two pipelines from this shader: opaque materials compile the alpha test away, so the depth test
-// can run before the shader; only cut-out materials (alpha below 1 somewhere) pay for discard.
+// Two kinds of pipeline from this shader (each with and without back-face culling): opaque
+// materials compile the alpha test away, so the depth test can run before the shader; only
+// cut-out materials (alpha below 1 somewhere) pay for discard.
 layout(constant_id = 0) const bool ALPHA_TEST = true;
 
 layout(location = 0) in vec3 inWorldPosition;
