@@ -47,12 +47,19 @@ PipelineCacheFile readPipelineCacheFile(const Device& device, std::string_view n
 
     std::error_code ec;
     if (!file.path.empty() && std::filesystem::exists(file.path, ec)) {
+        // On Windows another run of the same chapter may be replacing the file this moment (the
+        // rename in savePipelineCache), and the file cannot be opened meanwhile. That lasts
+        // milliseconds: a failed read is tried again a few times, as the rename is.
         std::string why;
-        try {
-            file.data = readFile(file.path);
-            why = cacheMismatch(device, file.data);
-        } catch (const Failure& error) {
-            why = error.what();
+        for (int attempt = 0; attempt < 20; ++attempt) {
+            try {
+                file.data = readFile(file.path);
+                why = cacheMismatch(device, file.data);
+                break;
+            } catch (const Failure& error) {
+                why = error.what();
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            }
         }
         if (!why.empty()) {
             warn("ignoring pipeline cache '" + utf8(file.path) + "': " + why);
