@@ -26,26 +26,11 @@ namespace {
 std::filesystem::path gDirectory;  // this process's own, under $TMPDIR or /dev/shm
 bool gVerbose = false;             // VKBOOK_FUZZ_VERBOSE=1: say what became of each input
 
-void removeDirectory() {
-    std::error_code ec;
-    std::filesystem::remove_all(gDirectory, ec);
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    const char* tmpdir = std::getenv("TMPDIR");
-    std::filesystem::path base = tmpdir && *tmpdir               ? tmpdir
-                                 : access("/dev/shm", W_OK) == 0 ? "/dev/shm"
-                                                                 : "/tmp";
-    std::string pattern = (base / "vkbook-fuzz-gltf-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) {
-        std::perror("fuzz_gltf: mkdtemp");
-        std::abort();
-    }
-    gDirectory = pattern;
+    gDirectory = fuzz::makeScratchDirectory("fuzz-gltf");
     gVerbose = std::getenv("VKBOOK_FUZZ_VERBOSE") != nullptr;
-    std::atexit(removeDirectory);
     return 0;
 }
 

@@ -30,11 +30,6 @@ constexpr std::string_view kSeparator = "\n#mtl\n";
 std::filesystem::path gDirectory;  // this process's own, under $TMPDIR or /dev/shm
 bool gVerbose = false;             // VKBOOK_FUZZ_VERBOSE=1: say what became of each input
 
-void removeDirectory() {
-    std::error_code ec;
-    std::filesystem::remove_all(gDirectory, ec);
-}
-
 void writeFile(const std::filesystem::path& path, std::string_view text) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(text.data(), std::streamsize(text.size()));
@@ -69,20 +64,8 @@ std::string mtlName(std::string_view obj) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    // $TMPDIR when set (tests/fuzz/run.sh points it at a directory it removes, since a crashing
-    // process leaves its directory behind), else /dev/shm, which is memory.
-    const char* tmpdir = std::getenv("TMPDIR");
-    std::filesystem::path base = tmpdir && *tmpdir               ? tmpdir
-                                 : access("/dev/shm", W_OK) == 0 ? "/dev/shm"
-                                                                 : "/tmp";
-    std::string pattern = (base / "vkbook-fuzz-obj-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) {
-        std::perror("fuzz_obj: mkdtemp");
-        std::abort();
-    }
-    gDirectory = pattern;
+    gDirectory = fuzz::makeScratchDirectory("fuzz-obj");
     gVerbose = std::getenv("VKBOOK_FUZZ_VERBOSE") != nullptr;
-    std::atexit(removeDirectory);
     return 0;
 }
 

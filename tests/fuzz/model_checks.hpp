@@ -2,15 +2,42 @@
 // the loaders' fuzz targets (fuzz_obj, fuzz_gltf): a broken promise aborts the run.
 #pragma once
 
+#include <stdlib.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 
 #include <glm/glm.hpp>
 
 #include "common/model.hpp"
 
 namespace fuzz {
+
+// A scratch directory of this process's own for the files a target writes, removed at exit:
+// under $TMPDIR when set (tests/fuzz/run.sh points it at a directory it removes, since a crashing
+// process leaves its directory behind), else /dev/shm, which is memory.
+inline std::filesystem::path gScratch;
+inline std::filesystem::path makeScratchDirectory(const char* target) {
+    const char* tmpdir = std::getenv("TMPDIR");
+    std::filesystem::path base = tmpdir && *tmpdir               ? tmpdir
+                                 : access("/dev/shm", W_OK) == 0 ? "/dev/shm"
+                                                                 : "/tmp";
+    std::string pattern = (base / (std::string("vkbook-") + target + "-XXXXXX")).string();
+    if (!mkdtemp(pattern.data())) {
+        std::perror("mkdtemp");
+        std::abort();
+    }
+    gScratch = pattern;
+    std::atexit([] {
+        std::error_code ec;
+        std::filesystem::remove_all(gScratch, ec);
+    });
+    return gScratch;
+}
 
 [[noreturn]] inline void broken(const char* what) {
     std::fprintf(stderr, "fuzz: the model breaks a promise of ModelData: %s\n", what);
