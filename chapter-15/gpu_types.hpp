@@ -15,24 +15,22 @@ struct ShaderLight {
     uint32_t directional;
     float intensity;
     glm::vec3 color;
-    float range;  // beyond the book: a point light's reach (0: unbounded, the book's falloff)
+    float range;  // a point light's reach, from the scene (0: unbounded, the book's falloff)
 };
 static_assert(sizeof(ShaderLight) == 36);
 static_assert(offsetof(ShaderLight, directional) == 12 && offsetof(ShaderLight, intensity) == 16 &&
               offsetof(ShaderLight, color) == 20 && offsetof(ShaderLight, range) == 32);
 
-// SceneInfo in a scalar-layout uniform buffer: 36 bytes.
+// SceneInfo in a scalar-layout uniform buffer: 32 bytes.
 struct ShaderSceneInfo {
     glm::vec3 cameraPosition;
     float ambientIntensity;
     glm::vec3 ambientColor;
     uint32_t lightCount;
-    uint32_t unboundedLightCount;  // beyond the book (tiled culling): the first lights, shaded everywhere
 };
-static_assert(sizeof(ShaderSceneInfo) == 36);
+static_assert(sizeof(ShaderSceneInfo) == 32);
 static_assert(offsetof(ShaderSceneInfo, ambientIntensity) == 12 &&
-              offsetof(ShaderSceneInfo, ambientColor) == 16 && offsetof(ShaderSceneInfo, lightCount) == 28 &&
-              offsetof(ShaderSceneInfo, unboundedLightCount) == 32);
+              offsetof(ShaderSceneInfo, ambientColor) == 16 && offsetof(ShaderSceneInfo, lightCount) == 28);
 
 // Material in a std430 storage buffer: 48 bytes.
 inline constexpr uint32_t kMaterialNormalMap = 1u;      // MATERIAL_NORMAL_MAP
@@ -66,7 +64,7 @@ static_assert(sizeof(DrawConstants) == 112 && offsetof(DrawConstants, normalMatr
 
 // The light pass's push constants: 112 bytes.
 struct LightView {
-    glm::mat4 clipToCameraRelative{1.0f};  // to reconstruct positions from depth (compact layout)
+    glm::mat4 clipToCameraRelative{1.0f};  // positions from depth, for a layout that stores none
     glm::vec4 boundsMin{0.0f};             // the scene's bounds, to show world positions as colours
     glm::vec4 boundsMax{1.0f};
     int view = 0;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
@@ -76,23 +74,5 @@ struct LightView {
 };
 static_assert(sizeof(LightView) == 112 && offsetof(LightView, boundsMin) == 64 &&
               offsetof(LightView, view) == 96 && offsetof(LightView, reversedZ) == 108);
-
-// Beyond the book, --light-culling tiled (beyond/light_culling.cpp): the culling passes' view of
-// the frame, a scalar-layout uniform buffer per frame in flight. 100 bytes.
-inline constexpr uint32_t kLightTileSize = 8;           // LIGHT_TILE_SIZE
-inline constexpr uint32_t kTileOverflow = 0xffffffffu;  // TILE_OVERFLOW
-struct CullView {
-    glm::mat4 viewRotation;     // camera-relative world space to view space
-    glm::vec2 projectionScale;  // the projection's [0][0] and [1][1]
-    float near;                 // the near plane
-    float margin;               // how far a stored surface position may lie from its pixel's ray
-    glm::uvec2 tileCount;       // tiles across and down
-    glm::uvec2 extent;          // the G-buffer's size in pixels
-    uint32_t capacity;          // light indices the tile lists can hold
-};
-static_assert(sizeof(CullView) == 100 && offsetof(CullView, projectionScale) == 64 &&
-              offsetof(CullView, near) == 72 && offsetof(CullView, margin) == 76 &&
-              offsetof(CullView, tileCount) == 80 && offsetof(CullView, extent) == 88 &&
-              offsetof(CullView, capacity) == 96);
 
 // CameraUniform, shared with chapter-14, is common::CameraUniform (common/camera.hpp).

@@ -2,21 +2,21 @@
 #include "light_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
-#include "beyond/compute_light_pass.hpp"
 #include "common/barriers.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
+#include "common/screenshot.hpp"
 #include "common/texture.hpp"
 
 namespace {
 
-common::Image createOutput(const common::Device& device, VkExtent2D extent, LightPassKind kind) {
-    // TRANSFER_SRC: --check-output and --dump copy it back to the CPU.
-    VkImageUsageFlags written =
-        kind == LightPassKind::Compute ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+common::Image createOutput(const common::Device& device, VkExtent2D extent, VkImageUsageFlags written) {
+    // Sampled by the post pass; TRANSFER_SRC: --check-output copies it back to the CPU.
     return common::createImage(device, extent, kLightOutputFormat,
                                written | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                VK_IMAGE_ASPECT_COLOR_BIT);
@@ -25,7 +25,7 @@ common::Image createOutput(const common::Device& device, VkExtent2D extent, Ligh
 //> attachments-set
 // One binding per colour attachment in attachment order (position, albedo, normal, pbr), then
 // depth: the book's light pass samples the four colour attachments; we also read depth (--view
-// depth, and the compact layout reconstructs position from it).
+// depth). A layout with fewer colour attachments has fewer bindings.
 void writeAttachments(const common::Device& device, LightPass& pass, const common::GBuffer& gbuffer) {
     uint32_t binding = 0;
     for (const common::Image* color : common::colorAttachments(gbuffer))
@@ -39,16 +39,12 @@ void writeAttachments(const common::Device& device, LightPass& pass, const commo
 }  // namespace
 
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, const GBufferLayout& layout, LightPassKind kind,
-                          uint32_t framesInFlight, uint32_t lightCapacity, VkDescriptorSetLayout tileLists) {
+                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity,
+                          const LightPassSetup& setup) {
     LightPass pass;
-    pass.kind = kind;
-    pass.tileLists = tileLists;
-    pass.output = createOutput(device, extent, kind);
-    // Beyond the book: with tile lists, the culling passes (compute) read these sets too.
-    VkShaderStageFlags stage = kind == LightPassKind::Compute || tileLists ? VK_SHADER_STAGE_COMPUTE_BIT
-                                                                           : VK_SHADER_STAGE_FRAGMENT_BIT;
-    if (kind == LightPassKind::Fragment) stage |= VK_SHADER_STAGE_FRAGMENT_BIT;
+    pass.outputUsage = setup.outputUsage;
+    pass.output = createOutput(device, extent, setup.outputUsage);
+    VkShaderStageFlags stage = setup.stages;
     std::vector<VkDescriptorSetLayoutBinding> attachmentBindings;
     size_t colorCount = common::colorAttachments(gbuffer).size();
     for (uint32_t i = 0; i <= colorCount; ++i)  // the colour attachments, then depth
@@ -66,8 +62,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         device, 2 + 2 * framesInFlight,
         {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(attachmentBindings.size())},
          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
-         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}});  // the compute form's output
+         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // One texel per pixel: nearest filtering, which depth formats always support.
     pass.sampler =
@@ -97,26 +92,19 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     }
     //< light-buffers
 
-    if (kind == LightPassKind::Compute) {
-        createComputeLightPipeline(device, cache, pass, layout);
-        return pass;
-    }
+    if (setup.fragmentShader.empty()) return pass;
     std::vector<VkDescriptorSetLayout> sets{pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout};
-    if (tileLists) sets.push_back(tileLists);  // set 3: the tile lists (beyond/light_culling.cpp)
-    pass.pipeline = common::createFullscreenPipeline(
-        device, cache,
-        (std::string("chapter-15/light") + layout.shaderSuffix + (tileLists ? "-tiled" : "") + ".frag")
-            .c_str(),
-        kLightOutputFormat, sets, sizeof(LightView));
+    sets.insert(sets.end(), setup.moreSets.begin(), setup.moreSets.end());
+    pass.pipeline = common::createFullscreenPipeline(device, cache, setup.fragmentShader.c_str(),
+                                                     kLightOutputFormat, sets, sizeof(LightView));
     return pass;
 }
 
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer) {
     common::destroyImage(device, pass.output);
-    pass.output = createOutput(device, extent, pass.kind);
+    pass.output = createOutput(device, extent, pass.outputUsage);
     writeAttachments(device, pass, gbuffer);
-    if (pass.kind == LightPassKind::Compute) writeComputeOutput(device, pass);
 }
 
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
@@ -132,11 +120,7 @@ void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight
 
 //> record-light
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
-                     VkDescriptorSet tileLists) {
-    if (pass.kind == LightPassKind::Compute) {
-        recordComputeLightPass(cmd, pass, frame, view, tileLists);
-        return;
-    }
+                     std::span<const VkDescriptorSet> moreSets) {
     // The output to ATTACHMENT_OPTIMAL once the previous frame's post pass has sampled it, the
     // full-screen triangle into it (rendering begun as chapter-14's light pass does), and to
     // READ_ONLY_OPTIMAL for this frame's post pass.
@@ -148,10 +132,11 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
 
     common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
-    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet,
-                              tileLists};  // set 3: beyond the book, --light-culling tiled only
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0,
-                            pass.tileLists ? 4 : 3, sets, 0, nullptr);
+    VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0, nullptr);
+    if (!moreSets.empty())
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 3,
+                                uint32_t(moreSets.size()), moreSets.data(), 0, nullptr);
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
@@ -165,9 +150,30 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
 }
 //< record-light
 
+//> check-output
+// --check-output: every value of the light output must be a finite, non-negative number.
+void checkLightOutput(const common::Device& device, const LightPass& pass) {
+    std::vector<float> values = common::readFloatImage(device, pass.output.handle, kLightOutputFormat,
+                                                       pass.output.extent, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    size_t nan = 0, infinite = 0, negative = 0;
+    float largest = 0.0f;
+    for (size_t i = 0; i < values.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) {
+            float v = values[i + c];
+            nan += std::isnan(v);
+            infinite += std::isinf(v);
+            negative += v < 0.0f;
+            if (std::isfinite(v)) largest = std::max(largest, v);
+        }
+    std::printf("light output %ux%u: %zu NaN, %zu infinite, %zu negative; largest value %g\n",
+                pass.output.extent.width, pass.output.extent.height, nan, infinite, negative, largest);
+    if (nan + infinite + negative != 0)
+        throw common::Failure("the light output has NaN, infinite or negative values");
+}
+//< check-output
+
 void destroyLightPass(const common::Device& device, LightPass& pass) {
     common::destroyFullscreenPipeline(device, pass.pipeline);
-    destroyComputeLightPipeline(device, pass);
     vkDestroySampler(device.handle, pass.sampler, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     for (LightFrame& frame : pass.frames) {

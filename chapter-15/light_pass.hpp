@@ -1,11 +1,12 @@
 // chapter-15: the light pass -- Cook-Torrance lighting of the G-buffer by the scene's lights into
 // an R32G32B32A32_SFLOAT image; the post pass (common/post_pass.cpp) presents it. The book's
-// LightRender (chapter 15): a full-screen triangle. Beyond the book, --light-pass compute runs
-// the same shading as a compute dispatch (beyond/compute_light_pass.cpp).
+// LightRender (chapter 15): a full-screen triangle.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,13 +16,9 @@
 #include "common/fullscreen.hpp"
 #include "common/gbuffer.hpp"
 #include "common/image.hpp"
-#include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-
-// How the light pass runs: the book's full-screen triangle, or a compute dispatch.
-enum class LightPassKind { Fragment, Compute };
 
 // What the light pass owns per frame in flight: this frame's lights and scene info, host-visible
 // (the keys move the lights, the camera moves), and the descriptor sets that bind them.
@@ -32,8 +29,18 @@ struct LightFrame {
     VkDescriptorSet sceneSet = VK_NULL_HANDLE;
 };
 
+// How a light pass is made. The defaults are the book's: light.frag's full-screen triangle, the
+// only stage that reads the pass's sets, drawing into the output as a colour attachment.
+struct LightPassSetup {
+    std::string fragmentShader = "chapter-15/light.frag";  // under <build>/bin/shaders/; "": no pipeline
+    VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT;             // what reads sets 0-2
+    VkImageUsageFlags outputUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;  // how the output is written
+    std::vector<VkDescriptorSetLayout> moreSets;                          // the pipeline's sets 3..
+};
+
 struct LightPass {
     common::Image output;
+    VkImageUsageFlags outputUsage = 0;
     VkDescriptorSetLayout attachmentsLayout = VK_NULL_HANDLE;  // set 0: the G-buffer
     VkDescriptorSetLayout lightsLayout = VK_NULL_HANDLE;       // set 1: lights, per frame
     VkDescriptorSetLayout sceneLayout = VK_NULL_HANDLE;        // set 2: scene info, per frame
@@ -42,29 +49,22 @@ struct LightPass {
     std::vector<LightFrame> frames;
     uint32_t lightCapacity = 0;
     VkSampler sampler = VK_NULL_HANDLE;
-    LightPassKind kind = LightPassKind::Fragment;
-    common::FullscreenPipeline pipeline;  // Fragment
-    // Compute (beyond/compute_light_pass.cpp): the output as a storage image (set 3), the pipeline.
-    VkDescriptorSetLayout outputLayout = VK_NULL_HANDLE;
-    VkDescriptorSet outputSet = VK_NULL_HANDLE;
-    VkPipelineLayout computeLayout = VK_NULL_HANDLE;
-    VkPipeline computePipeline = VK_NULL_HANDLE;
-    // --light-culling tiled (beyond/light_culling.cpp): the tile lists' set layout, else null.
-    VkDescriptorSetLayout tileLists = VK_NULL_HANDLE;
+    common::FullscreenPipeline pipeline;
 };
 
-// `lightCapacity`: the scene's number of lights (the buffers are sized from it). `tileLists`:
-// beyond the book, the tile lists' set layout for --light-culling tiled, else VK_NULL_HANDLE.
+// `lightCapacity`: the scene's number of lights (the buffers are sized from it).
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GBuffer& gbuffer, const GBufferLayout& layout, LightPassKind kind,
-                          uint32_t framesInFlight, uint32_t lightCapacity,
-                          VkDescriptorSetLayout tileLists = VK_NULL_HANDLE);
+                          const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity,
+                          const LightPassSetup& setup = {});
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
 // Writes this frame's lights and scene info (lights.size() <= lightCapacity).
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
                   const ShaderSceneInfo& scene);
-// `tileLists`: this frame's tile lists (--light-culling tiled), else VK_NULL_HANDLE.
+// `moreSets`: the sets from 3 on, when the setup's pipeline has them.
 void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame, const LightView& view,
-                     VkDescriptorSet tileLists = VK_NULL_HANDLE);
+                     std::span<const VkDescriptorSet> moreSets = {});
+// Reads the last frame's output back (after the device is idle) and fails the run (Failure) on a
+// NaN, infinite or negative value; prints what it found.
+void checkLightOutput(const common::Device& device, const LightPass& pass);
 void destroyLightPass(const common::Device& device, LightPass& pass);

@@ -8,10 +8,8 @@
 //     ambient light, into an R32G32B32A32_SFLOAT image;
 //   post pass (common/post_pass.cpp): into the presentation image, FXAA optional;
 //   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
-// What goes beyond the book -- the reference and compact G-buffer layouts with reversed-Z, the
-// light pass as a compute dispatch, --check-output and --dump, light ranges and tiled light
-// culling, forward shading to compare with -- is in beyond/, and enters this file only where an
-// option selects it.
+// run() at the end of this file is the chapter in four steps: set up, the frame loop, the report,
+// tear down.
 #include <vulkan/vulkan.h>
 
 #include <cmath>
@@ -20,10 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "beyond/forward_shading.hpp"
-#include "beyond/gbuffer_layouts.hpp"
-#include "beyond/light_culling.hpp"
-#include "beyond/output_dump.hpp"
 #include "common/benchmark.hpp"
 #include "common/camera.hpp"
 #include "common/check.hpp"
@@ -49,32 +43,11 @@ namespace {
 const common::ChapterInfo kChapter{
     "chapter-15",
     "deferred rendering II: PBR G-buffer, normal maps, lights (the book's chapter 15)",
-    {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of light.frag's `view`
+    {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of shade_pixel.glsl's `view`
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
      common::kGuiSwitch},
-    {{"gbuffer", gbufferLayoutNames(), gbufferLayoutHelp()},
-     {"light-pass",
-      {"fragment", "compute"},
-      "light pass: the book's full-screen triangle, or a compute dispatch (the same shading)"},
-     {"dump",
-      {},
-      "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"},
-     {"light-culling",
-      {"none", "tiled"},
-      "none: every pixel loops over every light (the book's); tiled: over the lights whose range reaches "
-      "its 8x8-pixel tile, listed by compute passes each frame"},
-     {"light-cutoff",
-      {},
-      "give each point light without a range the distance where its irradiance falls to this value "
-      "(a positive number)"},
-     {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"},
-     {"shading",
-      {"deferred", "forward"},
-      "deferred: the G-buffer, then the light pass (the book's); "
-      "forward: the scene pass shades each fragment with every light (no light pass, the G-buffer "
-      "not written), to compare"},
-     common::kGuiClickChoice},
+    {common::kGuiClickChoice},
 };
 
 //> light-controls
@@ -139,26 +112,15 @@ void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scen
 //< light-controls
 
 //> overlay
-// The overlay (--gui): the timings window with the view selector (common/gui.cpp), FXAA and,
-// beyond the book, the G-buffer layout and the light pass's form (switched at the next frame);
-// a second window with the book's light controls and the ambient light.
-struct RendererChoice {
-    int layout = 0;     // index into gbufferLayouts()
-    int lightPass = 0;  // LightPassKind
-};
-
+// The overlay (--gui): the timings window with the view selector (common/gui.cpp) and FXAA; a
+// second window with the book's light controls and the ambient light.
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
-                    RendererChoice& renderer, LightControls& controls, common::Scene& scene,
-                    common::GpuScene& gpuScene, bool deferred) {
-    common::guiTimingsWindow(gui, run, deferred ? kChapter.views : std::vector<std::string>{"final"}, view,
+                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene) {
+    common::guiTimingsWindow(gui, run, kChapter.views, view,
                              {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
                               "1/2, 3/4  move the point light up/down, along z"});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
-    if (deferred) {  // beyond the book, --shading forward has neither
-        common::guiCombo("G-buffer", gbufferLayoutNames(), &renderer.layout);
-        common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
-    }
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
@@ -193,212 +155,175 @@ std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
 }
 //< shader-lights
 
-void run(const common::Options& options) {
-    //> setup
-    common::ModelCache models;
-    common::Scene scene = common::sceneFromOptions(options, models);
-    // Beyond the book: light ranges from --light-cutoff, tiled culling, the camera turning.
-    LightOptions lightOptions = readLightOptions(options, scene);
-    bool forward = readShading(options) == Shading::Forward;  // beyond the book: --shading forward
-
-    common::Target target = common::openTarget(options, "chapter-15: deferred rendering II, PBR");
-    common::Instance instance =
-        common::createInstance("chapter-15", options.validation, common::targetInstanceExtensions(target));
-    common::createTargetSurface(target, instance);
-    // scalarBlockLayout: the feature this chapter needs -- the lights and the scene info are
-    // read with the C-like scalar layout (gpu_types.hpp). maintenance4: beyond the book, for the
-    // compute light pass (glslang declares its group size with LocalSizeId).
-    common::Device device = common::createDevice(instance, target.surface, options.device,
-                                                 {.dynamicRendering = true,
-                                                  .synchronization2 = true,
-                                                  .scalarBlockLayout = true,
-                                                  .maintenance4 = true});
-    common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
-
-    common::GpuScene gpuScene = common::loadGpuScene(
-        device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
-    models.clear();
-    std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
-                gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),
-                gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());
-
-    common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-15");
-    // The book's G-buffer, or (--gbuffer) one of the layouts beyond it: gbuffer_layout.hpp.
-    RendererChoice renderer{int(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0),
-                            int(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0)};
-    RendererChoice active = renderer;  // what the passes were made for
-    const GBufferLayout* layout = gbufferLayouts().at(size_t(renderer.layout));
-    ScenePass scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
-                                          options.framesInFlight, *layout);
-    LightPassKind lightKind = LightPassKind(renderer.lightPass);
-    LightCullingPass culling;  // beyond the book: --light-culling tiled
-    if (lightOptions.culling == LightCulling::Tiled)
-        culling = createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
-                                     *layout, gpuScene.boundsMin, gpuScene.boundsMax);
-    LightPass lightPass =
-        createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, *layout, lightKind,
-                        options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
-    if (culling.setLayout)
-        createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, *layout);
-    common::PostPass postPass =
-        common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
-    ForwardPass forwardPass;  // beyond the book: --shading forward
-    if (forward) forwardPass = createForwardPass(device, pipelineCache.handle, scenePass, lightPass);
-
-    common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
-    common::CameraInput cameraInput;
-    LightControls lightControls = findControlledLights(scene);
-    LightView lightView{.boundsMin = glm::vec4(gpuScene.boundsMin, 0.0f),
-                        .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
-                        .view = int(options.view),
-                        .reversedZ = layout->reversedZ ? 1 : 0};
-    bool fxaa = options.switches.count("fxaa") != 0;
-
-    // --gui: Dear ImGui's context and input (common/gui.cpp) and the pass that draws it.
-    common::Gui gui = common::createGui(options, target);
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
+// reverse), and what the frames change. Made in place, never moved: the window keeps a pointer
+// to its target.
+struct Chapter {
+    common::Scene scene;
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<common::FrameSync> frames;
+    common::GpuScene gpuScene;
+    common::PipelineCache pipelineCache;
+    ScenePass scenePass;
+    LightPass lightPass;
+    common::PostPass postPass;
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
     common::GuiPass guiPass;
-    if (gui.enabled)
-        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+    common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
+    // What the frames change.
+    common::Camera camera;
+    common::CameraInput cameraInput;
+    LightControls lightControls;
+    LightView lightView;
+    bool fxaa = false;
+};
+//< chapter-state
 
-    // --frames, --resize, --benchmark (each pass timed), --screenshot.
-    bool tiled = lightOptions.culling == LightCulling::Tiled;
+//> setup
+void setUp(Chapter& c, const common::Options& options) {
+    common::ModelCache models;
+    c.scene = common::sceneFromOptions(options, models);
+
+    c.target = common::openTarget(options, "chapter-15: deferred rendering II, PBR");
+    c.instance =
+        common::createInstance("chapter-15", options.validation, common::targetInstanceExtensions(c.target));
+    common::createTargetSurface(c.target, c.instance);
+    // scalarBlockLayout: the feature this chapter adds -- the lights and the scene info are read
+    // with the C-like scalar layout (gpu_types.hpp).
+    c.device = common::createDevice(
+        c.instance, c.target.surface, options.device,
+        {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+    common::createTargetImages(c.target, c.device);
+    c.frames = common::createFrameSync(c.device, options.framesInFlight);
+
+    c.gpuScene = common::loadGpuScene(c.device, c.scene, models,
+                                      {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
+    std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
+                c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),
+                c.gpuScene.textures.size(), c.gpuScene.materials.size(), c.scene.lights.size());
+
+    c.pipelineCache = common::loadPipelineCache(c.device, "chapter-15");
+    c.scenePass = createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                  options.framesInFlight);
+    c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
+                                  options.framesInFlight, uint32_t(c.scene.lights.size()));
+    c.postPass = common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
+    c.gui = common::createGui(options, c.target);
+    if (c.gui.enabled)
+        c.guiPass = common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format,
+                                          options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
-    if (tiled) passes.insert(passes.begin() + 1, "cull");
-    if (forward) passes = {"forward", "post"};
-    if (gui.enabled) passes.push_back("gui");
-    common::RunControl run = common::createRunControl(options, device, passes);
-    //< setup
+    if (c.gui.enabled) passes.push_back("gui");
+    c.run = common::createRunControl(options, c.device, passes);
 
-    auto recreateTarget = [&] {
-        if (!common::recreateTargetImages(target, device)) return false;
-        resizeScenePass(device, scenePass, target.extent);
-        resizeLightPass(device, lightPass, target.extent, scenePass.gbuffer);
-        if (tiled) resizeLightCulling(device, culling, target.extent);
-        common::resizePostPass(device, postPass, lightPass.output);
-        return true;
-    };
+    c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
+    c.lightControls = findControlledLights(c.scene);
+    c.lightView = {.boundsMin = glm::vec4(c.gpuScene.boundsMin, 0.0f),
+                   .boundsMax = glm::vec4(c.gpuScene.boundsMax, 0.0f),
+                   .view = int(options.view),
+                   .near = c.scene.camera.near,
+                   .far = c.scene.camera.far};
+    c.fxaa = options.switches.count("fxaa") != 0;
+}
+//< setup
 
-    //> switch-renderer
-    // Beyond the book, from the overlay: another G-buffer layout or light-pass form, live. Every
-    // pass that depends on them is made again (the G-buffer with the scene pass); the scene, the
-    // window and the run go on.
-    auto switchRenderer = [&] {
-        VK_CHECK(vkDeviceWaitIdle(device.handle));
-        common::destroyPostPass(device, postPass);
-        destroyLightPass(device, lightPass);
-        if (tiled) destroyLightCulling(device, culling);
-        destroyScenePass(device, scenePass);
-        active = renderer;
-        layout = gbufferLayouts().at(size_t(renderer.layout));
-        lightKind = LightPassKind(renderer.lightPass);
-        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
-                                    options.framesInFlight, *layout);
-        if (tiled)
-            culling =
-                createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
-                                   *layout, gpuScene.boundsMin, gpuScene.boundsMax);
-        lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer, *layout,
-                                    lightKind, options.framesInFlight, uint32_t(scene.lights.size()),
-                                    culling.setLayout);
-        if (tiled) createLightCullingPipelines(device, pipelineCache.handle, culling, lightPass, *layout);
-        postPass = common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
-        lightView.reversedZ = layout->reversedZ ? 1 : 0;
-        std::printf("chapter-15: switched to the %s G-buffer, %s light pass\n", layout->name,
-                    lightKind == LightPassKind::Compute ? "compute" : "fragment");
-    };
-    //< switch-renderer
+//> resize
+// The window changed size: the swapchain, then every image of the window's size.
+bool recreateTarget(Chapter& c) {
+    if (!common::recreateTargetImages(c.target, c.device)) return false;
+    resizeScenePass(c.device, c.scenePass, c.target.extent);
+    resizeLightPass(c.device, c.lightPass, c.target.extent, c.scenePass.gbuffer);
+    common::resizePostPass(c.device, c.postPass, c.lightPass.output);
+    return true;
+}
+//< resize
 
-    //> frame-loop
+// The keys (unless the overlay has them): the camera, the lights; V cycles the views, F toggles FXAA.
+void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common::KeyPress& fxaaKey) {
+    if (!c.target.window) return;
+    bool keys = !common::guiWantsKeyboard(c.gui), mouse = !common::guiWantsMouse(c.gui);
+    double now = glfwGetTime();
+    float seconds = float(now - lastTime);
+    lastTime = now;
+    float sceneSize = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin);
+    common::moveCamera(c.target.window, c.camera, c.cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
+    if (keys) moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
+    if (common::pressedOnce(c.target.window, viewKey) && keys)
+        c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
+    if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
+}
+
+//> update-frame
+// This frame's uniforms: the camera, the lights (they may have moved), the scene info.
+void updateFrame(Chapter& c, uint32_t slot) {
+    glm::mat4 view = common::viewMatrix(c.camera);
+    glm::mat4 projection =
+        common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near, c.scene.camera.far);
+    setCamera(c.scenePass, slot, projection, view);
+    updateLights(c.lightPass, slot, shaderLights(c.scene),
+                 {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
+}
+//< update-frame
+
+//> record-frame
+// The frame's passes into one command buffer, each timed for --benchmark.
+void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
+                 ImDrawData* overlay) {
+    VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
+    VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+    common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
+    recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 0);
+    recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 1);
+    common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 2);
+    if (c.gui.enabled) {
+        common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
+        common::timePassEnd(c.run, sync.commandBuffer, slot, 3);
+    }
+    VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+}
+//< record-frame
+
+//> frame-loop
+void frameLoop(Chapter& c, const common::Options& options) {
     double lastTime = glfwGetTime();
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
-    float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
     for (uint32_t frame = 0;;) {
-        bool lastFrame = common::beginFrame(run, target, frame);
+        bool lastFrame = common::beginFrame(c.run, c.target, frame);
         uint32_t slot = frame % options.framesInFlight;
-        common::FrameSync& sync = frames[slot];
-
-        ImDrawData* overlay = common::drawGui(gui, target, frame, [&] {
-            overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene,
-                           !forward);
+        common::FrameSync& sync = c.frames[slot];
+        ImDrawData* overlay = common::drawGui(c.gui, c.target, frame, [&] {
+            overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa, c.lightControls, c.scene, c.gpuScene);
         });
-        if (renderer.layout != active.layout || renderer.lightPass != active.lightPass) switchRenderer();
-        bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
-        if (target.window) {  // camera, lights; V cycles the views, F toggles FXAA (unless the GUI has them)
-            double now = glfwGetTime();
-            float seconds = float(now - lastTime);
-            lastTime = now;
-            common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
-            if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
-            if (common::pressedOnce(target.window, viewKey) && keys && !forward)  // forward: no views
-                lightView.view = (lightView.view + 1) % int(kChapter.views.size());
-            if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
-        }
-        camera.yaw += lightOptions.orbitDegrees;  // --orbit (beyond the book): 0 unless asked
+        handleInput(c, lastTime, viewKey, fxaaKey);
 
-        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        common::collectGpuTimes(run, device, slot);
+        // Wait until this slot's previous frame is done, then acquire the image to present.
+        VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
-        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget()) break;
+        if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget(c)) break;
             continue;
         }
-        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
-        if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
+        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
+        if (c.gui.enabled) common::updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
-        // This frame's uniforms: camera, lights (they may have moved), scene info.
-        glm::mat4 view = common::viewMatrix(camera);
-        Projection projection =
-            layout->reversedZ ? reversedZProjection(scene, camera, gpuScene, target.extent)
-                              : Projection{common::projectionMatrix(scene.camera.fov, target.extent,
-                                                                    scene.camera.near, scene.camera.far),
-                                           scene.camera.near, scene.camera.far};
-        setCamera(scenePass, slot, projection.matrix, view);
-        lightView.clipToCameraRelative = glm::inverse(projection.matrix * glm::mat4(glm::mat3(view)));
-        lightView.near = projection.near;
-        lightView.far = projection.far;
-        std::vector<ShaderLight> lights = shaderLights(scene);
-        uint32_t unbounded =
-            tiled ? putUnboundedFirst(lights) : 0u;  // beyond the book: tiled culling's order
-        updateLights(lightPass, slot, lights,
-                     {camera.position, scene.ambientIntensity, scene.ambientColor, 0u, unbounded});
-        if (tiled)
-            updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near);
+        updateFrame(c, slot);
+        recordFrame(c, sync, slot, frame, imageIndex, overlay);
 
-        VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
-        VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                           .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-        VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-        common::timeFrameStart(run, sync.commandBuffer, slot, frame);
-        uint32_t pass = 0;
-        if (forward) {  // beyond the book: --shading forward, the G-buffer not written
-            recordForwardPass(sync.commandBuffer, forwardPass, scenePass, lightPass, gpuScene, slot,
-                              camera.position);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        } else {
-            recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-            if (tiled) {  // beyond the book: this frame's tile lists, from this frame's G-buffer
-                recordLightCulling(sync.commandBuffer, culling, lightPass, slot, lightView);
-                common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-            }
-            recordLightPass(sync.commandBuffer, lightPass, slot, lightView,
-                            tiled ? culling.frames[slot].set : VK_NULL_HANDLE);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        }
-        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
-        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        if (gui.enabled) {
-            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        }
-        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
-
+        // One submit: wait for the acquired image before writing colour, signal when done.
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                                    .semaphore = sync.imageAvailable,
                                    .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
         VkSemaphoreSubmitInfo signal{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
-                                     .semaphore = target.renderFinished[imageIndex],
+                                     .semaphore = c.target.renderFinished[imageIndex],
                                      .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
         VkCommandBufferSubmitInfo commands{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
                                            .commandBuffer = sync.commandBuffer};
@@ -409,61 +334,70 @@ void run(const common::Options& options) {
                              .pCommandBufferInfos = &commands,
                              .signalSemaphoreInfoCount = 1,
                              .pSignalSemaphoreInfos = &signal};
-        VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(vkQueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
 
-        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
-        bool current = common::presentTargetImage(target, device, imageIndex);
-        common::endFrame(run, frame);
+        if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        common::endFrame(c.run, frame);
         if (lastFrame) break;
-        if (!current && !recreateTarget()) break;
+        if (!current && !recreateTarget(c)) break;
         ++frame;
     }
-    VK_CHECK(vkDeviceWaitIdle(device.handle));
-    //< frame-loop
-    if (camera.position != scene.camera.position || camera.yaw != scene.camera.yaw ||
-        camera.pitch != scene.camera.pitch)
-        std::printf("chapter-15: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
-                    camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
-    std::vector<std::pair<std::string, std::string>> info =
-        common::benchmarkInfo(kChapter, options, device, target);
-    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(layout->formats))});
-    common::reportRun(run, device, info);
-    if (gui.enabled)
-        std::printf("chapter-15: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
-                    guiPass.growths, guiPass.largestVertices, guiPass.largestIndices);
-
-    if (lightControls.moved) {
-        glm::vec3 p =
-            lightControls.point >= 0 ? scene.lights[size_t(lightControls.point)].position : glm::vec3(0.0f);
-        std::printf("chapter-15: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
-                    lightControls.sunAngle, p.x, p.y, p.z);
-    }
-    if (tiled) reportLightCulling(culling);
-    // Beyond the book: the output read back (beyond/output_dump.cpp).
-    if (options.switches.count("check-output")) checkLightOutput(device, lightPass);
-    if (options.values.count("dump"))
-        dumpFrame(device, lightPass, scenePass, lightView, options.values.at("dump"), !forward);
-
-    //> teardown
-    common::destroyRunControl(device, run);
-    if (gui.enabled) common::destroyGuiPass(device, guiPass);
-    common::destroyGui(gui);
-    common::savePipelineCache(device, pipelineCache);
-    common::destroyPostPass(device, postPass);
-    if (forward) destroyForwardPass(device, forwardPass);
-    destroyLightPass(device, lightPass);
-    if (tiled) destroyLightCulling(device, culling);
-    destroyScenePass(device, scenePass);
-    common::destroyPipelineCache(device, pipelineCache);
-    common::destroyGpuScene(device, gpuScene);
-    common::destroyFrameSync(device, frames);
-    common::destroyTargetImages(target, device);
-    common::destroyDevice(device);
-    common::destroyTargetSurface(target, instance);
-    common::destroyInstance(instance);
-    common::closeTarget(target);
-    //< teardown
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
 }
+//< frame-loop
+
+// After the last frame: where the camera and lights went, --benchmark's report, --check-output.
+void report(Chapter& c, const common::Options& options) {
+    const common::CameraDesc& start = c.scene.camera;
+    if (c.camera.position != start.position || c.camera.yaw != start.yaw || c.camera.pitch != start.pitch)
+        std::printf("chapter-15: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw, c.camera.pitch);
+    std::vector<std::pair<std::string, std::string>> info =
+        common::benchmarkInfo(kChapter, options, c.device, c.target);
+    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
+    common::reportRun(c.run, c.device, info);
+    if (c.gui.enabled)
+        std::printf("chapter-15: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);
+    if (c.lightControls.moved) {
+        glm::vec3 p = c.lightControls.point >= 0 ? c.scene.lights[size_t(c.lightControls.point)].position
+                                                 : glm::vec3(0.0f);
+        std::printf("chapter-15: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
+                    c.lightControls.sunAngle, p.x, p.y, p.z);
+    }
+    if (options.switches.count("check-output")) checkLightOutput(c.device, c.lightPass);
+}
+
+//> teardown
+void tearDown(Chapter& c) {
+    common::destroyRunControl(c.device, c.run);
+    if (c.gui.enabled) common::destroyGuiPass(c.device, c.guiPass);
+    common::destroyGui(c.gui);
+    common::savePipelineCache(c.device, c.pipelineCache);
+    common::destroyPostPass(c.device, c.postPass);
+    destroyLightPass(c.device, c.lightPass);
+    destroyScenePass(c.device, c.scenePass);
+    common::destroyPipelineCache(c.device, c.pipelineCache);
+    common::destroyGpuScene(c.device, c.gpuScene);
+    common::destroyFrameSync(c.device, c.frames);
+    common::destroyTargetImages(c.target, c.device);
+    common::destroyDevice(c.device);
+    common::destroyTargetSurface(c.target, c.instance);
+    common::destroyInstance(c.instance);
+    common::closeTarget(c.target);
+}
+//< teardown
+
+//> run
+void run(const common::Options& options) {
+    Chapter chapter;
+    setUp(chapter, options);
+    frameLoop(chapter, options);
+    report(chapter, options);
+    tearDown(chapter);
+}
+//< run
 
 }  // namespace
 

@@ -96,7 +96,7 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelines.layout));
 
     //> scene-pipeline
-    // Four colour attachments (three in the compact layout): as many formats and blend states.
+    // The G-buffer's four colour attachments: as many formats and blend states.
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
         .colorAttachmentCount = uint32_t(target.colorFormats.size()),
@@ -107,8 +107,8 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
                                                       common::kBitangent | common::kUv);
     //< scene-pipeline
-    VkShaderModule vertex = common::loadShaderModule(device, "chapter-15/scene.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, target.fragmentShader);
+    VkShaderModule vertex = common::loadShaderModule(device, target.shaders.vertex);
+    VkShaderModule fragment = common::loadShaderModule(device, target.shaders.fragment);
     for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
         for (bool doubleSided : {false, true}) {
             VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
@@ -157,7 +157,7 @@ void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelin
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
-                          const GBufferLayout& layout) {
+                          const GBufferLayout& layout, const SceneShaders& shaders) {
     ScenePass pass;
     pass.layout = &layout;
     for (VkFormat format : common::colorFormats(layout.formats)) {
@@ -171,13 +171,13 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
     }
     pass.gbuffer = common::createGBuffer(device, extent, layout.formats);
     createDescriptors(device, pass, scene, framesInFlight);
-    // The G-buffer's attachments, scene.frag (scene-compact.frag for the compact layout).
-    pass.pipelines = createScenePipelines(
-        device, cache, pass,
-        {.fragmentShader = std::string("chapter-15/scene") + layout.shaderSuffix + ".frag",
-         .colorFormats = common::colorFormats(layout.formats),
-         .depthFormat = layout.formats.depth,
-         .reversedZ = layout.reversedZ});
+    std::vector<VkFormat> colorFormats = common::colorFormats(layout.formats);
+    if (colorFormats.empty()) return pass;  // depth alone: its users draw with pipelines of their own
+    pass.pipelines = createScenePipelines(device, cache, pass,
+                                          {.shaders = shaders,
+                                           .colorFormats = colorFormats,
+                                           .depthFormat = layout.formats.depth,
+                                           .reversedZ = layout.reversedZ});
     return pass;
 }
 

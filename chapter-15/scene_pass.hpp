@@ -31,10 +31,16 @@ struct ScenePipelines {
     VkPipeline cutoutDoubleSided = VK_NULL_HANDLE;
 };
 
-// What a scene pipeline draws into, and with which fragment shader (a file under
-// <build>/bin/shaders/; it starts from scene_surface.glsl's sceneSurface()).
+// The compiled shaders of a scene pipeline, files under <build>/bin/shaders/: the book's by
+// default. A fragment shader starts from scene_surface.glsl's sceneSurface().
+struct SceneShaders {
+    std::string vertex = "chapter-15/scene.vert";
+    std::string fragment = "chapter-15/scene.frag";
+};
+
+// What a scene pipeline draws into, and with which shaders.
 struct ScenePipelineTarget {
-    std::string fragmentShader;
+    SceneShaders shaders;
     std::vector<VkFormat> colorFormats;
     VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
     bool reversedZ = false;
@@ -55,10 +61,11 @@ struct ScenePass {
     ScenePipelines pipelines;
 };
 
+// The G-buffer of `layout` and the pipelines that fill it (none for a layout of depth alone).
 // Throws Failure when the device cannot render to the layout's formats.
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
-                          const GBufferLayout& layout);
+                          const GBufferLayout& layout = kBookGBuffer, const SceneShaders& shaders = {});
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.
@@ -66,8 +73,8 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
                      uint32_t frame, glm::vec3 cameraPosition);
 void destroyScenePass(const common::Device& device, ScenePass& pass);
 
-// Beyond the book (beyond/forward_shading.cpp): the scene pass's pipelines for another target and
-// shader, and its draws recorded with them (sets 0 and 1, and any more, bound by the caller).
+// The scene pass's pipelines for a target and shaders (createScenePass makes the G-buffer's), and
+// the scene's draws recorded with them (sets 0 and 1, and any more, bound by the caller).
 ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCache cache,
                                     const ScenePass& pass, const ScenePipelineTarget& target);
 void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePipelines& pipelines,

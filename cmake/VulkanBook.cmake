@@ -69,7 +69,9 @@ endfunction()
 # <build>/bin/shaders/<chapter>/<src>.spv at build time. glslangValidator writes a depfile, so
 # editing a file under shaders/include/ rebuilds every shader that includes it. A GLSL error
 # fails the build with the compiler's message. A source written `name.frag:variant:DEFINE` is
-# compiled once more with -DDEFINE into name-variant.frag.spv (e.g. a G-buffer layout).
+# compiled once more with -DDEFINE into name-variant.frag.spv (e.g. a G-buffer layout). A source
+# with a directory, `chapter-15/scene.vert`, is another chapter's (shaders/chapter-15/scene.vert),
+# compiled into this chapter's directory under its own name.
 function(vkbook_shaders target chapter)
     set(outputs)
     foreach(spec IN LISTS ARGN)
@@ -88,6 +90,10 @@ function(vkbook_shaders target chapter)
             string(REGEX REPLACE "^([^.]+)\\." "\\1-${variant}." name "${src}")
         endif()
         set(in ${VKBOOK_ROOT}/shaders/${chapter}/${src})
+        if(src MATCHES "/")
+            set(in ${VKBOOK_ROOT}/shaders/${src})
+            get_filename_component(name ${name} NAME)
+        endif()
         set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${name}.spv)
         add_custom_command(
             OUTPUT ${out}

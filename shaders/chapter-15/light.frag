@@ -1,9 +1,8 @@
 #version 450
 // chapter-15 light pass as the book draws it: a full-screen triangle whose fragment shader shades
-// each G-buffer pixel (light_shading.glsl). light.comp does the same in a compute dispatch.
+// each G-buffer pixel (light_shading.glsl).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
-#define TILE_SET 3  // --light-culling tiled: the tile lists (light_tiles.glsl)
 #include "light_shading.glsl"
 
 //> light-frag

@@ -1,6 +1,6 @@
 // chapter-15 scene pass: the surface a fragment shows -- albedo, shading normal (normal map
-// applied), roughness, metallic, ambient occlusion -- from the draw's material and textures. scene.frag writes it
-// into the G-buffer; beyond the book, forward.frag (--shading forward) lights it on the spot.
+// applied), roughness, metallic, ambient occlusion -- from the draw's material and textures.
+// scene.frag writes it into the G-buffer.
 
 //> scene-surface
 // Two kinds of pipeline from this shader (each with and without back-face culling): opaque

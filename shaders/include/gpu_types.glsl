@@ -12,16 +12,15 @@ struct ShaderLight {
     uint directional;
     float intensity;
     vec3 color;
-    float range;  // beyond the book: a point light's reach (0: unbounded, the book's falloff)
+    float range;  // a point light's reach, from the scene (0: unbounded, the book's falloff)
 };
 
-// Per-frame scene information: a uniform buffer, scalar layout too. 36 bytes.
+// Per-frame scene information: a uniform buffer, scalar layout too. 32 bytes.
 struct ShaderSceneInfo {
     vec3 cameraPosition;
     float ambientIntensity;
     vec3 ambientColor;
     uint lightCount;  // the loop runs over the scene's actual lights only
-    uint unboundedLightCount;  // beyond the book (tiled culling): the first lights, shaded everywhere
 };
 
 // Materials: a storage buffer, std430 layout. 48 bytes.
@@ -56,30 +55,14 @@ struct DrawConstants {
 
 // The light pass's push constants (std430): 112 bytes.
 struct LightView {
-    mat4 clipToCameraRelative;  // inverse of projection x (view without its translation)
+    mat4 clipToCameraRelative;  // inverse of projection x (view without its translation): positions
+                                // from depth, for a layout that stores none
     vec4 boundsMin;             // xyz: the scene's bounds, to show positions as colours
     vec4 boundsMax;
     int view;       // 0 final, 1 position, 2 albedo, 3 normal, 4 pbr, 5 depth
     float near;     // the projection's near and far planes
     float far;
-    int reversedZ;  // depth 1 at near, 0 at far
-};
-
-// Beyond the book, --light-culling tiled (chapter-15/beyond/light_culling.cpp): the culling
-// passes' view of the frame, one uniform buffer per frame in flight, scalar layout. 100 bytes.
-// Pixels per tile side. 8 rather than the usual 16: a tile's list holds the lights of all its
-// pixels, and when lights are small on screen (65,536 of them) 16x16 tiles list several times
-// more lights than reach any one pixel (docs/performance.md, "Many lights").
-const uint LIGHT_TILE_SIZE = 8u;
-const uint TILE_OVERFLOW = 0xffffffffu;         // a tile whose list did not fit: it loops over every light
-struct CullView {
-    mat4 viewRotation;     // camera-relative world space to view space (looking along -z)
-    vec2 projectionScale;  // the projection's [0][0] and [1][1]: view-space slope to NDC
-    float near;            // the near plane: nothing closer is drawn
-    float margin;          // how far a stored surface position may lie from its pixel's ray
-    uvec2 tileCount;       // tiles across and down
-    uvec2 extent;          // the G-buffer's size in pixels
-    uint capacity;         // light indices the tile lists can hold, all tiles together
+    int reversedZ;  // the layout's depth: 1 at near, 0 at far (else 0 at near)
 };
 
 #endif

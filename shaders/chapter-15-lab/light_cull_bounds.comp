@@ -1,5 +1,5 @@
 #version 450
-// Beyond the book, --light-culling tiled, pass 1 of 4: each tile's bounds. One 8x8 group per
+// chapter-15-lab, --light-culling tiled, pass 1 of 4: each tile's bounds. One 8x8 group per
 // tile reads the G-buffer exactly as the light pass does (readGBuffer, light_shading.glsl) and
 // reduces the view-space positions of its surface pixels to a box. A tile with no surface (sky)
 // gets none: no light needs it. Compiled with COMPACT_GBUFFER for --gbuffer compact.

@@ -1,5 +1,5 @@
 #version 450
-// chapter-15 light pass as a compute dispatch (--light-pass compute): one invocation per pixel,
+// chapter-15-lab light pass as a compute dispatch (--light-pass compute): one invocation per pixel,
 // shading it exactly as light.frag does (light_shading.glsl) and storing the colour into the light
 // output as a storage image. No rasteriser, no full-screen triangle: on GPUs where few units
 // rasterise (NVIDIA H100/H200), all of the chip's compute units take part.

@@ -1,10 +1,12 @@
-// chapter-15, beyond the book: forward shading (--shading forward), to measure deferred shading
-// against. No G-buffer and no light pass: the scene pass's fragment shader (forward.frag) shades
-// each fragment it draws with every light, into the light pass's output, which the post pass then
-// presents as usual. It borrows the scene pass's pipelines' first three sets, draw order and depth
-// attachment, and the light pass's lights, scene info and output; so the two renderers differ only
-// in where the shading happens: per fragment drawn (forward) or per pixel of the G-buffer
-// (deferred). Forward+ (a depth pre-pass, then tile lists for a forward pass) is not built.
+// chapter-15-lab: forward shading (--shading forward), to measure deferred shading against. No
+// G-buffer and no light pass: the scene pass's fragment shader (forward.frag) shades each fragment
+// it draws with every light, into the light pass's output, which the post pass then presents as
+// usual. It borrows chapter-15's scene pass -- made with a depth-only layout (kForwardDepthOnly:
+// no colour attachment is allocated), for its first three sets, draw order and depth attachment
+// -- and the light pass's lights, scene info and output (made without a pipeline); so the two
+// renderers differ only in where the shading happens: per fragment drawn (forward) or per pixel
+// of the G-buffer (deferred). Forward+ (a depth pre-pass, then tile lists for a forward pass) is
+// not built.
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -1,7 +1,8 @@
-// Beyond the book, --light-culling tiled: the culling passes' descriptor set (set 3), shared by
-// light_cull_bounds.comp, light_cull.comp and light_cull_scan.comp. chapter-15/beyond/
-// light_culling.cpp creates and fills it; the light pass reads bindings 3 and 4 (light_tiles.glsl).
+// chapter-15-lab, --light-culling tiled: the culling passes' descriptor set (set 3), shared by
+// light_cull_bounds.comp, light_cull.comp and light_cull_scan.comp. chapter-15-lab/
+// light_culling.cpp creates and fills it; the light pass reads bindings 0, 3 and 4 (light_tiles.glsl).
 #include "gpu_types.glsl"
+#include "cull_view.glsl"
 
 //> cull-set
 layout(scalar, set = 3, binding = 0) uniform Cull {

@@ -1,5 +1,5 @@
-// chapter-15, beyond the book: light ranges and tiled light culling.
-#include "beyond/light_culling.hpp"
+// chapter-15-lab: light ranges and tiled light culling.
+#include "light_culling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +43,7 @@ LightOptions readLightOptions(const common::Options& options, common::Scene& sce
     if (std::optional<float> cutoff =
             numberOption(options, "light-cutoff", 1.2e-38f, 1e30f, "a positive number (an irradiance)")) {
         size_t ranged = applyLightCutoff(scene, *cutoff);
-        std::printf("chapter-15: --light-cutoff %g: %zu point lights get a range\n", double(*cutoff), ranged);
+        std::printf("chapter-15-lab: --light-cutoff %g: %zu point lights get a range\n", double(*cutoff), ranged);
     }
     return result;
 }
@@ -198,7 +198,7 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
 }
 
 void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& c,
-                                 const LightPass& lightPass, const GBufferLayout& layout) {
+                                 const LightPass& lightPass, const std::string& boundsShader) {
     VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout,
                                           lightPass.sceneLayout, c.setLayout};
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
@@ -208,9 +208,7 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
                                     .pushConstantRangeCount = 1,
                                     .pPushConstantRanges = &push};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &c.pipelineLayout));
-    c.bounds =
-        createComputePipeline(device, cache, c.pipelineLayout,
-                              std::string("chapter-15/light_cull_bounds") + layout.shaderSuffix + ".comp");
+    c.bounds = createComputePipeline(device, cache, c.pipelineLayout, boundsShader);
     // light_cull.comp's FILL and LARGE.
     VkBool32 constants[2] = {VK_FALSE, VK_FALSE};
     VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}};
@@ -218,10 +216,10 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
     for (VkPipeline* pipeline : {&c.count, &c.countLarge, &c.fill, &c.fillLarge}) {
         constants[0] = pipeline == &c.fill || pipeline == &c.fillLarge;
         constants[1] = pipeline == &c.countLarge || pipeline == &c.fillLarge;
-        *pipeline = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull.comp",
+        *pipeline = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15-lab/light_cull.comp",
                                           &specialization);
     }
-    c.scan = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15/light_cull_scan.comp");
+    c.scan = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15-lab/light_cull_scan.comp");
 }
 
 void resizeLightCulling(const common::Device& device, LightCullingPass& c, VkExtent2D extent) {
@@ -230,14 +228,15 @@ void resizeLightCulling(const common::Device& device, LightCullingPass& c, VkExt
 }
 
 void updateLightCulling(LightCullingPass& c, uint32_t frame, const glm::mat4& viewRotation,
-                        const glm::mat4& projection, float near) {
+                        const glm::mat4& projection, float near, uint32_t unboundedLights) {
     CullView view{.viewRotation = viewRotation,
                   .projectionScale = {projection[0][0], projection[1][1]},
                   .near = near,
                   .margin = c.margin,
                   .tileCount = c.tiles,
                   .extent = {c.extent.width, c.extent.height},
-                  .capacity = c.capacity};
+                  .capacity = c.capacity,
+                  .unboundedLights = unboundedLights};
     std::memcpy(c.frames[frame].view.mapped, &view, sizeof(view));
 }
 
@@ -300,7 +299,7 @@ LightCullingStats readLightCullingStats(const LightCullingPass& c) {
 void reportLightCulling(const LightCullingPass& c) {
     LightCullingStats stats = readLightCullingStats(c);
     std::printf(
-        "chapter-15: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a tile, "
+        "chapter-15-lab: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a tile, "
         "%u tiles over capacity (%u indices)\n",
         stats.pairs, stats.litTiles, c.tiles.x * c.tiles.y, stats.maxTileLights, stats.overflowTiles,
         c.capacity);

@@ -1,5 +1,5 @@
-// chapter-15, beyond the book: --check-output and --dump.
-#include "beyond/output_dump.hpp"
+// chapter-15-lab: --dump.
+#include "output_dump.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,28 +11,6 @@
 #include "common/check.hpp"
 #include "common/files.hpp"
 #include "common/screenshot.hpp"
-
-// --check-output: every value of the light output must be a finite, non-negative number.
-void checkLightOutput(const common::Device& device, const LightPass& lightPass) {
-    std::vector<float> values =
-        common::readFloatImage(device, lightPass.output.handle, kLightOutputFormat, lightPass.output.extent,
-                               VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
-    size_t nan = 0, infinite = 0, negative = 0;
-    float largest = 0.0f;
-    for (size_t i = 0; i < values.size(); i += 4)
-        for (size_t c = 0; c < 3; ++c) {
-            float v = values[i + c];
-            nan += std::isnan(v);
-            infinite += std::isinf(v);
-            negative += v < 0.0f;
-            if (std::isfinite(v)) largest = std::max(largest, v);
-        }
-    std::printf("chapter-15: light output %ux%u: %zu NaN, %zu infinite, %zu negative; largest value %g\n",
-                lightPass.output.extent.width, lightPass.output.extent.height, nan, infinite, negative,
-                largest);
-    if (nan + infinite + negative != 0)
-        throw common::Failure("the light output has NaN, infinite or negative values");
-}
 
 // --dump DIR: the last frame's light output, light.pfm; the distance from the camera plane of
 // each pixel's surface, distance.pfm (from the depth attachment: it tells which surface a layout
@@ -59,7 +37,7 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
     }
     common::writePfm(directory / "distance.pfm", extent.width, extent.height, distance, 1);
     if (!withGBuffer) {  // --shading forward draws none
-        std::printf("chapter-15: wrote %s\n", common::utf8(directory).c_str());
+        std::printf("chapter-15-lab: wrote %s\n", common::utf8(directory).c_str());
         return;
     }
     if (scenePass.layout->formats.position == VK_FORMAT_UNDEFINED) {  // the compact layout
@@ -91,5 +69,5 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
         if (image == &scenePass.gbuffer.albedo)  // its alpha: 1 where a surface is
             common::writePfm(directory / "coverage.pfm", extent.width, extent.height, texels, 1, 3);
     }
-    std::printf("chapter-15: wrote %s\n", common::utf8(directory).c_str());
+    std::printf("chapter-15-lab: wrote %s\n", common::utf8(directory).c_str());
 }

@@ -1,5 +1,5 @@
 #version 450
-// Beyond the book, --light-culling tiled, passes 2 and 4: lights to tiles. A light's sphere (its
+// chapter-15-lab, --light-culling tiled, passes 2 and 4: lights to tiles. A light's sphere (its
 // range) is projected to a rectangle of tiles; each tile of it whose box (light_cull_bounds.comp)
 // the sphere reaches gets the light. The work is the tiles each light covers on screen, not
 // lights x tiles. One module, four pipelines (specialization constants):
@@ -84,7 +84,7 @@ void main() {
             visitTile(i, first + uvec2(k % width, k / width), center, reach);
         return;
     }
-    uint i = scene.unboundedLightCount + gl_GlobalInvocationID.x;
+    uint i = cull.unboundedLights + gl_GlobalInvocationID.x;
     if (i >= scene.lightCount || !lightRectangle(i, center, reach, first, last)) return;
     if ((last.x - first.x + 1u) * (last.y - first.y + 1u) > LARGE_LIGHT_TILES) {
         if (!FILL) largeLights[atomicAdd(largeDispatch.x, 1u)] = i;  // the LARGE pass takes it

@@ -1,5 +1,5 @@
-// chapter-15, beyond the book: forward shading, the renderer deferred shading is measured against.
-#include "beyond/forward_shading.hpp"
+// chapter-15-lab: forward shading, the renderer deferred shading is measured against.
+#include "forward_shading.hpp"
 
 #include <array>
 
@@ -31,7 +31,8 @@ ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cach
                               const LightPass& lightPass) {
     ForwardPass pass;
     pass.pipelines = createScenePipelines(device, cache, scenePass,
-                                          {.fragmentShader = "chapter-15/forward.frag",
+                                          {.shaders = {.vertex = "chapter-15-lab/scene.vert",
+                                                       .fragment = "chapter-15-lab/forward.frag"},
                                            .colorFormats = {kLightOutputFormat},
                                            .depthFormat = scenePass.layout->formats.depth,
                                            .reversedZ = scenePass.layout->reversedZ,

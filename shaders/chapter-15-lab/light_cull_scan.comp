@@ -1,5 +1,5 @@
 #version 450
-// Beyond the book, --light-culling tiled, pass 3: the tiles' counts to list offsets (an exclusive
+// chapter-15-lab, --light-culling tiled, pass 3: the tiles' counts to list offsets (an exclusive
 // prefix sum, in one group of 256 invocations, each summing a run of tiles), so every tile's list
 // is exactly as long as its count. A tile whose list would end past cull.capacity is marked
 // TILE_OVERFLOW: the light pass then loops over every light there, so nothing is ever dropped.

@@ -1,7 +1,6 @@
-// chapter-15, beyond the book: light ranges and tiled light culling (--light-range, --light-cutoff,
-// --light-culling tiled).
+// chapter-15-lab: light ranges and tiled light culling (--light-cutoff, --light-culling tiled).
 //
-// The book's light pass shades every pixel with every light, so a frame costs pixels x lights.
+// chapter-15's light pass, the book's, shades every pixel with every light, so a frame costs pixels x lights.
 // With a range, a point light reaches only so far (pbr.glsl's rangeWindow takes its falloff to
 // zero there), and a pixel need only be shaded by the lights that reach it. Tiled culling finds
 // them on the GPU each frame, per 8x8-pixel tile, in four compute passes:
@@ -12,12 +11,14 @@
 //   scan (light_cull_scan.comp): counts to list offsets, exactly sized;
 //   fill (light_cull.comp again): each light writes its index into those tiles' lists (again per
 //     light, then per large light).
-// The light pass (both forms) then loops over the unbounded lights and its tile's list.
+// The light pass (both forms, light_tiles.glsl) then loops over the unbounded lights and its
+// tile's list.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "common/buffer.hpp"
@@ -29,9 +30,29 @@
 
 struct LightPass;
 
+// The culling passes' view of the frame, a scalar-layout uniform buffer per frame in flight, 104
+// bytes: the twin of shaders/chapter-15-lab/cull_view.glsl (the layout test checks both agree).
+inline constexpr uint32_t kLightTileSize = 8;           // LIGHT_TILE_SIZE
+inline constexpr uint32_t kTileOverflow = 0xffffffffu;  // TILE_OVERFLOW
+struct CullView {
+    glm::mat4 viewRotation;     // camera-relative world space to view space
+    glm::vec2 projectionScale;  // the projection's [0][0] and [1][1]
+    float near;                 // the near plane
+    float margin;               // how far a stored surface position may lie from its pixel's ray
+    glm::uvec2 tileCount;       // tiles across and down
+    glm::uvec2 extent;          // the G-buffer's size in pixels
+    uint32_t capacity;          // light indices the tile lists can hold
+    uint32_t unboundedLights;   // the first lights (no range): shaded everywhere, never listed
+};
+static_assert(sizeof(CullView) == 104 && offsetof(CullView, projectionScale) == 64 &&
+              offsetof(CullView, near) == 72 && offsetof(CullView, margin) == 76 &&
+              offsetof(CullView, tileCount) == 80 && offsetof(CullView, extent) == 88 &&
+              offsetof(CullView, capacity) == 96 && offsetof(CullView, unboundedLights) == 100);
+
+
 enum class LightCulling { None, Tiled };
 
-// The options beyond the book that change the lights or the camera.
+// The lab's options that change the lights or the camera.
 struct LightOptions {
     LightCulling culling = LightCulling::None;  // --light-culling
     float orbitDegrees = 0.0f;                  // --orbit: the camera's yaw turns this much a frame
@@ -83,15 +104,17 @@ struct LightCullingPass {
 LightCullingPass createLightCulling(const common::Device& device, VkExtent2D extent, uint32_t framesInFlight,
                                     uint32_t boundedLights, const GBufferLayout& layout, glm::vec3 boundsMin,
                                     glm::vec3 boundsMax);
-// The four pipelines, on the light pass's sets 0-2 (G-buffer, lights, scene info).
+// The four pipelines, on the light pass's sets 0-2 (G-buffer, lights, scene info); `boundsShader`
+// reads the G-buffer's layout.
 void createLightCullingPipelines(const common::Device& device, VkPipelineCache cache,
                                  LightCullingPass& culling, const LightPass& lightPass,
-                                 const GBufferLayout& layout);
+                                 const std::string& boundsShader);
 // The tile grid and lists follow the window.
 void resizeLightCulling(const common::Device& device, LightCullingPass& culling, VkExtent2D extent);
-// This frame's camera: view matrix without its translation, projection, near plane.
+// This frame's camera: view matrix without its translation, projection, near plane; and how many
+// lights come first without a range (putUnboundedFirst).
 void updateLightCulling(LightCullingPass& culling, uint32_t frame, const glm::mat4& viewRotation,
-                        const glm::mat4& projection, float near);
+                        const glm::mat4& projection, float near, uint32_t unboundedLights);
 void recordLightCulling(VkCommandBuffer cmd, const LightCullingPass& culling, const LightPass& lightPass,
                         uint32_t frame, const LightView& view);
 

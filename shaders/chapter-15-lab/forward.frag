@@ -1,13 +1,13 @@
 #version 450
-// chapter-15 beyond the book, --shading forward: no G-buffer. The scene pass's fragment shader
-// lights its surface itself (the same sceneSurface() as scene.frag, the same shading as the light
-// pass's loop over every light) into the light output -- the forward renderer that deferred
-// shading is measured against.
+// chapter-15-lab, --shading forward: no G-buffer. The scene pass's fragment shader lights its
+// surface itself (chapter-15's sceneSurface(), the same shading as its light pass's loop over
+// every light) into the light output -- the forward renderer that deferred shading is measured
+// against.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #include "gpu_types.glsl"
 #include "pbr.glsl"
-#include "scene_surface.glsl"
+#include "../chapter-15/scene_surface.glsl"
 
 //> forward-frag
 layout(location = 0) out vec4 outColor;
@@ -22,7 +22,7 @@ layout(scalar, set = 4, binding = 0) uniform Scene {
 
 void main() {
     SceneSurface surface = sceneSurface();
-    // Camera-relative, as the light pass shades (light_shading.glsl).
+    // Camera-relative, as the light pass shades (chapter-15/light_inputs.glsl).
     vec3 position = inWorldPosition - scene.cameraPosition;
     vec3 N = surfaceNormal(surface.normal);
     vec3 V = viewDirection(position, vec3(0.0), N);

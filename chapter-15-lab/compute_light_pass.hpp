@@ -1,0 +1,38 @@
+// chapter-15-lab: the light pass as a compute dispatch (--light-pass compute). The same shading
+// (light_shading.glsl) and the same descriptor sets 0-2 and push constants as chapter-15's
+// full-screen triangle -- the LightPass made with the compute stage and a storage-image output,
+// and no pipeline of its own -- plus set 3: the output as a storage image (and set 4, the tile
+// lists, with --light-culling tiled).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+
+#include "common/device.hpp"
+#include "light_pass.hpp"
+
+// How the light pass runs: chapter-15's full-screen triangle, or a compute dispatch.
+enum class LightPassKind { Fragment, Compute };
+
+struct ComputeLightPass {
+    VkDescriptorSetLayout outputLayout = VK_NULL_HANDLE;  // set 3: the output as a storage image
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkDescriptorSet outputSet = VK_NULL_HANDLE;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    bool tiled = false;  // set 4: the tile lists
+};
+
+// The setup of a LightPass for the compute form: sets 0-2 read by compute (and by `alsoStages`).
+LightPassSetup computeLightPassSetup(VkShaderStageFlags alsoStages = 0);
+// `shader`: the compiled compute shader; `tileLists`: --light-culling tiled's set layout, else null.
+ComputeLightPass createComputeLightPass(const common::Device& device, VkPipelineCache cache,
+                                        const LightPass& lightPass, const std::string& shader,
+                                        VkDescriptorSetLayout tileLists);
+// Points set 3 at the light pass's (new) output image.
+void writeComputeOutput(const common::Device& device, const ComputeLightPass& pass, const LightPass& lightPass);
+// `tileLists`: --light-culling tiled's set, else VK_NULL_HANDLE.
+void recordComputeLightPass(VkCommandBuffer cmd, const ComputeLightPass& pass, const LightPass& lightPass,
+                            uint32_t frame, const LightView& view, VkDescriptorSet tileLists);
+void destroyComputeLightPass(const common::Device& device, ComputeLightPass& pass);

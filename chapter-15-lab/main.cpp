@@ -1,0 +1,509 @@
+// chapter-15-lab: the study program built on chapter-15's passes (chapter-15/scene_pass.cpp,
+// light_pass.cpp), for what goes beyond the book. With no option it renders what chapter-15
+// renders; the options change one thing each, to be measured against the book's renderer:
+//   --gbuffer reference|compact (gbuffer_layouts.cpp): the G-buffer in RGBA32F, or in 16 bytes a
+//     pixel with the position reconstructed from reversed-Z depth;
+//   --light-pass compute (compute_light_pass.cpp): the light pass as a compute dispatch;
+//   --light-cutoff, --light-culling tiled (light_culling.cpp): light ranges and tiled culling;
+//   --shading forward (forward_shading.cpp): no G-buffer, every fragment lit as it is drawn;
+//   --dump (output_dump.cpp): the last frame as PFM files for the accuracy tools;
+//   --orbit: the camera turning, for benchmarks that move;
+// and the overlay (--gui) switches the G-buffer layout and the light pass's form live.
+#include <vulkan/vulkan.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/benchmark.hpp"
+#include "common/camera.hpp"
+#include "common/check.hpp"
+#include "common/cli.hpp"
+#include "common/commands.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/gui.hpp"
+#include "common/gui_pass.hpp"
+#include "common/instance.hpp"
+#include "common/pipeline.hpp"
+#include "common/post_pass.hpp"
+#include "common/run_control.hpp"
+#include "common/scene.hpp"
+#include "common/target.hpp"
+#include "compute_light_pass.hpp"
+#include "forward_shading.hpp"
+#include "gbuffer_layout.hpp"
+#include "gbuffer_layouts.hpp"
+#include "gpu_types.hpp"
+#include "light_culling.hpp"
+#include "light_pass.hpp"
+#include "output_dump.hpp"
+#include "scene_pass.hpp"
+
+namespace {
+
+const common::ChapterInfo kChapter{
+    "chapter-15-lab",
+    "chapter-15's renderer with what goes beyond the book: G-buffer layouts, the compute light pass, "
+    "light culling, forward shading",
+    {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of shade_pixel.glsl's `view`
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
+     {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
+     common::kGuiSwitch},
+    {{"gbuffer", labLayoutNames(), labLayoutHelp()},
+     {"light-pass",
+      {"fragment", "compute"},
+      "light pass: the book's full-screen triangle, or a compute dispatch (the same shading)"},
+     {"dump",
+      {},
+      "write the light output (and the G-buffer of the float layouts) as PFM files into this directory"},
+     {"light-culling",
+      {"none", "tiled"},
+      "none: every pixel loops over every light (the book's); tiled: over the lights whose range reaches "
+      "its 8x8-pixel tile, listed by compute passes each frame"},
+     {"light-cutoff",
+      {},
+      "give each point light without a range the distance where its irradiance falls to this value "
+      "(a positive number)"},
+     {"orbit", {}, "turn the camera this many degrees (-360..360) about the vertical each frame"},
+     {"shading",
+      {"deferred", "forward"},
+      "deferred: the G-buffer, then the light pass (the book's); "
+      "forward: the scene pass shades each fragment with every light (no light pass, the G-buffer "
+      "not written), to compare"},
+     common::kGuiClickChoice},
+};
+
+// chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its angle kept
+// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
+// The point light's marker model follows it.
+struct LightControls {
+    int sun = -1;    // index of the first directional light, if any
+    int point = -1;  // index of the first point light, if any
+    float sunAngle = 270.0f;
+    bool moved = false;
+};
+
+LightControls findControlledLights(const common::Scene& scene) {
+    LightControls controls;
+    for (int i = 0; i < int(scene.lights.size()); ++i) {
+        const common::Light& light = scene.lights[size_t(i)];
+        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
+            controls.sun = i;
+            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
+            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
+        }
+        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
+    }
+    return controls;
+}
+
+void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
+    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
+    float radians = glm::radians(controls.sunAngle);
+    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
+    controls.moved = true;
+}
+
+void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                     glm::vec3 position) {
+    common::Light& light = scene.lights[size_t(controls.point)];
+    light.position = position;
+    controls.moved = true;
+    if (light.marker < 0) return;
+    common::Transform transform = scene.models[size_t(light.marker)].transform;
+    transform.position = light.position;
+    for (common::Draw& draw : gpuScene.draws)
+        if (draw.instance == uint32_t(light.marker)) draw.model = transform.matrix();
+}
+
+void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                float seconds, float speed) {
+    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
+        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
+    if (controls.point < 0) return;
+    glm::vec3 step(0.0f);
+    if (held(GLFW_KEY_1)) step.y += 1.0f;
+    if (held(GLFW_KEY_2)) step.y -= 1.0f;
+    if (held(GLFW_KEY_3)) step.z -= 1.0f;
+    if (held(GLFW_KEY_4)) step.z += 1.0f;
+    if (step == glm::vec3(0.0f)) return;
+    placePointLight(controls, scene, gpuScene,
+                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
+}
+
+//> overlay
+// The overlay (--gui): chapter-15's, with the G-buffer layout and the light pass's form in the
+// timings window (switched at the next frame).
+struct RendererChoice {
+    int layout = 0;     // index into labLayouts()
+    int lightPass = 0;  // LightPassKind
+};
+
+void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
+                    RendererChoice& renderer, LightControls& controls, common::Scene& scene,
+                    common::GpuScene& gpuScene, bool deferred) {
+    common::guiTimingsWindow(gui, run, deferred ? kChapter.views : std::vector<std::string>{"final"}, view,
+                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
+                              "1/2, 3/4  move the point light up/down, along z"});
+    ImGui::Begin("Frame");  // appends to the timings window
+    ImGui::Checkbox("FXAA (F)", fxaa);
+    if (deferred) {  // --shading forward has neither
+        common::guiCombo("G-buffer", labLayoutNames(), &renderer.layout);
+        common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
+    }
+    ImGui::End();
+
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    ImGui::PushItemWidth(180.0f);
+    float angle = controls.sunAngle;
+    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
+        setSunAngle(controls, scene, angle);
+    if (controls.point >= 0) {
+        common::Light& point = scene.lights[size_t(controls.point)];
+        glm::vec3 position = point.position;
+        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
+            placePointLight(controls, scene, gpuScene, position);
+        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
+    }
+    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+//< overlay
+
+std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
+    std::vector<ShaderLight> lights;
+    for (const common::Light& light : scene.lights) {
+        bool directional = light.type == common::Light::Type::Directional;
+        lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
+                          light.intensity, light.color, directional ? 0.0f : light.range});
+    }
+    return lights;
+}
+
+// The light pass for a layout and form, with the compute form's pipeline or the tile lists' set.
+struct LightPasses {
+    LightPass pass;
+    ComputeLightPass compute;  // --light-pass compute
+};
+
+LightPasses createLightPasses(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
+                              const ScenePass& scenePass, const LabLayout& layout, LightPassKind kind,
+                              uint32_t framesInFlight, uint32_t lightCount, VkDescriptorSetLayout tileLists) {
+    LightPasses passes;
+    bool tiled = tileLists != VK_NULL_HANDLE;
+    // With tile lists, the culling passes (compute) read sets 0-2 too.
+    VkShaderStageFlags culling = tiled ? VK_SHADER_STAGE_COMPUTE_BIT : 0;
+    if (kind == LightPassKind::Compute) {
+        passes.pass = createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount,
+                                      computeLightPassSetup());
+        passes.compute = createComputeLightPass(device, cache, passes.pass,
+                                                labLightShader(layout, "comp", tiled), tileLists);
+        return passes;
+    }
+    LightPassSetup setup{.fragmentShader = labLightShader(layout, "frag", tiled),
+                         .stages = VK_SHADER_STAGE_FRAGMENT_BIT | culling};
+    if (tiled) setup.moreSets = {tileLists};  // set 3
+    passes.pass = createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount, setup);
+    return passes;
+}
+
+void destroyLightPasses(const common::Device& device, LightPasses& passes) {
+    if (passes.compute.pipeline) destroyComputeLightPass(device, passes.compute);
+    destroyLightPass(device, passes.pass);
+}
+
+void run(const common::Options& options) {
+    //> setup
+    common::ModelCache models;
+    common::Scene scene = common::sceneFromOptions(options, models);
+    // Light ranges from --light-cutoff, tiled culling, the camera turning.
+    LightOptions lightOptions = readLightOptions(options, scene);
+    bool forward = readShading(options) == Shading::Forward;
+    bool tiled = lightOptions.culling == LightCulling::Tiled;
+
+    common::Target target = common::openTarget(options, "chapter-15-lab");
+    common::Instance instance =
+        common::createInstance("chapter-15-lab", options.validation, common::targetInstanceExtensions(target));
+    common::createTargetSurface(target, instance);
+    // chapter-15's features, and maintenance4 for the compute light pass (glslang declares its
+    // group size with LocalSizeId).
+    common::Device device = common::createDevice(instance, target.surface, options.device,
+                                                 {.dynamicRendering = true,
+                                                  .synchronization2 = true,
+                                                  .scalarBlockLayout = true,
+                                                  .maintenance4 = true});
+    common::createTargetImages(target, device);
+    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
+
+    common::GpuScene gpuScene = common::loadGpuScene(
+        device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
+    models.clear();
+    std::printf("chapter-15-lab: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
+                gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),
+                gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());
+
+    common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-15-lab");
+    RendererChoice renderer{int(options.choices.count("gbuffer") ? options.choices.at("gbuffer") : 0),
+                            int(options.choices.count("light-pass") ? options.choices.at("light-pass") : 0)};
+    RendererChoice active = renderer;  // what the passes were made for
+    const LabLayout* layout = labLayouts().at(size_t(renderer.layout));
+    LightPassKind lightKind = LightPassKind(renderer.lightPass);
+    // The scene pass: the layout's G-buffer, or (forward) depth alone with the forward pipelines.
+    ScenePass scenePass;
+    LightCullingPass culling;  // --light-culling tiled
+    LightPasses light;
+    ForwardPass forwardPass;  // --shading forward
+    auto createPasses = [&] {
+        if (forward) {
+            scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
+                                        options.framesInFlight, kForwardDepthOnly);
+            light.pass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
+                                         options.framesInFlight, uint32_t(scene.lights.size()),
+                                         {.fragmentShader = ""});
+            forwardPass = createForwardPass(device, pipelineCache.handle, scenePass, light.pass);
+            return;
+        }
+        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight,
+                                    layout->layout, labSceneShaders(*layout));
+        if (tiled)
+            culling = createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
+                                         layout->layout, gpuScene.boundsMin, gpuScene.boundsMax);
+        light = createLightPasses(device, pipelineCache.handle, target.extent, scenePass, *layout, lightKind,
+                                  options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
+        if (tiled)
+            createLightCullingPipelines(device, pipelineCache.handle, culling, light.pass,
+                                        std::string("chapter-15-lab/light_cull_bounds") + layout->shaderSuffix +
+                                            ".comp");
+    };
+    createPasses();
+    common::PostPass postPass =
+        common::createPostPass(device, pipelineCache.handle, target.format, light.pass.output);
+
+    common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
+    common::CameraInput cameraInput;
+    LightControls lightControls = findControlledLights(scene);
+    LightView lightView{.boundsMin = glm::vec4(gpuScene.boundsMin, 0.0f),
+                        .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
+                        .view = int(options.view),
+                        .reversedZ = layout->layout.reversedZ ? 1 : 0};
+    bool fxaa = options.switches.count("fxaa") != 0;
+
+    common::Gui gui = common::createGui(options, target);
+    common::GuiPass guiPass;
+    if (gui.enabled)
+        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+
+    std::vector<std::string> passes{"scene", "light", "post"};
+    if (tiled) passes.insert(passes.begin() + 1, "cull");
+    if (forward) passes = {"forward", "post"};
+    if (gui.enabled) passes.push_back("gui");
+    common::RunControl run = common::createRunControl(options, device, passes);
+    //< setup
+
+    auto recreateTarget = [&] {
+        if (!common::recreateTargetImages(target, device)) return false;
+        resizeScenePass(device, scenePass, target.extent);
+        resizeLightPass(device, light.pass, target.extent, scenePass.gbuffer);
+        if (light.compute.pipeline) writeComputeOutput(device, light.compute, light.pass);
+        if (tiled) resizeLightCulling(device, culling, target.extent);
+        common::resizePostPass(device, postPass, light.pass.output);
+        return true;
+    };
+
+    auto destroyPasses = [&] {
+        if (forward) destroyForwardPass(device, forwardPass);
+        destroyLightPasses(device, light);
+        if (tiled) destroyLightCulling(device, culling);
+        destroyScenePass(device, scenePass);
+    };
+
+    //> switch-renderer
+    // From the overlay: another G-buffer layout or light-pass form, live. Every pass that depends
+    // on them is made again (the G-buffer with the scene pass); the scene, the window and the run
+    // go on.
+    auto switchRenderer = [&] {
+        VK_CHECK(vkDeviceWaitIdle(device.handle));
+        common::destroyPostPass(device, postPass);
+        destroyPasses();
+        active = renderer;
+        layout = labLayouts().at(size_t(renderer.layout));
+        lightKind = LightPassKind(renderer.lightPass);
+        createPasses();
+        postPass = common::createPostPass(device, pipelineCache.handle, target.format, light.pass.output);
+        lightView.reversedZ = layout->layout.reversedZ ? 1 : 0;
+        std::printf("chapter-15-lab: switched to the %s G-buffer, %s light pass\n", layout->layout.name,
+                    lightKind == LightPassKind::Compute ? "compute" : "fragment");
+    };
+    //< switch-renderer
+
+    //> frame-loop
+    double lastTime = glfwGetTime();
+    common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
+    float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
+    for (uint32_t frame = 0;;) {
+        bool lastFrame = common::beginFrame(run, target, frame);
+        uint32_t slot = frame % options.framesInFlight;
+        common::FrameSync& sync = frames[slot];
+
+        ImDrawData* overlay = common::drawGui(gui, target, frame, [&] {
+            overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene,
+                           !forward);
+        });
+        if (renderer.layout != active.layout || renderer.lightPass != active.lightPass) switchRenderer();
+        bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
+        if (target.window) {  // camera, lights; V cycles the views, F toggles FXAA (unless the GUI has them)
+            double now = glfwGetTime();
+            float seconds = float(now - lastTime);
+            lastTime = now;
+            common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
+            if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
+            if (common::pressedOnce(target.window, viewKey) && keys && !forward)  // forward: no views
+                lightView.view = (lightView.view + 1) % int(kChapter.views.size());
+            if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
+        }
+        camera.yaw += lightOptions.orbitDegrees;  // --orbit: 0 unless asked
+
+        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::collectGpuTimes(run, device, slot);
+        uint32_t imageIndex = 0;
+        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget()) break;
+            continue;
+        }
+        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+        if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
+
+        // This frame's uniforms: camera, lights (they may have moved), scene info.
+        glm::mat4 view = common::viewMatrix(camera);
+        Projection projection =
+            layout->layout.reversedZ && !forward
+                ? reversedZProjection(scene, camera, gpuScene, target.extent)
+                : Projection{common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near,
+                                                      scene.camera.far),
+                             scene.camera.near, scene.camera.far};
+        setCamera(scenePass, slot, projection.matrix, view);
+        lightView.clipToCameraRelative = glm::inverse(projection.matrix * glm::mat4(glm::mat3(view)));
+        lightView.near = projection.near;
+        lightView.far = projection.far;
+        std::vector<ShaderLight> lights = shaderLights(scene);
+        uint32_t unbounded = tiled ? putUnboundedFirst(lights) : 0u;  // tiled culling's order
+        updateLights(light.pass, slot, lights, {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
+        if (tiled)
+            updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near,
+                               unbounded);
+
+        VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
+        VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                           .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+        VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+        common::timeFrameStart(run, sync.commandBuffer, slot, frame);
+        uint32_t pass = 0;
+        if (forward) {  // --shading forward: no G-buffer
+            recordForwardPass(sync.commandBuffer, forwardPass, scenePass, light.pass, gpuScene, slot,
+                              camera.position);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        } else {
+            recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            VkDescriptorSet tileLists = tiled ? culling.frames[slot].set : VK_NULL_HANDLE;
+            if (tiled) {  // this frame's tile lists, from this frame's G-buffer
+                recordLightCulling(sync.commandBuffer, culling, light.pass, slot, lightView);
+                common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            }
+            if (light.compute.pipeline)
+                recordComputeLightPass(sync.commandBuffer, light.compute, light.pass, slot, lightView, tileLists);
+            else if (tiled)
+                recordLightPass(sync.commandBuffer, light.pass, slot, lightView, {&tileLists, 1});
+            else
+                recordLightPass(sync.commandBuffer, light.pass, slot, lightView);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        }
+        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
+        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        if (gui.enabled) {
+            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
+            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        }
+        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+
+        VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                   .semaphore = sync.imageAvailable,
+                                   .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+        VkSemaphoreSubmitInfo signal{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                     .semaphore = target.renderFinished[imageIndex],
+                                     .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
+        VkCommandBufferSubmitInfo commands{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                           .commandBuffer = sync.commandBuffer};
+        VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                             .waitSemaphoreInfoCount = 1,
+                             .pWaitSemaphoreInfos = &wait,
+                             .commandBufferInfoCount = 1,
+                             .pCommandBufferInfos = &commands,
+                             .signalSemaphoreInfoCount = 1,
+                             .pSignalSemaphoreInfos = &signal};
+        VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
+
+        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
+        bool current = common::presentTargetImage(target, device, imageIndex);
+        common::endFrame(run, frame);
+        if (lastFrame) break;
+        if (!current && !recreateTarget()) break;
+        ++frame;
+    }
+    VK_CHECK(vkDeviceWaitIdle(device.handle));
+    //< frame-loop
+    if (camera.position != scene.camera.position || camera.yaw != scene.camera.yaw ||
+        camera.pitch != scene.camera.pitch)
+        std::printf("chapter-15-lab: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
+    std::vector<std::pair<std::string, std::string>> info =
+        common::benchmarkInfo(kChapter, options, device, target);
+    // What the scene pass allocated: the G-buffer's attachments, depth alone for forward shading.
+    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.layout->formats))});
+    common::reportRun(run, device, info);
+    if (gui.enabled)
+        std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    guiPass.growths, guiPass.largestVertices, guiPass.largestIndices);
+
+    if (lightControls.moved) {
+        glm::vec3 p =
+            lightControls.point >= 0 ? scene.lights[size_t(lightControls.point)].position : glm::vec3(0.0f);
+        std::printf("chapter-15-lab: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
+                    lightControls.sunAngle, p.x, p.y, p.z);
+    }
+    if (tiled) reportLightCulling(culling);
+    // The output read back: chapter-15's check, and the PFM files of output_dump.cpp.
+    if (options.switches.count("check-output")) checkLightOutput(device, light.pass);
+    if (options.values.count("dump"))
+        dumpFrame(device, light.pass, scenePass, lightView, options.values.at("dump"), !forward);
+
+    //> teardown
+    common::destroyRunControl(device, run);
+    if (gui.enabled) common::destroyGuiPass(device, guiPass);
+    common::destroyGui(gui);
+    common::savePipelineCache(device, pipelineCache);
+    common::destroyPostPass(device, postPass);
+    destroyPasses();
+    common::destroyPipelineCache(device, pipelineCache);
+    common::destroyGpuScene(device, gpuScene);
+    common::destroyFrameSync(device, frames);
+    common::destroyTargetImages(target, device);
+    common::destroyDevice(device);
+    common::destroyTargetSurface(target, instance);
+    common::destroyInstance(instance);
+    common::closeTarget(target);
+    //< teardown
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return common::runChapter(argc, argv, kChapter, run);
+}
