@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Measures chapter-15's G-buffer layouts -- bytes per pixel, frame time, error against the fp64
-# reference -- on the default scene and the hard scenes, runs the numeric tests of the shading
+# Measures the G-buffer layouts of chapter-15-lab (chapter-15's passes) -- bytes per pixel, frame
+# time, error against the fp64 reference -- on the default scene and the hard scenes, runs the numeric tests of the shading
 # math, and writes the results into docs/accuracy.md (between its "results" markers) with a plot
 # of frame time against error in docs/images/accuracy.svg.
 #
@@ -12,7 +12,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$(cd "${1:-$root/build}" && pwd)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-chapter=$build/bin/chapter-15
+chapter=$build/bin/chapter-15-lab
 reference=$build/tests/bin/reference_render
 numeric=$build/tests/bin/pbr_numeric_test
 spirv=$build/bin/shaders/tests/pbr_numeric.comp.spv
@@ -56,7 +56,7 @@ printf '%s' "$plot_data" > "$out/points.txt"
 gnuplot <<GNUPLOT
 set terminal svg size 760,460 font "sans,11" background "#ffffff"
 set output "$root/docs/images/accuracy.svg"
-set title "chapter-15 G-buffer layouts: lavapipe frame time against error (1280x720)"
+set title "chapter-15-lab G-buffer layouts: lavapipe frame time against error (1280x720)"
 set xlabel "GPU frame time, median (ms)"
 set ylabel "worst-pixel error against the fp64 reference (1/255, log)"
 set logscale y

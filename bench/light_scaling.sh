@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Many lights: how chapter-15's frame grows with the number of lights, for the book's loop over
-# every light (--light-culling none) and for tiled culling, each with both forms of the light
+# Many lights: how the frame of chapter-15-lab (chapter-15's passes) grows with the number of
+# lights, for the book's loop over every light (--light-culling none) and for tiled culling, each with both forms of the light
 # pass; and what a light's reach costs in accuracy (--light-cutoff against the unbounded falloff,
 # with the fp64 reference renderer). The scenes are the generated bin/scenes/lights-N (N = 16 ...
 # 65,536 point lights whose ranges keep the lights per point of the floor about constant).
@@ -39,7 +39,7 @@ field() { awk -v name="$2" '$1 == name {$1 = ""; print substr($0, 2); exit}' "$1
 measure() {
     local device=$1 w=$2 h=$3 n=$4 culling=$5 form=$6
     echo "light_scaling: $device ${w}x$h $n lights, culling $culling, $form" >&2
-    "$bin/chapter-15" --headless --device "$device" --width "$w" --height "$h" \
+    "$bin/chapter-15-lab" --headless --device "$device" --width "$w" --height "$h" \
         --scene "$bin/scenes/lights-$n/scene.json" --light-culling "$culling" --light-pass "$form" \
         --benchmark --warmup "$7" --frames "$8" > "$work/run.txt"
     printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
@@ -74,10 +74,10 @@ cutoff() {
     "$build/tools/generate_light_scene" "$bin/scenes/default" 1024 "$scene" --no-range > /dev/null
     local size=(--headless --device llvmpipe --width 1280 --height 720 --scene "$scene" --gbuffer reference)
     echo "light_scaling: cutoff, the unbounded loop" >&2
-    "$bin/chapter-15" "${size[@]}" --benchmark --warmup 1 --frames 1 --dump "$work/unbounded" > "$work/none.txt"
+    "$bin/chapter-15-lab" "${size[@]}" --benchmark --warmup 1 --frames 1 --dump "$work/unbounded" > "$work/none.txt"
     for e in "${cutoffs[@]}"; do
         echo "light_scaling: cutoff $e" >&2
-        "$bin/chapter-15" "${size[@]}" --light-culling tiled --light-cutoff "$e" --benchmark --warmup 1 --frames 2 \
+        "$bin/chapter-15-lab" "${size[@]}" --light-culling tiled --light-cutoff "$e" --benchmark --warmup 1 --frames 2 \
             --dump "$work/cut-$e" > "$work/cut-$e.txt"
         compare+=(--compare "E$e=$work/cut-$e/light.pfm")
     done
@@ -103,7 +103,7 @@ forward_row() {
     local scene=$work/lights-$n.json
     [ -f "$scene" ] || "$build/tools/generate_light_scene" "$bin/scenes/default" "$n" "$scene" > /dev/null
     echo "light_scaling: $device ${w}x$h $n lights, $shading, culling $culling, $form" >&2
-    "$bin/chapter-15" --headless --device "$device" --width "$w" --height "$h" --scene "$scene" \
+    "$bin/chapter-15-lab" --headless --device "$device" --width "$w" --height "$h" --scene "$scene" \
         --shading "$shading" --light-culling "$culling" --light-pass "$form" \
         --benchmark --warmup "$8" --frames "$9" > "$work/run.txt"
     printf '%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(field "$work/run.txt" device) ($(field "$work/run.txt" driver))" \
@@ -129,7 +129,7 @@ forward_study() {
 gpu_forward() {
     local messages=0 scene
     for scene in default lights-16 lights-1024; do
-        "$bin/chapter-15" --headless --device NVIDIA --width 1920 --height 1080 --validation \
+        "$bin/chapter-15-lab" --headless --device NVIDIA --width 1920 --height 1080 --validation \
             --scene "$bin/scenes/$scene/scene.json" --shading forward --frames 3 > /dev/null 2> "$work/err.txt" || echo "validation run failed: $scene" >> "$work/err.txt"
         cat "$work/err.txt" >> "$out/forward-deferred-gpu-validation.log"
         messages=$((messages + $(grep -c "^validation" "$work/err.txt" || true)))
@@ -148,7 +148,7 @@ case "${1:-}" in
     for n in "${counts[@]}"; do
         for culling in none tiled; do
             for form in fragment compute; do
-                "$bin/chapter-15" --headless --device NVIDIA --width 1920 --height 1080 --validation \
+                "$bin/chapter-15-lab" --headless --device NVIDIA --width 1920 --height 1080 --validation \
                     --scene "$bin/scenes/lights-$n/scene.json" --light-culling $culling --light-pass $form \
                     --frames 3 > /dev/null 2> "$work/err.txt" || true
                 messages=$((messages + $(grep -c "^validation" "$work/err.txt" || true)))

@@ -51,11 +51,13 @@ all_chapters() {
     run "06-${w}x$h$suffix" chapter-06 "$@" "${size[@]}" --warmup 20 --frames 300
     run "10-${w}x$h$suffix" chapter-10 "$@" "${size[@]}" --warmup 5 --frames 40
     run "14-${w}x$h$suffix" chapter-14 "$@" "${size[@]}" --warmup 5 --frames 40
-    for layout in book compact reference; do
-        run "15-${w}x$h-$layout$suffix" chapter-15 "$@" "${size[@]}" --warmup 5 --frames 40 --gbuffer "$layout"
+    # The book's layout is chapter-15 itself; the others are the lab's (chapter-15-lab --gbuffer).
+    run "15-${w}x$h-book$suffix" chapter-15 "$@" "${size[@]}" --warmup 5 --frames 40
+    for layout in compact reference; do
+        run "15-${w}x$h-$layout$suffix" chapter-15-lab "$@" "${size[@]}" --warmup 5 --frames 40 --gbuffer "$layout"
     done
     for layout in book compact; do
-        run "15-${w}x$h-$layout-compute$suffix" chapter-15 "$@" "${size[@]}" --warmup 5 --frames 40 \
+        run "15-${w}x$h-$layout-compute$suffix" chapter-15-lab "$@" "${size[@]}" --warmup 5 --frames 40 \
             --gbuffer "$layout" --light-pass compute
     done
 }

@@ -148,63 +148,82 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
 }
 //< record
 
-void run(const common::Options& options) {
-    //> setup
-    common::Target target = common::openTarget(options, "chapter-06: drawing a triangle");
-    common::Instance instance =
-        common::createInstance("chapter-06", options.validation, common::targetInstanceExtensions(target));
-    common::createTargetSurface(target, instance);
-    common::Device device = common::createDevice(instance, target.surface, options.device);
-    common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it; tearDown() destroys it in reverse.
+// Made in place, never moved: the window keeps a pointer to its target.
+struct Chapter {
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<common::FrameSync> frames;
+    std::vector<Mesh> meshes;
+    VertexInput vertexInput{};
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    std::vector<VkFramebuffer> framebuffers;
+    common::PipelineCache pipelineCache;
+    Pipeline pipeline;
+    common::RunControl run;  // --frames, --resize, --benchmark (one timed pass), --screenshot
+};
+//< chapter-state
+
+//> setup
+void setUp(Chapter& c, const common::Options& options) {
+    c.target = common::openTarget(options, "chapter-06: drawing a triangle");
+    c.instance =
+        common::createInstance("chapter-06", options.validation, common::targetInstanceExtensions(c.target));
+    common::createTargetSurface(c.target, c.instance);
+    c.device = common::createDevice(c.instance, c.target.surface, options.device);
+    common::createTargetImages(c.target, c.device);
+    c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
     // The book's order: the data to the GPU, its description, then the pipeline that draws it.
-    std::vector<Mesh> meshes = loadMeshes(device, {MeshData{
-                                                      .positions = {-0.5f, -0.5f, 0.0f,  //
-                                                                    0.0f, 0.5f, 0.0f,    //
-                                                                    0.5f, -0.5f, 0.0f},
-                                                      .indices = {0, 1, 2},
-                                                  }});
-    VertexInput vertexInput;
-    describeVertexInput(vertexInput);
-    VkRenderPass renderPass = createRenderPass(device, target.format, target.presentLayout);
-    std::vector<VkFramebuffer> framebuffers = createFramebuffers(device, renderPass, target);
-    common::PipelineCache pipelineCache = createPipelineCache(device);
-    Pipeline pipeline = createPipeline(device, pipelineCache.handle, renderPass, vertexInput);
+    c.meshes = loadMeshes(c.device, {MeshData{
+                                        .positions = {-0.5f, -0.5f, 0.0f,  //
+                                                      0.0f, 0.5f, 0.0f,    //
+                                                      0.5f, -0.5f, 0.0f},
+                                        .indices = {0, 1, 2},
+                                    }});
+    describeVertexInput(c.vertexInput);
+    c.renderPass = createRenderPass(c.device, c.target.format, c.target.presentLayout);
+    c.framebuffers = createFramebuffers(c.device, c.renderPass, c.target);
+    c.pipelineCache = createPipelineCache(c.device);
+    c.pipeline = createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput);
+    c.run = common::createRunControl(options, c.device, {"triangle"});
+}
+//< setup
 
-    // --frames, --resize, --benchmark (one timed pass), --screenshot.
-    common::RunControl run = common::createRunControl(options, device, {"triangle"});
-    //< setup
+//> resize
+// After a resize only the images change size; the render pass and the pipeline (viewport and
+// scissor are dynamic) stay, the framebuffers that point at the images are rebuilt.
+bool recreateTarget(Chapter& c) {
+    if (!common::recreateTargetImages(c.target, c.device)) return false;
+    destroyFramebuffers(c.device.handle, c.framebuffers);
+    c.framebuffers = createFramebuffers(c.device, c.renderPass, c.target);
+    return true;
+}
+//< resize
 
-    //> frame-loop
-    // After a resize only the images change size; the render pass and the pipeline (viewport and
-    // scissor are dynamic) stay, the framebuffers that point at the images are rebuilt.
-    auto recreateTarget = [&] {
-        if (!common::recreateTargetImages(target, device)) return false;
-        destroyFramebuffers(device.handle, framebuffers);
-        framebuffers = createFramebuffers(device, renderPass, target);
-        return true;
-    };
-
+//> frame-loop
+void frameLoop(Chapter& c, const common::Options& options) {
     for (uint32_t frame = 0;;) {
-        bool lastFrame = common::beginFrame(run, target, frame);
+        bool lastFrame = common::beginFrame(c.run, c.target, frame);
         uint32_t slot = frame % options.framesInFlight;
-        common::FrameSync& sync = frames[slot];
+        common::FrameSync& sync = c.frames[slot];
 
         // Wait until the GPU is done with this slot's command buffer, used options.framesInFlight frames ago.
-        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        common::collectGpuTimes(run, device, slot);
+        VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::collectGpuTimes(c.run, c.device, slot);
 
         uint32_t imageIndex = 0;
-        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget()) break;
+        if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget(c)) break;
             continue;
         }
-        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
 
-        VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
-        recordCommandBuffer(sync.commandBuffer, renderPass, framebuffers[imageIndex], target.extent, pipeline,
-                            meshes, run, slot, frame);
+        VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
+        recordCommandBuffer(sync.commandBuffer, c.renderPass, c.framebuffers[imageIndex], c.target.extent,
+                            c.pipeline, c.meshes, c.run, slot, frame);
 
         // Colour output waits for the image; the target's semaphore for this image says when the
         // drawing is done; the fence says when this frame's command buffer is free again.
@@ -217,37 +236,50 @@ void run(const common::Options& options) {
             .commandBufferCount = 1,
             .pCommandBuffers = &sync.commandBuffer,
             .signalSemaphoreCount = 1,
-            .pSignalSemaphores = &target.renderFinished[imageIndex],
+            .pSignalSemaphores = &c.target.renderFinished[imageIndex],
         };
-        VK_CHECK(vkQueueSubmit(device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(vkQueueSubmit(c.device.queue, 1, &submit, sync.inFlight));
 
-        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
-        bool current = common::presentTargetImage(target, device, imageIndex);
-        common::endFrame(run, frame);
+        if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        common::endFrame(c.run, frame);
         if (lastFrame) break;
-        if (!current && !recreateTarget()) break;
+        if (!current && !recreateTarget(c)) break;
         ++frame;
     }
-    VK_CHECK(vkDeviceWaitIdle(device.handle));
-    //< frame-loop
-    common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
-
-    //> teardown
-    common::destroyRunControl(device, run);
-    common::savePipelineCache(device, pipelineCache);
-    destroyPipeline(device, pipeline);
-    common::destroyPipelineCache(device, pipelineCache);
-    destroyFramebuffers(device.handle, framebuffers);
-    vkDestroyRenderPass(device.handle, renderPass, nullptr);
-    destroyMeshes(device, meshes);
-    common::destroyFrameSync(device, frames);
-    common::destroyTargetImages(target, device);
-    common::destroyDevice(device);
-    common::destroyTargetSurface(target, instance);
-    common::destroyInstance(instance);
-    common::closeTarget(target);
-    //< teardown
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
 }
+//< frame-loop
+
+//> teardown
+void tearDown(Chapter& c) {
+    common::destroyRunControl(c.device, c.run);
+    common::savePipelineCache(c.device, c.pipelineCache);
+    destroyPipeline(c.device, c.pipeline);
+    common::destroyPipelineCache(c.device, c.pipelineCache);
+    destroyFramebuffers(c.device.handle, c.framebuffers);
+    vkDestroyRenderPass(c.device.handle, c.renderPass, nullptr);
+    destroyMeshes(c.device, c.meshes);
+    common::destroyFrameSync(c.device, c.frames);
+    common::destroyTargetImages(c.target, c.device);
+    common::destroyDevice(c.device);
+    common::destroyTargetSurface(c.target, c.instance);
+    common::destroyInstance(c.instance);
+    common::closeTarget(c.target);
+}
+//< teardown
+
+//> run
+// The chapter in four steps: set up, the frame loop, the report (--benchmark), tear down.
+void run(const common::Options& options) {
+    Chapter chapter;
+    setUp(chapter, options);
+    frameLoop(chapter, options);
+    common::reportRun(chapter.run, chapter.device,
+                      common::benchmarkInfo(kChapter, options, chapter.device, chapter.target));
+    tearDown(chapter);
+}
+//< run
 
 }  // namespace
 

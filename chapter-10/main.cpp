@@ -75,107 +75,129 @@ void destroyFrames(const common::Device& device, std::vector<Frame>& frames) {
     frames.clear();
 }
 
-void run(const common::Options& options) {
-    //> setup
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
+// reverse), and what the frames change. Made in place, never moved: the window keeps a pointer
+// to its target.
+struct Chapter {
+    common::Scene scene;
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<Frame> frames;
+    common::GpuScene gpuScene;
+    common::PipelineCache pipelineCache;
+    GeometryPass geometryPass;
+    LightingPass lightingPass;
+    // --benchmark: timestamps at the start, after the geometry pass, after the lighting pass. The
+    // lighting command buffers are pre-recorded per image, so the last timestamp goes into the
+    // frame slot's own small command buffer, submitted right after the lighting one.
+    common::RunControl run;
+    // The fence of the frame that last submitted each image's lighting command buffer.
+    std::vector<VkFence> imageInFlight;
+    // What the frames change.
+    common::Camera camera;
+    common::CameraInput cameraInput;
+    LightingView lightingView;
+};
+//< chapter-state
+
+//> setup
+void setUp(Chapter& c, const common::Options& options) {
     // The scene is read before any Vulkan object exists: a bad file fails fast with exit code 2.
     common::ModelCache models;
-    common::Scene scene = common::sceneFromOptions(options, models);
+    c.scene = common::sceneFromOptions(options, models);
 
-    common::Target target = common::openTarget(options, "chapter-10: deferred shading with render passes");
-    common::Instance instance =
-        common::createInstance("chapter-10", options.validation, common::targetInstanceExtensions(target));
-    common::createTargetSurface(target, instance);
-    common::Device device = common::createDevice(instance, target.surface, options.device);
-    common::createTargetImages(target, device);
-    std::vector<Frame> frames = createFrames(device, options.framesInFlight);
+    c.target = common::openTarget(options, "chapter-10: deferred shading with render passes");
+    c.instance =
+        common::createInstance("chapter-10", options.validation, common::targetInstanceExtensions(c.target));
+    common::createTargetSurface(c.target, c.instance);
+    c.device = common::createDevice(c.instance, c.target.surface, options.device);
+    common::createTargetImages(c.target, c.device);
+    c.frames = createFrames(c.device, options.framesInFlight);
 
-    common::GpuScene gpuScene = common::loadGpuScene(device, scene, models, {});
-    models.clear();  // the CPU copies are on the GPU now
-    std::printf("chapter-10: %zu draws, %llu triangles, %zu textures, %zu materials\n", gpuScene.draws.size(),
-                static_cast<unsigned long long>(gpuScene.triangles), gpuScene.textures.size(),
-                gpuScene.materials.size());
+    c.gpuScene = common::loadGpuScene(c.device, c.scene, models, {});  // the CPU copies go with `models`
+    std::printf("chapter-10: %zu draws, %llu triangles, %zu textures, %zu materials\n",
+                c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),
+                c.gpuScene.textures.size(), c.gpuScene.materials.size());
 
-    common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-10");
-    GeometryPass geometryPass =
-        createGeometryPass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
-    LightingPass lightingPass =
-        createLightingPass(device, pipelineCache.handle, target, geometryPass.gbuffer);
-    LightingView lightingView{int(options.view), scene.camera.near, scene.camera.far};
-    recordLightingPass(device, lightingPass, target, lightingView);
+    c.pipelineCache = common::loadPipelineCache(c.device, "chapter-10");
+    c.geometryPass = createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                        options.framesInFlight);
+    c.lightingPass = createLightingPass(c.device, c.pipelineCache.handle, c.target, c.geometryPass.gbuffer);
+    c.lightingView = {int(options.view), c.scene.camera.near, c.scene.camera.far};
+    recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
 
-    common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
-    common::CameraInput cameraInput;
-    setProjection(geometryPass, common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near,
-                                                         scene.camera.far));
+    c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
+    setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
+                                                           c.scene.camera.near, c.scene.camera.far));
+    c.run = common::createRunControl(options, c.device, {"geometry", "lighting"});
+    c.imageInFlight.assign(c.target.images.size(), VK_NULL_HANDLE);
+}
+//< setup
 
-    // --benchmark: timestamps at the start, after the geometry pass, after the lighting pass. The
-    // lighting command buffers are pre-recorded per image, so the last timestamp goes into the frame
-    // slot's own small command buffer, submitted right after the lighting one.
-    common::RunControl run = common::createRunControl(options, device, {"geometry", "lighting"});
-    //< setup
+//> resize
+// A new target size: new G-buffer attachments and geometry framebuffer, new lighting
+// framebuffers and descriptors, a new projection, and the lighting command buffers
+// recorded again. Render passes and pipelines stay.
+bool recreateTarget(Chapter& c) {
+    if (!common::recreateTargetImages(c.target, c.device)) return false;  // waits for the device
+    resizeGeometryPass(c.device, c.geometryPass, c.target.extent);
+    resizeLightingPass(c.device, c.lightingPass, c.target, c.geometryPass.gbuffer);
+    recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
+    setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
+                                                           c.scene.camera.near, c.scene.camera.far));
+    c.imageInFlight.assign(c.target.images.size(), VK_NULL_HANDLE);
+    return true;
+}
+//< resize
 
-    //> resize
-    // A new target size: new G-buffer attachments and geometry framebuffer, new lighting
-    // framebuffers and descriptors, a new projection, and the lighting command buffers
-    // recorded again. Render passes and pipelines stay.
-    std::vector<VkFence> imageInFlight(target.images.size(), VK_NULL_HANDLE);
-    auto recreateTarget = [&] {
-        if (!common::recreateTargetImages(target, device)) return false;  // waits for the device
-        resizeGeometryPass(device, geometryPass, target.extent);
-        resizeLightingPass(device, lightingPass, target, geometryPass.gbuffer);
-        recordLightingPass(device, lightingPass, target, lightingView);
-        setProjection(geometryPass, common::projectionMatrix(scene.camera.fov, target.extent,
-                                                             scene.camera.near, scene.camera.far));
-        imageInFlight.assign(target.images.size(), VK_NULL_HANDLE);
-        return true;
-    };
-    //< resize
-
-    //> frame-loop
+//> frame-loop
+void frameLoop(Chapter& c, const common::Options& options) {
     double lastTime = glfwGetTime();
     common::KeyPress viewKey{GLFW_KEY_V};
     for (uint32_t frame = 0;;) {
-        bool lastFrame = common::beginFrame(run, target, frame);
+        bool lastFrame = common::beginFrame(c.run, c.target, frame);
         uint32_t slot = frame % options.framesInFlight;
-        Frame& inFlight = frames[slot];
+        Frame& inFlight = c.frames[slot];
         common::FrameSync& sync = inFlight.sync;
 
-        if (target.window) {  // camera controls, and V cycles through the --view attachments
+        if (c.target.window) {  // camera controls, and V cycles through the --view attachments
             double now = glfwGetTime();
-            float speed = glm::length(gpuScene.boundsMax - gpuScene.boundsMin) * 0.15f;
-            common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed);
+            float speed = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin) * 0.15f;
+            common::moveCamera(c.target.window, c.camera, c.cameraInput, float(now - lastTime), speed);
             lastTime = now;
-            if (common::pressedOnce(target.window, viewKey)) {
-                lightingView.view = (lightingView.view + 1) % int(kChapter.views.size());
-                VK_CHECK(vkDeviceWaitIdle(device.handle));  // the lighting command buffers are re-recorded
-                recordLightingPass(device, lightingPass, target, lightingView);
+            if (common::pressedOnce(c.target.window, viewKey)) {
+                c.lightingView.view = (c.lightingView.view + 1) % int(kChapter.views.size());
+                VK_CHECK(vkDeviceWaitIdle(c.device.handle));  // the lighting command buffers are re-recorded
+                recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
             }
         }
 
-        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        common::collectGpuTimes(run, device, slot);
+        VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
-        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget()) break;
+        if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget(c)) break;
             continue;
         }
         // The lighting command buffer of this image is reused as recorded: the frame that last
         // submitted it must be finished (it may have used the other frame-in-flight slot).
-        if (imageInFlight[imageIndex] != VK_NULL_HANDLE && imageInFlight[imageIndex] != sync.inFlight)
-            VK_CHECK(vkWaitForFences(device.handle, 1, &imageInFlight[imageIndex], VK_TRUE, UINT64_MAX));
-        imageInFlight[imageIndex] = sync.inFlight;
-        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+        if (c.imageInFlight[imageIndex] != VK_NULL_HANDLE && c.imageInFlight[imageIndex] != sync.inFlight)
+            VK_CHECK(vkWaitForFences(c.device.handle, 1, &c.imageInFlight[imageIndex], VK_TRUE, UINT64_MAX));
+        c.imageInFlight[imageIndex] = sync.inFlight;
+        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
 
         // Geometry pass: recorded every frame (the camera moves), submitted on its own, and it
         // signals geometryComplete. It does not touch the target image, so it does not wait for it.
-        setView(geometryPass, slot, common::viewMatrix(camera));
-        VK_CHECK(vkResetCommandPool(device.handle, inFlight.geometryPool, 0));
+        setView(c.geometryPass, slot, common::viewMatrix(c.camera));
+        VK_CHECK(vkResetCommandPool(c.device.handle, inFlight.geometryPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(inFlight.geometryCommands, &beginInfo));
-        common::timeFrameStart(run, inFlight.geometryCommands, slot, frame);
-        recordGeometryPass(inFlight.geometryCommands, geometryPass, gpuScene, slot);
-        common::timePassEnd(run, inFlight.geometryCommands, slot, 0);
+        common::timeFrameStart(c.run, inFlight.geometryCommands, slot, frame);
+        recordGeometryPass(inFlight.geometryCommands, c.geometryPass, c.gpuScene, slot);
+        common::timePassEnd(c.run, inFlight.geometryCommands, slot, 0);
         VK_CHECK(vkEndCommandBuffer(inFlight.geometryCommands));
         VkSubmitInfo geometrySubmit{
             .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
@@ -184,7 +206,7 @@ void run(const common::Options& options) {
             .signalSemaphoreCount = 1,
             .pSignalSemaphores = &inFlight.geometryComplete,
         };
-        VK_CHECK(vkQueueSubmit(device.queue, 1, &geometrySubmit, VK_NULL_HANDLE));
+        VK_CHECK(vkQueueSubmit(c.device.queue, 1, &geometrySubmit, VK_NULL_HANDLE));
 
         // Lighting pass: its pre-recorded command buffer for this image. It waits for the
         // G-buffer where it first reads it (the fragment shader) and for the image where it
@@ -193,11 +215,11 @@ void run(const common::Options& options) {
         VkSemaphore waits[] = {inFlight.geometryComplete, sync.imageAvailable};
         VkPipelineStageFlags waitStages[] = {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                                              VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT};
-        VkCommandBuffer lighting[] = {lightingPass.commandBuffers[imageIndex], sync.commandBuffer};
-        if (run.benchmark) {
-            VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
+        VkCommandBuffer lighting[] = {c.lightingPass.commandBuffers[imageIndex], sync.commandBuffer};
+        if (c.run.benchmark) {
+            VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
             VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-            common::timePassEnd(run, sync.commandBuffer, slot, 1);
+            common::timePassEnd(c.run, sync.commandBuffer, slot, 1);
             VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
         }
         VkSubmitInfo lightingSubmit{
@@ -205,39 +227,52 @@ void run(const common::Options& options) {
             .waitSemaphoreCount = 2,
             .pWaitSemaphores = waits,
             .pWaitDstStageMask = waitStages,
-            .commandBufferCount = run.benchmark ? 2u : 1u,
+            .commandBufferCount = c.run.benchmark ? 2u : 1u,
             .pCommandBuffers = lighting,
             .signalSemaphoreCount = 1,
-            .pSignalSemaphores = &target.renderFinished[imageIndex],
+            .pSignalSemaphores = &c.target.renderFinished[imageIndex],
         };
-        VK_CHECK(vkQueueSubmit(device.queue, 1, &lightingSubmit, sync.inFlight));
+        VK_CHECK(vkQueueSubmit(c.device.queue, 1, &lightingSubmit, sync.inFlight));
 
-        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
-        bool current = common::presentTargetImage(target, device, imageIndex);
-        common::endFrame(run, frame);
+        if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        common::endFrame(c.run, frame);
         if (lastFrame) break;
-        if (!current && !recreateTarget()) break;
+        if (!current && !recreateTarget(c)) break;
         ++frame;
     }
-    VK_CHECK(vkDeviceWaitIdle(device.handle));
-    //< frame-loop
-    common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
-
-    //> teardown
-    common::destroyRunControl(device, run);
-    common::savePipelineCache(device, pipelineCache);
-    destroyLightingPass(device, lightingPass);
-    destroyGeometryPass(device, geometryPass);
-    common::destroyPipelineCache(device, pipelineCache);
-    common::destroyGpuScene(device, gpuScene);
-    destroyFrames(device, frames);
-    common::destroyTargetImages(target, device);
-    common::destroyDevice(device);
-    common::destroyTargetSurface(target, instance);
-    common::destroyInstance(instance);
-    common::closeTarget(target);
-    //< teardown
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
 }
+//< frame-loop
+
+//> teardown
+void tearDown(Chapter& c) {
+    common::destroyRunControl(c.device, c.run);
+    common::savePipelineCache(c.device, c.pipelineCache);
+    destroyLightingPass(c.device, c.lightingPass);
+    destroyGeometryPass(c.device, c.geometryPass);
+    common::destroyPipelineCache(c.device, c.pipelineCache);
+    common::destroyGpuScene(c.device, c.gpuScene);
+    destroyFrames(c.device, c.frames);
+    common::destroyTargetImages(c.target, c.device);
+    common::destroyDevice(c.device);
+    common::destroyTargetSurface(c.target, c.instance);
+    common::destroyInstance(c.instance);
+    common::closeTarget(c.target);
+}
+//< teardown
+
+//> run
+// The chapter in four steps: set up, the frame loop, the report (--benchmark), tear down.
+void run(const common::Options& options) {
+    Chapter chapter;
+    setUp(chapter, options);
+    frameLoop(chapter, options);
+    common::reportRun(chapter.run, chapter.device,
+                      common::benchmarkInfo(kChapter, options, chapter.device, chapter.target));
+    tearDown(chapter);
+}
+//< run
 
 }  // namespace
 

@@ -54,114 +54,146 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 }
 //< overlay
 
-void run(const common::Options& options) {
-    //> setup
-    common::ModelCache models;
-    common::Scene scene = common::sceneFromOptions(options, models);
-
-    common::Target target = common::openTarget(options, "chapter-14: deferred rendering, dynamic rendering");
-    common::Instance instance =
-        common::createInstance("chapter-14", options.validation, common::targetInstanceExtensions(target));
-    common::createTargetSurface(target, instance);
-    // The two Vulkan 1.3 features this chapter is about.
-    common::Device device = common::createDevice(instance, target.surface, options.device,
-                                                 {.dynamicRendering = true, .synchronization2 = true});
-    common::createTargetImages(target, device);
-    std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
-
-    common::GpuScene gpuScene = common::loadGpuScene(device, scene, models, {});
-    models.clear();
-    std::printf("chapter-14: %zu draws, %llu triangles, %zu textures, %zu materials\n", gpuScene.draws.size(),
-                static_cast<unsigned long long>(gpuScene.triangles), gpuScene.textures.size(),
-                gpuScene.materials.size());
-
-    common::PipelineCache pipelineCache = common::loadPipelineCache(device, "chapter-14");
-    ScenePass scenePass =
-        createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight);
-    LightPass lightPass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer);
-    common::PostPass postPass =
-        common::createPostPass(device, pipelineCache.handle, target.format, lightPass.output);
-
-    common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
-    common::CameraInput cameraInput;
-    LightView lightView{int(options.view), scene.camera.near, scene.camera.far};
-    bool fxaa = options.switches.count("fxaa") != 0;
-
-    // --gui: Dear ImGui's context and input (common/gui.cpp) and the pass that draws it.
-    common::Gui gui = common::createGui(options, target);
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
+// reverse), and what the frames change. Made in place, never moved: the window keeps a pointer
+// to its target.
+struct Chapter {
+    common::Scene scene;
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<common::FrameSync> frames;
+    common::GpuScene gpuScene;
+    common::PipelineCache pipelineCache;
+    ScenePass scenePass;
+    LightPass lightPass;
+    common::PostPass postPass;
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
     common::GuiPass guiPass;
-    if (gui.enabled)
-        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+    common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
+    // What the frames change.
+    common::Camera camera;
+    common::CameraInput cameraInput;
+    LightView lightView;
+    bool fxaa = false;
+};
+//< chapter-state
 
-    // --frames, --resize, --benchmark (each pass timed), --screenshot.
+//> setup
+void setUp(Chapter& c, const common::Options& options) {
+    common::ModelCache models;
+    c.scene = common::sceneFromOptions(options, models);
+
+    c.target = common::openTarget(options, "chapter-14: deferred rendering, dynamic rendering");
+    c.instance =
+        common::createInstance("chapter-14", options.validation, common::targetInstanceExtensions(c.target));
+    common::createTargetSurface(c.target, c.instance);
+    // The two Vulkan 1.3 features this chapter is about.
+    c.device = common::createDevice(c.instance, c.target.surface, options.device,
+                                    {.dynamicRendering = true, .synchronization2 = true});
+    common::createTargetImages(c.target, c.device);
+    c.frames = common::createFrameSync(c.device, options.framesInFlight);
+
+    c.gpuScene = common::loadGpuScene(c.device, c.scene, models, {});
+    std::printf("chapter-14: %zu draws, %llu triangles, %zu textures, %zu materials\n",
+                c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),
+                c.gpuScene.textures.size(), c.gpuScene.materials.size());
+
+    c.pipelineCache = common::loadPipelineCache(c.device, "chapter-14");
+    c.scenePass = createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                  options.framesInFlight);
+    c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer);
+    c.postPass =
+        common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
+    c.gui = common::createGui(options, c.target);
+    if (c.gui.enabled)
+        c.guiPass =
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format, options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
-    if (gui.enabled) passes.push_back("gui");
-    common::RunControl run = common::createRunControl(options, device, passes);
-    //< setup
+    if (c.gui.enabled) passes.push_back("gui");
+    c.run = common::createRunControl(options, c.device, passes);
 
-    //> resize
-    auto recreateTarget = [&] {
-        if (!common::recreateTargetImages(target, device)) return false;  // waits for the device
-        resizeScenePass(device, scenePass, target.extent);
-        resizeLightPass(device, lightPass, target.extent, scenePass.gbuffer);
-        common::resizePostPass(device, postPass, lightPass.output);
-        return true;
-    };
-    //< resize
+    c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
+    c.lightView = {int(options.view), c.scene.camera.near, c.scene.camera.far};
+    c.fxaa = options.switches.count("fxaa") != 0;
+}
+//< setup
 
-    //> frame-loop
+//> resize
+bool recreateTarget(Chapter& c) {
+    if (!common::recreateTargetImages(c.target, c.device)) return false;  // waits for the device
+    resizeScenePass(c.device, c.scenePass, c.target.extent);
+    resizeLightPass(c.device, c.lightPass, c.target.extent, c.scenePass.gbuffer);
+    common::resizePostPass(c.device, c.postPass, c.lightPass.output);
+    return true;
+}
+//< resize
+
+// The keys (unless the overlay has them): the camera; V cycles the views, F toggles FXAA.
+void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common::KeyPress& fxaaKey) {
+    if (!c.target.window) return;
+    bool keys = !common::guiWantsKeyboard(c.gui), mouse = !common::guiWantsMouse(c.gui);
+    double now = glfwGetTime();
+    float speed = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin) * 0.15f;
+    common::moveCamera(c.target.window, c.camera, c.cameraInput, float(now - lastTime), speed, keys, mouse);
+    lastTime = now;
+    if (common::pressedOnce(c.target.window, viewKey) && keys)
+        c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
+    if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
+}
+
+//> record-frame
+// One command buffer for the whole frame: three passes (four with --gui), joined by barriers
+// only, each timed for --benchmark.
+void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
+                 ImDrawData* overlay) {
+    setCamera(c.scenePass, slot,
+              common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
+                                       c.scene.camera.far),
+              common::viewMatrix(c.camera));
+    VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
+    VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+    common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
+    recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 0);
+    recordLightPass(sync.commandBuffer, c.lightPass, c.lightView);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 1);
+    common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
+    common::timePassEnd(c.run, sync.commandBuffer, slot, 2);
+    if (c.gui.enabled) {
+        common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
+        common::timePassEnd(c.run, sync.commandBuffer, slot, 3);
+    }
+    VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+}
+//< record-frame
+
+//> frame-loop
+void frameLoop(Chapter& c, const common::Options& options) {
     double lastTime = glfwGetTime();
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
     for (uint32_t frame = 0;;) {
-        bool lastFrame = common::beginFrame(run, target, frame);
+        bool lastFrame = common::beginFrame(c.run, c.target, frame);
         uint32_t slot = frame % options.framesInFlight;
-        common::FrameSync& sync = frames[slot];
+        common::FrameSync& sync = c.frames[slot];
+        ImDrawData* overlay = common::drawGui(
+            c.gui, c.target, frame, [&] { overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa); });
+        handleInput(c, lastTime, viewKey, fxaaKey);
 
-        ImDrawData* overlay =
-            common::drawGui(gui, target, frame, [&] { overlayWidgets(gui, run, &lightView.view, &fxaa); });
-        bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
-        if (target.window) {  // camera; V cycles the views, F toggles FXAA (unless the GUI has them)
-            double now = glfwGetTime();
-            float speed = glm::length(gpuScene.boundsMax - gpuScene.boundsMin) * 0.15f;
-            common::moveCamera(target.window, camera, cameraInput, float(now - lastTime), speed, keys, mouse);
-            lastTime = now;
-            if (common::pressedOnce(target.window, viewKey) && keys)
-                lightView.view = (lightView.view + 1) % int(kChapter.views.size());
-            if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
-        }
-
-        VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
-        common::collectGpuTimes(run, device, slot);
+        VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
-        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget()) break;
+        if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget(c)) break;
             continue;
         }
-        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
-        if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
+        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
+        if (c.gui.enabled) common::updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
-        // One command buffer for the whole frame: three passes (four with --gui), joined by
-        // barriers only.
-        setCamera(
-            scenePass, slot,
-            common::projectionMatrix(scene.camera.fov, target.extent, scene.camera.near, scene.camera.far),
-            common::viewMatrix(camera));
-        VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
-        VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                           .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-        VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-        common::timeFrameStart(run, sync.commandBuffer, slot, frame);
-        recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot);
-        common::timePassEnd(run, sync.commandBuffer, slot, 0);
-        recordLightPass(sync.commandBuffer, lightPass, lightView);
-        common::timePassEnd(run, sync.commandBuffer, slot, 1);
-        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
-        common::timePassEnd(run, sync.commandBuffer, slot, 2);
-        if (gui.enabled) {
-            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
-            common::timePassEnd(run, sync.commandBuffer, slot, 3);
-        }
-        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+        recordFrame(c, sync, slot, frame, imageIndex, overlay);
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
         // waited for where it is first written (colour output, the post pass); renderFinished
@@ -173,7 +205,7 @@ void run(const common::Options& options) {
         };
         VkSemaphoreSubmitInfo signal{
             .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
-            .semaphore = target.renderFinished[imageIndex],
+            .semaphore = c.target.renderFinished[imageIndex],
             .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
         };
         VkCommandBufferSubmitInfo commands{
@@ -189,44 +221,62 @@ void run(const common::Options& options) {
             .signalSemaphoreInfoCount = 1,
             .pSignalSemaphoreInfos = &signal,
         };
-        VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(vkQueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
 
-        if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
-        bool current = common::presentTargetImage(target, device, imageIndex);
-        common::endFrame(run, frame);
+        if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        common::endFrame(c.run, frame);
         if (lastFrame) break;
-        if (!current && !recreateTarget()) break;
+        if (!current && !recreateTarget(c)) break;
         ++frame;
     }
-    VK_CHECK(vkDeviceWaitIdle(device.handle));
-    //< frame-loop
-    if (camera.position != scene.camera.position || camera.yaw != scene.camera.yaw ||
-        camera.pitch != scene.camera.pitch)
-        std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
-                    camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
-    common::reportRun(run, device, common::benchmarkInfo(kChapter, options, device, target));
-    if (gui.enabled)
-        std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
-                    guiPass.growths, guiPass.largestVertices, guiPass.largestIndices);
-
-    //> teardown
-    common::destroyRunControl(device, run);
-    if (gui.enabled) common::destroyGuiPass(device, guiPass);
-    common::destroyGui(gui);
-    common::savePipelineCache(device, pipelineCache);
-    common::destroyPostPass(device, postPass);
-    destroyLightPass(device, lightPass);
-    destroyScenePass(device, scenePass);
-    common::destroyPipelineCache(device, pipelineCache);
-    common::destroyGpuScene(device, gpuScene);
-    common::destroyFrameSync(device, frames);
-    common::destroyTargetImages(target, device);
-    common::destroyDevice(device);
-    common::destroyTargetSurface(target, instance);
-    common::destroyInstance(instance);
-    common::closeTarget(target);
-    //< teardown
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
 }
+//< frame-loop
+
+// After the last frame: where the camera went, the --benchmark report, the GUI buffers' growth.
+void report(Chapter& c, const common::Options& options) {
+    const common::CameraDesc& start = c.scene.camera;
+    if (c.camera.position != start.position || c.camera.yaw != start.yaw || c.camera.pitch != start.pitch)
+        std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
+                    c.camera.pitch);
+    common::reportRun(c.run, c.device, common::benchmarkInfo(kChapter, options, c.device, c.target));
+    if (c.gui.enabled)
+        std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);
+}
+
+//> teardown
+void tearDown(Chapter& c) {
+    common::destroyRunControl(c.device, c.run);
+    if (c.gui.enabled) common::destroyGuiPass(c.device, c.guiPass);
+    common::destroyGui(c.gui);
+    common::savePipelineCache(c.device, c.pipelineCache);
+    common::destroyPostPass(c.device, c.postPass);
+    destroyLightPass(c.device, c.lightPass);
+    destroyScenePass(c.device, c.scenePass);
+    common::destroyPipelineCache(c.device, c.pipelineCache);
+    common::destroyGpuScene(c.device, c.gpuScene);
+    common::destroyFrameSync(c.device, c.frames);
+    common::destroyTargetImages(c.target, c.device);
+    common::destroyDevice(c.device);
+    common::destroyTargetSurface(c.target, c.instance);
+    common::destroyInstance(c.instance);
+    common::closeTarget(c.target);
+}
+//< teardown
+
+//> run
+// The chapter in four steps: set up, the frame loop, the report, tear down.
+void run(const common::Options& options) {
+    Chapter chapter;
+    setUp(chapter, options);
+    frameLoop(chapter, options);
+    report(chapter, options);
+    tearDown(chapter);
+}
+//< run
 
 }  // namespace
 

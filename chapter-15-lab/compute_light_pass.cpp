@@ -15,7 +15,8 @@ LightPassSetup computeLightPassSetup(VkShaderStageFlags alsoStages) {
             .outputUsage = VK_IMAGE_USAGE_STORAGE_BIT};
 }
 
-void writeComputeOutput(const common::Device& device, const ComputeLightPass& pass, const LightPass& lightPass) {
+void writeComputeOutput(const common::Device& device, const ComputeLightPass& pass,
+                        const LightPass& lightPass) {
     // The shader writes the output through a storage-image descriptor, in GENERAL layout.
     VkDescriptorImageInfo image{.imageView = lightPass.output.view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL};
     VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
@@ -70,9 +71,9 @@ void recordComputeLightPass(VkCommandBuffer cmd, const ComputeLightPass& pass, c
     VkDescriptorSet sets[] = {lightPass.attachmentsSet, lightPass.frames[frame].lightsSet,
                               lightPass.frames[frame].sceneSet, pass.outputSet, tileLists};
     VkImageMemoryBarrier2 init = common::imageBarrier(
-        lightPass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        lightPass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     common::pipelineBarrier(cmd, &init, 1);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);

@@ -31,7 +31,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
                                         const LightPass& lightPass, const std::string& shader,
                                         VkDescriptorSetLayout tileLists);
 // Points set 3 at the light pass's (new) output image.
-void writeComputeOutput(const common::Device& device, const ComputeLightPass& pass, const LightPass& lightPass);
+void writeComputeOutput(const common::Device& device, const ComputeLightPass& pass,
+                        const LightPass& lightPass);
 // `tileLists`: --light-culling tiled's set, else VK_NULL_HANDLE.
 void recordComputeLightPass(VkCommandBuffer cmd, const ComputeLightPass& pass, const LightPass& lightPass,
                             uint32_t frame, const LightView& view, VkDescriptorSet tileLists);

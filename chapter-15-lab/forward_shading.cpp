@@ -30,13 +30,13 @@ Shading readShading(const common::Options& options) {
 ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cache, const ScenePass& scenePass,
                               const LightPass& lightPass) {
     ForwardPass pass;
-    pass.pipelines = createScenePipelines(device, cache, scenePass,
-                                          {.shaders = {.vertex = "chapter-15-lab/scene.vert",
-                                                       .fragment = "chapter-15-lab/forward.frag"},
-                                           .colorFormats = {kLightOutputFormat},
-                                           .depthFormat = scenePass.layout->formats.depth,
-                                           .reversedZ = scenePass.layout->reversedZ,
-                                           .moreSets = {lightPass.lightsLayout, lightPass.sceneLayout}});
+    pass.pipelines = createScenePipelines(
+        device, cache, scenePass,
+        {.shaders = {.vertex = "chapter-15-lab/scene.vert", .fragment = "chapter-15-lab/forward.frag"},
+         .colorFormats = {kLightOutputFormat},
+         .depthFormat = scenePass.layout->formats.depth,
+         .reversedZ = scenePass.layout->reversedZ,
+         .moreSets = {lightPass.lightsLayout, lightPass.sceneLayout}});
     return pass;
 }
 

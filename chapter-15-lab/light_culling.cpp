@@ -43,7 +43,8 @@ LightOptions readLightOptions(const common::Options& options, common::Scene& sce
     if (std::optional<float> cutoff =
             numberOption(options, "light-cutoff", 1.2e-38f, 1e30f, "a positive number (an irradiance)")) {
         size_t ranged = applyLightCutoff(scene, *cutoff);
-        std::printf("chapter-15-lab: --light-cutoff %g: %zu point lights get a range\n", double(*cutoff), ranged);
+        std::printf("chapter-15-lab: --light-cutoff %g: %zu point lights get a range\n", double(*cutoff),
+                    ranged);
     }
     return result;
 }
@@ -299,7 +300,8 @@ LightCullingStats readLightCullingStats(const LightCullingPass& c) {
 void reportLightCulling(const LightCullingPass& c) {
     LightCullingStats stats = readLightCullingStats(c);
     std::printf(
-        "chapter-15-lab: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a tile, "
+        "chapter-15-lab: light culling: %u light-tile pairs, %u of %u tiles lit, at most %u lights in a "
+        "tile, "
         "%u tiles over capacity (%u indices)\n",
         stats.pairs, stats.litTiles, c.tiles.x * c.tiles.y, stats.maxTileLights, stats.overflowTiles,
         c.capacity);

@@ -49,7 +49,6 @@ static_assert(sizeof(CullView) == 104 && offsetof(CullView, projectionScale) == 
               offsetof(CullView, tileCount) == 80 && offsetof(CullView, extent) == 88 &&
               offsetof(CullView, capacity) == 96 && offsetof(CullView, unboundedLights) == 100);
 
-
 enum class LightCulling { None, Tiled };
 
 // The lab's options that change the lights or the camera.

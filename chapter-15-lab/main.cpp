@@ -76,8 +76,8 @@ const common::ChapterInfo kChapter{
      common::kGuiClickChoice},
 };
 
-// chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its angle kept
-// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
+// chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
+// angle kept within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
 // The point light's marker model follows it.
 struct LightControls {
     int sun = -1;    // index of the first directional light, if any
@@ -210,7 +210,8 @@ LightPasses createLightPasses(const common::Device& device, VkPipelineCache cach
     LightPassSetup setup{.fragmentShader = labLightShader(layout, "frag", tiled),
                          .stages = VK_SHADER_STAGE_FRAGMENT_BIT | culling};
     if (tiled) setup.moreSets = {tileLists};  // set 3
-    passes.pass = createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount, setup);
+    passes.pass =
+        createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount, setup);
     return passes;
 }
 
@@ -229,8 +230,8 @@ void run(const common::Options& options) {
     bool tiled = lightOptions.culling == LightCulling::Tiled;
 
     common::Target target = common::openTarget(options, "chapter-15-lab");
-    common::Instance instance =
-        common::createInstance("chapter-15-lab", options.validation, common::targetInstanceExtensions(target));
+    common::Instance instance = common::createInstance("chapter-15-lab", options.validation,
+                                                       common::targetInstanceExtensions(target));
     common::createTargetSurface(target, instance);
     // chapter-15's features, and maintenance4 for the compute light pass (glslang declares its
     // group size with LocalSizeId).
@@ -270,17 +271,18 @@ void run(const common::Options& options) {
             forwardPass = createForwardPass(device, pipelineCache.handle, scenePass, light.pass);
             return;
         }
-        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight,
-                                    layout->layout, labSceneShaders(*layout));
+        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
+                                    options.framesInFlight, layout->layout, labSceneShaders(*layout));
         if (tiled)
-            culling = createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
-                                         layout->layout, gpuScene.boundsMin, gpuScene.boundsMax);
+            culling =
+                createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
+                                   layout->layout, gpuScene.boundsMin, gpuScene.boundsMax);
         light = createLightPasses(device, pipelineCache.handle, target.extent, scenePass, *layout, lightKind,
                                   options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
         if (tiled)
-            createLightCullingPipelines(device, pipelineCache.handle, culling, light.pass,
-                                        std::string("chapter-15-lab/light_cull_bounds") + layout->shaderSuffix +
-                                            ".comp");
+            createLightCullingPipelines(
+                device, pipelineCache.handle, culling, light.pass,
+                std::string("chapter-15-lab/light_cull_bounds") + layout->shaderSuffix + ".comp");
     };
     createPasses();
     common::PostPass postPass =
@@ -394,7 +396,8 @@ void run(const common::Options& options) {
         lightView.far = projection.far;
         std::vector<ShaderLight> lights = shaderLights(scene);
         uint32_t unbounded = tiled ? putUnboundedFirst(lights) : 0u;  // tiled culling's order
-        updateLights(light.pass, slot, lights, {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
+        updateLights(light.pass, slot, lights,
+                     {camera.position, scene.ambientIntensity, scene.ambientColor, 0u});
         if (tiled)
             updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near,
                                unbounded);
@@ -418,7 +421,8 @@ void run(const common::Options& options) {
                 common::timePassEnd(run, sync.commandBuffer, slot, pass++);
             }
             if (light.compute.pipeline)
-                recordComputeLightPass(sync.commandBuffer, light.compute, light.pass, slot, lightView, tileLists);
+                recordComputeLightPass(sync.commandBuffer, light.compute, light.pass, slot, lightView,
+                                       tileLists);
             else if (tiled)
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView, {&tileLists, 1});
             else
@@ -466,7 +470,8 @@ void run(const common::Options& options) {
     std::vector<std::pair<std::string, std::string>> info =
         common::benchmarkInfo(kChapter, options, device, target);
     // What the scene pass allocated: the G-buffer's attachments, depth alone for forward shading.
-    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.layout->formats))});
+    info.push_back(
+        {"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.layout->formats))});
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -133,7 +133,8 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
     common::beginFullscreen(cmd, pass.output.view, pass.output.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.pipeline);
     VkDescriptorSet sets[] = {pass.attachmentsSet, pass.frames[frame].lightsSet, pass.frames[frame].sceneSet};
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 0, 3, sets, 0,
+                            nullptr);
     if (!moreSets.empty())
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline.layout, 3,
                                 uint32_t(moreSets.size()), moreSets.data(), 0, nullptr);

@@ -32,8 +32,8 @@ struct LightFrame {
 // How a light pass is made. The defaults are the book's: light.frag's full-screen triangle, the
 // only stage that reads the pass's sets, drawing into the output as a colour attachment.
 struct LightPassSetup {
-    std::string fragmentShader = "chapter-15/light.frag";  // under <build>/bin/shaders/; "": no pipeline
-    VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT;             // what reads sets 0-2
+    std::string fragmentShader = "chapter-15/light.frag";      // under <build>/bin/shaders/; "": no pipeline
+    VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT;  // what reads sets 0-2
     VkImageUsageFlags outputUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;  // how the output is written
     std::vector<VkDescriptorSetLayout> moreSets;                          // the pipeline's sets 3..
 };

@@ -193,9 +193,9 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetSurface(c.target, c.instance);
     // scalarBlockLayout: the feature this chapter adds -- the lights and the scene info are read
     // with the C-like scalar layout (gpu_types.hpp).
-    c.device = common::createDevice(
-        c.instance, c.target.surface, options.device,
-        {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+    c.device =
+        common::createDevice(c.instance, c.target.surface, options.device,
+                             {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
     common::createTargetImages(c.target, c.device);
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
@@ -210,11 +210,12 @@ void setUp(Chapter& c, const common::Options& options) {
                                   options.framesInFlight);
     c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
                                   options.framesInFlight, uint32_t(c.scene.lights.size()));
-    c.postPass = common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
+    c.postPass =
+        common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
     c.gui = common::createGui(options, c.target);
     if (c.gui.enabled)
-        c.guiPass = common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format,
-                                          options.framesInFlight);
+        c.guiPass =
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format, options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -260,8 +261,8 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
 // This frame's uniforms: the camera, the lights (they may have moved), the scene info.
 void updateFrame(Chapter& c, uint32_t slot) {
     glm::mat4 view = common::viewMatrix(c.camera);
-    glm::mat4 projection =
-        common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near, c.scene.camera.far);
+    glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
+                                                    c.scene.camera.far);
     setCamera(c.scenePass, slot, projection, view);
     updateLights(c.lightPass, slot, shaderLights(c.scene),
                  {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
@@ -352,7 +353,8 @@ void report(Chapter& c, const common::Options& options) {
     const common::CameraDesc& start = c.scene.camera;
     if (c.camera.position != start.position || c.camera.yaw != start.yaw || c.camera.pitch != start.pitch)
         std::printf("chapter-15: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
-                    c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw, c.camera.pitch);
+                    c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
+                    c.camera.pitch);
     std::vector<std::pair<std::string, std::string>> info =
         common::benchmarkInfo(kChapter, options, c.device, c.target);
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});

@@ -156,8 +156,8 @@ void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelin
 }
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight,
-                          const GBufferLayout& layout, const SceneShaders& shaders) {
+                          const common::GpuScene& scene, uint32_t framesInFlight, const GBufferLayout& layout,
+                          const SceneShaders& shaders) {
     ScenePass pass;
     pass.layout = &layout;
     for (VkFormat format : common::colorFormats(layout.formats)) {

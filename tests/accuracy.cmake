@@ -1,4 +1,4 @@
-# Accuracy tests of chapter-15 on the hard scenes (tests/scenes/): every G-buffer layout renders
+# Accuracy tests of chapter-15-lab (chapter-15's passes) on the hard scenes (tests/scenes/): every G-buffer layout renders
 # with a finite, non-negative light output; on the same fp32 G-buffer the GPU's shading matches the
 # CPU's fp64 shading (tests/accuracy/reference_render.cpp); and the compact layout comes closer
 # than the book's to the reference (all-fp32 G-buffer, shaded in fp64).
@@ -13,7 +13,7 @@ foreach(scene IN LISTS HARD_SCENES)
     set(scene_file ${CMAKE_CURRENT_BINARY_DIR}/scenes/${scene}.json)
     foreach(layout reference book compact)
         chapter_test(accuracy.${scene}.render-${layout}
-            COMMAND ${CH15} --device llvmpipe --validation --headless ${ACCURACY_SIZE} --scene ${scene_file}
+            COMMAND ${LAB} --device llvmpipe --validation --headless ${ACCURACY_SIZE} --scene ${scene_file}
                     --gbuffer ${layout} --check-output --dump ${ACCURACY_OUT}/${scene}-${layout}
             EXPECT_STDOUT "0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
         set_tests_properties(accuracy.${scene}.render-${layout} PROPERTIES FIXTURES_SETUP acc-${scene}-${layout})

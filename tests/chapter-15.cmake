@@ -90,33 +90,3 @@ chapter_test(chapter-15.bad-view COMMAND ${CH15} --headless --view specular
     EXPECT_EXIT 2 EXPECT_STDERR "--view must be one of final\\|position\\|albedo\\|normal\\|pbr\\|depth" ONE_LINE_STDERR)
 
 standalone_build_test(15 --width 320 --height 180)
-
-# --light-pass compute: the same shading in a compute dispatch. Its image must match the fragment
-# form's rendered in this test run (views final and normal, both layouts), within one 8-bit step;
-# the final image also against the golden image; resizing rewrites its storage-image descriptor.
-foreach(layout book compact)
-    foreach(view final normal)
-        foreach(kind fragment compute)
-            set(name chapter-15.light-${kind}-${layout}-${view})
-            chapter_test(${name}
-                COMMAND ${CH15_RUN} --headless ${CH15_SIZE} --gbuffer ${layout} --light-pass ${kind} --view ${view}
-                        --screenshot ${TEST_OUT}/${name}.png QUIET_STDERR)
-            set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name})
-        endforeach()
-        add_test(NAME chapter-15.light-compute-${layout}-${view}-matches-fragment
-            COMMAND image_compare ${TEST_OUT}/chapter-15.light-compute-${layout}-${view}.png --size 640 360
-                    --golden ${TEST_OUT}/chapter-15.light-fragment-${layout}-${view}.png --max-diff 1 --max-fraction 0)
-        set_tests_properties(chapter-15.light-compute-${layout}-${view}-matches-fragment PROPERTIES
-            FIXTURES_REQUIRED "chapter-15.light-compute-${layout}-${view};chapter-15.light-fragment-${layout}-${view}")
-    endforeach()
-endforeach()
-add_test(NAME chapter-15.light-compute-book-final-image
-    COMMAND image_compare ${TEST_OUT}/chapter-15.light-compute-book-final.png --size 640 360
-            --golden ${GOLDEN}/chapter-15-final.png --max-diff 5 --max-fraction 0.001)
-set_tests_properties(chapter-15.light-compute-book-final-image PROPERTIES
-    FIXTURES_REQUIRED chapter-15.light-compute-book-final)
-chapter_test(chapter-15.light-compute-resize
-    COMMAND ${CH15_RUN} --headless ${CH15_SIZE} --light-pass compute --frames 4 --resize 333x197 --check-output
-    EXPECT_STDOUT "light output 333x197: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
-chapter_test(chapter-15.bad-light-pass COMMAND ${CH15_RUN} --headless --light-pass tiles
-    EXPECT_EXIT 2 EXPECT_STDERR "--light-pass must be one of fragment\\|compute" ONE_LINE_STDERR)

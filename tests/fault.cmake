@@ -66,7 +66,7 @@ set(OOM "out of GPU memory: vkAllocateMemory\\(device.handle, &allocInfo, nullpt
 set(HOST_OOM "out of memory: ")
 set(LOST "the GPU was lost \\(driver crash, GPU reset or device removed\\): ")
 set(LOST_END "failed with VK_ERROR_DEVICE_LOST \\([a-z_]+\\.cpp:[0-9]+\\)\n$")
-set(FRAME_WAIT "vkWaitForFences\\(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX\\) ${LOST_END}")
+set(FRAME_WAIT "vkWaitForFences\\(c\\.device\\.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX\\) ${LOST_END}")
 
 # Headless, with validation (a faulted call never reaches the validation layer, which sits below
 # ours, and after a failure a chapter makes no more Vulkan calls: it stays quiet).
@@ -102,7 +102,7 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
     fault_test(${name}.lost-at-first-submit FAULT vkQueueSubmit:1 COMMAND ${run}
         EXPECT_STDERR "^chapter-${number}: error: ${LOST}vkQueueSubmit\\(device.queue, 1, &submit, done\\) ${LOST_END}")
     fault_test(${name}.lost-at-frame-3-submit FAULT ${submit} COMMAND ${run} --frames 5
-        EXPECT_STDERR "^chapter-${number}: error: ${LOST}${submitCall}\\(device.queue, 1, &[a-zA-Z]+, sync.inFlight\\) ${LOST_END}")
+        EXPECT_STDERR "^chapter-${number}: error: ${LOST}${submitCall}\\(c\\.device\\.queue, 1, &[a-zA-Z]+, sync.inFlight\\) ${LOST_END}")
     fault_test(${name}.lost-at-frame-3-wait FAULT vkWaitForFences:${wait} COMMAND ${run} --frames 5
         EXPECT_STDERR "^chapter-${number}: error: ${LOST}${FRAME_WAIT}")
 endforeach()

@@ -1,4 +1,4 @@
-# chapter-15 beyond the book: --shading forward, the renderer deferred shading is measured
+# chapter-15-lab: --shading forward, the renderer deferred shading is measured
 # against. Its image must be the deferred one's: with the reference G-buffer (32-bit floats
 # throughout, standard depth, as forward's), the light output equals the loop's up to fp32
 # rounding of the sum (pfm_compare's bound), on the default scene and on many lights with ranges,
@@ -13,17 +13,17 @@ function(forward_case name lights)
         if(shading STREQUAL deferred)
             set(extra --gbuffer reference)
         endif()
-        chapter_test(chapter-15.forward-${name}-${shading}
-            COMMAND ${CH15_RUN} --headless ${F_ARGS} --shading ${shading} ${extra} --check-output
+        chapter_test(chapter-15-lab.forward-${name}-${shading}
+            COMMAND ${LAB_RUN} --headless ${F_ARGS} --shading ${shading} ${extra} --check-output
                     --dump ${TEST_OUT}/forward-${name}-${shading}
             EXPECT_STDOUT "0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
-        set_tests_properties(chapter-15.forward-${name}-${shading} PROPERTIES
+        set_tests_properties(chapter-15-lab.forward-${name}-${shading} PROPERTIES
             FIXTURES_SETUP forward-${name}-${shading})
     endforeach()
-    add_test(NAME chapter-15.forward-${name}-equals-deferred
+    add_test(NAME chapter-15-lab.forward-${name}-equals-deferred
         COMMAND pfm_compare ${TEST_OUT}/forward-${name}-forward/light.pfm
                 ${TEST_OUT}/forward-${name}-deferred/light.pfm --lights ${lights} --min-lit 0.2)
-    set_tests_properties(chapter-15.forward-${name}-equals-deferred PROPERTIES
+    set_tests_properties(chapter-15-lab.forward-${name}-equals-deferred PROPERTIES
         FIXTURES_REQUIRED "forward-${name}-forward;forward-${name}-deferred")
 endfunction()
 
@@ -34,17 +34,23 @@ forward_case(resize 2 ARGS ${CULL_SIZE} --frames 4 --resize 333x197 --frames-in-
 
 # As a picture: forward shading of the default scene against the book's deferred golden image (the
 # two differ by the book G-buffer's half floats: 2/255 at most when this was written).
-chapter_test(chapter-15.forward-final WORKDIR /
-    COMMAND ${CH15_RUN} --headless ${CH15_SIZE} --shading forward --screenshot ${TEST_OUT}/chapter-15-forward.png
+chapter_test(chapter-15-lab.forward-final WORKDIR /
+    COMMAND ${LAB_RUN} --headless ${LAB_SIZE} --shading forward --screenshot ${TEST_OUT}/chapter-15-forward.png
     EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
-set_tests_properties(chapter-15.forward-final PROPERTIES FIXTURES_SETUP ch15-forward)
-add_test(NAME chapter-15.forward-final-image COMMAND image_compare ${TEST_OUT}/chapter-15-forward.png
+set_tests_properties(chapter-15-lab.forward-final PROPERTIES FIXTURES_SETUP ch15-forward)
+add_test(NAME chapter-15-lab.forward-final-image COMMAND image_compare ${TEST_OUT}/chapter-15-forward.png
     --size 640 360 --golden ${GOLDEN}/chapter-15-final.png --max-diff 5 --max-fraction 0.001)
-set_tests_properties(chapter-15.forward-final-image PROPERTIES FIXTURES_REQUIRED ch15-forward)
+set_tests_properties(chapter-15-lab.forward-final-image PROPERTIES FIXTURES_REQUIRED ch15-forward)
+
+# Forward shading allocates depth alone, no G-buffer attachment, and says so: 4 bytes a pixel
+# against the deferred layouts' 36 (book), 68 (reference) and 16 (compact).
+chapter_test(chapter-15-lab.forward-allocates-depth-only
+    COMMAND ${LAB_RUN} --headless ${CULL_SIZE} --shading forward --benchmark --warmup 0 --frames 1
+    EXPECT_STDOUT "gbuffer_bytes_per_pixel +4\n" QUIET_STDERR)
 
 # The overlay with forward shading: no G-buffer or light-pass choice, no G-buffer view.
-chapter_test(chapter-15.forward-gui
-    COMMAND ${CH15_RUN} --headless --width 640 --height 360 --shading forward --gui --frames 3 QUIET_STDERR)
+chapter_test(chapter-15-lab.forward-gui
+    COMMAND ${LAB_RUN} --headless --width 640 --height 360 --shading forward --gui --frames 3 QUIET_STDERR)
 
 # What needs a G-buffer is refused, each with one line.
 foreach(case "light-pass compute|--light-pass compute shades the G-buffer: --shading forward has none"
@@ -56,9 +62,9 @@ foreach(case "light-pass compute|--light-pass compute shades the G-buffer: --sha
     list(GET case 1 message)
     string(REPLACE " " ";" option_args "${option}")
     string(REPLACE " " "-" option_name "${option}")
-    chapter_test(chapter-15.forward-refuses-${option_name}
-        COMMAND ${CH15} --headless --shading forward --${option_args}
+    chapter_test(chapter-15-lab.forward-refuses-${option_name}
+        COMMAND ${LAB} --headless --shading forward --${option_args}
         EXPECT_EXIT 2 EXPECT_STDERR "${message}" ONE_LINE_STDERR)
 endforeach()
-chapter_test(chapter-15.bad-shading COMMAND ${CH15} --headless --shading forward+
+chapter_test(chapter-15-lab.bad-shading COMMAND ${LAB} --headless --shading forward+
     EXPECT_EXIT 2 EXPECT_STDERR "--shading must be one of deferred\\|forward" ONE_LINE_STDERR)

@@ -1,9 +1,10 @@
-# The --gui overlay of chapters 14 and 15 (common/gui.cpp, common/gui_pass.cpp): golden images
-# headless (the overlay is deterministic there: timings as placeholders); clicks on the overlay (--gui-click, scripted) that switch chapter-15's G-buffer
-# layout and light pass live, with a resize, under validation; the buffers growing when the help
-# window opens; a size too small for the overlay; the GUI pass's row in --benchmark; and in a real
-# window under Xvfb, xdotool clicks, drags and F1.
-foreach(chapter 14 15)
+# The --gui overlay of chapters 14 and 15 and chapter-15-lab (common/gui.cpp, common/gui_pass.cpp):
+# golden images headless (the overlay is deterministic there: timings as placeholders); scripted
+# clicks on the overlay (--gui-click); the buffers growing when the help window opens; a size too
+# small for the overlay; the GUI pass's row in --benchmark; and in a real window under Xvfb,
+# xdotool clicks, drags and F1. The lab's live switch of G-buffer layout and light pass is tested
+# in chapter-15-lab.cmake.
+foreach(chapter 14 15 15-lab)
     set(run $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation)
     chapter_test(chapter-${chapter}.gui
         COMMAND ${run} --headless --width 640 --height 360 --gui --screenshot ${TEST_OUT}/chapter-${chapter}-gui.png
@@ -34,18 +35,6 @@ add_test(NAME chapter-14.gui-click-fxaa-ticked
     COMMAND image_compare ${TEST_OUT}/chapter-14-gui-fxaa.png --pixel 27 241 54 110 182 --pixel-tolerance 6)
 set_tests_properties(chapter-14.gui-click-fxaa-ticked PROPERTIES FIXTURES_REQUIRED ch14-gui-fxaa)
 
-# chapter-15: the G-buffer combo (80,264), then "compact" in its list (45,322); then a resize
-# (at frame 7 of 14): the G-buffer and every pass made again, validation-clean.
-chapter_test(chapter-15.gui-switch-gbuffer
-    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 640 --height 360 --gui
-            --frames 14 --resize 500x300 --gui-click 80,264@2+45,322@5 --check-output
-    EXPECT_STDOUT "switched to the compact G-buffer, fragment light pass.*0 NaN, 0 infinite, 0 negative"
-    QUIET_STDERR)
-# ... and the light-pass combo (80,287), "compute" (45,328), with three frames in flight.
-chapter_test(chapter-15.gui-switch-light-pass
-    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 640 --height 360 --gui
-            --frames 10 --frames-in-flight 3 --gui-click 80,287@2+45,328@5 --check-output
-    EXPECT_STDOUT "switched to the book G-buffer, compute light pass.*0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
 chapter_test(chapter-15.gui-click-bad COMMAND $<TARGET_FILE:chapter-15> --headless --gui --gui-click 10,20
     EXPECT_EXIT 2 EXPECT_STDERR "--gui-click must be X,Y@FRAME" ONE_LINE_STDERR)
 

@@ -1,15 +1,15 @@
-// layout_test SHADER.spv: C++ and GLSL agree on the layout of every struct chapter-15 shares with
-// its shaders. C++ fills two ShaderLights, a ShaderSceneInfo, two ShaderMaterials, a
-// CameraUniform, a DrawConstants and a CullView (in buffers of the layouts the chapter uses) and a LightView
-// (as push constants) with distinct values; a compute shader that includes the same
-// gpu_types.glsl as the chapter reads them and writes each field back; every field must come back
+// layout_test SHADER.spv: C++ and GLSL agree on the layout of every struct chapter-15 (and the
+// lab, chapter-15-lab) shares with its shaders. C++ fills two ShaderLights, a ShaderSceneInfo, two
+// ShaderMaterials, a CameraUniform, a DrawConstants and the lab's CullView (in buffers of the
+// layouts the programs use) and a LightView (as push constants) with distinct values; a compute
+// shader that includes the same gpu_types.glsl and cull_view.glsl reads them and writes each
+// field back; every field must come back
 // as written. A wrong size or offset on either side puts some other field's value there. Exit 0
 // when all agree.
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
-#include "../chapter-15/gpu_types.hpp"
 #include "common/buffer.hpp"
 #include "common/camera.hpp"
 #include "common/check.hpp"
@@ -18,6 +18,8 @@
 #include "common/files.hpp"
 #include "common/instance.hpp"
 #include "gpu_compute.hpp"
+#include "gpu_types.hpp"      // chapter-15
+#include "light_culling.hpp"  // chapter-15-lab: CullView
 
 namespace {
 
@@ -25,17 +27,16 @@ const char* gShaderPath = nullptr;
 
 void run(const common::Options& options) {
     ShaderLight lights[2] = {{{1, 2, 3}, 1u, 4, {5, 6, 7}, 37}, {{8, 9, 10}, 0u, 11, {12, 13, 14}, 38}};
-    ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u, 39u};
+    ShaderSceneInfo scene{{15, 16, 17}, 18, {19, 20, 21}, 22u};
     ShaderMaterial materials[2] = {{{23, 24, 25, 26}, 27, 28, 35u, 40, 41, 42, {0, 0}},
                                    {{29, 30, 31, 32}, 33, 34, 36u, 43, 44, 45, {0, 0}}};
     std::vector<float> expected;
     for (const ShaderLight& l : lights)
         expected.insert(expected.end(), {l.position.x, l.position.y, l.position.z, float(l.directional),
                                          l.intensity, l.color.x, l.color.y, l.color.z, l.range});
-    expected.insert(expected.end(),
-                    {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
-                     scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y, scene.ambientColor.z,
-                     float(scene.lightCount), float(scene.unboundedLightCount)});
+    expected.insert(expected.end(), {scene.cameraPosition.x, scene.cameraPosition.y, scene.cameraPosition.z,
+                                     scene.ambientIntensity, scene.ambientColor.x, scene.ambientColor.y,
+                                     scene.ambientColor.z, float(scene.lightCount)});
     for (const ShaderMaterial& m : materials)
         expected.insert(expected.end(),
                         {m.diffuse.x, m.diffuse.y, m.diffuse.z, m.diffuse.w, m.roughness, m.metallic,
@@ -79,10 +80,12 @@ void run(const common::Options& options) {
     cull.tileCount = {uint32_t(next + 4), uint32_t(next + 5)};
     cull.extent = {uint32_t(next + 6), uint32_t(next + 7)};
     cull.capacity = uint32_t(next + 8);
+    cull.unboundedLights = uint32_t(next + 9);
     columns(&cull.viewRotation[0][0], 4, 4, 4);
-    expected.insert(expected.end(), {cull.projectionScale.x, cull.projectionScale.y, cull.near, cull.margin,
-                                     float(cull.tileCount.x), float(cull.tileCount.y), float(cull.extent.x),
-                                     float(cull.extent.y), float(cull.capacity)});
+    expected.insert(expected.end(),
+                    {cull.projectionScale.x, cull.projectionScale.y, cull.near, cull.margin,
+                     float(cull.tileCount.x), float(cull.tileCount.y), float(cull.extent.x),
+                     float(cull.extent.y), float(cull.capacity), float(cull.unboundedLights)});
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,

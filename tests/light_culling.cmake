@@ -1,4 +1,4 @@
-# chapter-15 beyond the book: light ranges and tiled light culling. The culled image must equal
+# chapter-15-lab: light ranges and tiled light culling. The culled image must equal
 # the book's loop over every light (with the same ranges) up to fp32 rounding of the sum --
 # pfm_compare's bound -- in every hard case, under validation (synchronization validation on):
 # many lights, both light-pass forms and G-buffer layouts; a light whose range covers the whole
@@ -21,16 +21,16 @@ function(culling_case name lights)
         if(mode STREQUAL tiled)
             set(expect "${C_TILED_STDOUT}.*0 NaN, 0 infinite, 0 negative")
         endif()
-        chapter_test(chapter-15.cull-${name}-${mode}
-            COMMAND ${CH15_RUN} --headless ${C_ARGS} --light-culling ${mode} --check-output
+        chapter_test(chapter-15-lab.cull-${name}-${mode}
+            COMMAND ${LAB_RUN} --headless ${C_ARGS} --light-culling ${mode} --check-output
                     --dump ${TEST_OUT}/cull-${name}-${mode}
             EXPECT_STDOUT "${expect}" QUIET_STDERR)
-        set_tests_properties(chapter-15.cull-${name}-${mode} PROPERTIES FIXTURES_SETUP cull-${name}-${mode})
+        set_tests_properties(chapter-15-lab.cull-${name}-${mode} PROPERTIES FIXTURES_SETUP cull-${name}-${mode})
     endforeach()
-    add_test(NAME chapter-15.cull-${name}-equals-loop
+    add_test(NAME chapter-15-lab.cull-${name}-equals-loop
         COMMAND pfm_compare ${TEST_OUT}/cull-${name}-tiled/light.pfm ${TEST_OUT}/cull-${name}-none/light.pfm
                 --lights ${lights} --min-lit 0.2)
-    set_tests_properties(chapter-15.cull-${name}-equals-loop PROPERTIES
+    set_tests_properties(chapter-15-lab.cull-${name}-equals-loop PROPERTIES
         FIXTURES_REQUIRED "cull-${name}-none;cull-${name}-tiled")
 endfunction()
 
@@ -74,25 +74,25 @@ culling_case(sky 8 ARGS ${CULL_SIZE} --scene ${TEST_SCENES}/cull-sky.json)
 
 # 65,536 lights within 2 cm of one point: all of them in one tile (the longest list holds them
 # all), in a tile grid of 12 x 7 tiles.
-add_test(NAME chapter-15.cull-cluster-scene
+add_test(NAME chapter-15-lab.cull-cluster-scene
     COMMAND generate_light_scene ${LIGHT_SCENES}/default 65536 ${TEST_SCENES}/cull-cluster.json --cluster)
-set_tests_properties(chapter-15.cull-cluster-scene PROPERTIES FIXTURES_SETUP cull-cluster-scene)
+set_tests_properties(chapter-15-lab.cull-cluster-scene PROPERTIES FIXTURES_SETUP cull-cluster-scene)
 culling_case(cluster-65536 65536 ARGS --width 96 --height 54 --scene ${TEST_SCENES}/cull-cluster.json
     TILED_STDOUT "at most 65536 lights in a tile")
 foreach(mode none tiled)
-    set_property(TEST chapter-15.cull-cluster-65536-${mode} APPEND PROPERTY FIXTURES_REQUIRED cull-cluster-scene)
+    set_property(TEST chapter-15-lab.cull-cluster-65536-${mode} APPEND PROPERTY FIXTURES_REQUIRED cull-cluster-scene)
 endforeach()
 
 # Lists that do not fit: 2,000 lights whose range (100) covers every tile need 2,000 entries per
 # tile, far more than the 64 per tile (plus 4 per light) the lists are sized for. The tiles that
 # do not fit are shaded with every light, and the image is still the loop's.
-add_test(NAME chapter-15.cull-overflow-scene
+add_test(NAME chapter-15-lab.cull-overflow-scene
     COMMAND generate_light_scene ${LIGHT_SCENES}/default 2000 ${TEST_SCENES}/cull-overflow.json --range 100)
-set_tests_properties(chapter-15.cull-overflow-scene PROPERTIES FIXTURES_SETUP cull-overflow-scene)
+set_tests_properties(chapter-15-lab.cull-overflow-scene PROPERTIES FIXTURES_SETUP cull-overflow-scene)
 culling_case(overflow 2000 ARGS --width 160 --height 90 --scene ${TEST_SCENES}/cull-overflow.json
     TILED_STDOUT "at most 2000 lights in a tile, [1-9][0-9]* tiles over capacity")
 foreach(mode none tiled)
-    set_property(TEST chapter-15.cull-overflow-${mode} APPEND PROPERTY FIXTURES_REQUIRED cull-overflow-scene)
+    set_property(TEST chapter-15-lab.cull-overflow-${mode} APPEND PROPERTY FIXTURES_REQUIRED cull-overflow-scene)
 endforeach()
 
 # A resize (to 333x197: tiles overhang both edges) while frames are in flight: the tile grid and
@@ -104,22 +104,22 @@ culling_case(camera-turning 256
 # --light-cutoff on the default scene: its point light gets a range (sqrt(6 / 0.01) = 24.5).
 culling_case(cutoff 2 ARGS ${CULL_SIZE} --light-cutoff 0.01 TILED_STDOUT "1 point lights get a range.*light culling")
 
-chapter_test(chapter-15.light-cutoff-bad COMMAND ${CH15} --headless --light-cutoff -1
+chapter_test(chapter-15-lab.light-cutoff-bad COMMAND ${LAB} --headless --light-cutoff -1
     EXPECT_EXIT 2 EXPECT_STDERR "--light-cutoff must be a positive number \\(an irradiance\\), got '-1'" ONE_LINE_STDERR)
-chapter_test(chapter-15.light-cutoff-not-a-number COMMAND ${CH15} --headless --light-cutoff 1e-3x
+chapter_test(chapter-15-lab.light-cutoff-not-a-number COMMAND ${LAB} --headless --light-cutoff 1e-3x
     EXPECT_EXIT 2 EXPECT_STDERR "--light-cutoff must be a positive number" ONE_LINE_STDERR)
-chapter_test(chapter-15.light-cutoff-zero COMMAND ${CH15} --headless --light-cutoff 0
+chapter_test(chapter-15-lab.light-cutoff-zero COMMAND ${LAB} --headless --light-cutoff 0
     EXPECT_EXIT 2 EXPECT_STDERR "--light-cutoff must be a positive number" ONE_LINE_STDERR)
-chapter_test(chapter-15.orbit-bad COMMAND ${CH15} --headless --orbit 400
+chapter_test(chapter-15-lab.orbit-bad COMMAND ${LAB} --headless --orbit 400
     EXPECT_EXIT 2 EXPECT_STDERR "--orbit must be a number of degrees within -360..360, got '400'" ONE_LINE_STDERR)
-chapter_test(chapter-15.bad-light-culling COMMAND ${CH15} --headless --light-culling clustered
+chapter_test(chapter-15-lab.bad-light-culling COMMAND ${LAB} --headless --light-culling clustered
     EXPECT_EXIT 2 EXPECT_STDERR "--light-culling must be one of none\\|tiled" ONE_LINE_STDERR)
 
 # The many-light scene as a picture: tiled culling against its golden image.
-chapter_test(chapter-15.lights-1024-tiled
-    COMMAND ${CH15_RUN} --headless ${CH15_SIZE} --scene ${LIGHT_SCENES}/lights-1024/scene.json --light-culling tiled
+chapter_test(chapter-15-lab.lights-1024-tiled
+    COMMAND ${LAB_RUN} --headless ${LAB_SIZE} --scene ${LIGHT_SCENES}/lights-1024/scene.json --light-culling tiled
             --screenshot ${TEST_OUT}/chapter-15-lights-1024.png QUIET_STDERR)
-set_tests_properties(chapter-15.lights-1024-tiled PROPERTIES FIXTURES_SETUP ch15-lights-1024)
-add_test(NAME chapter-15.lights-1024-tiled-image COMMAND image_compare ${TEST_OUT}/chapter-15-lights-1024.png
+set_tests_properties(chapter-15-lab.lights-1024-tiled PROPERTIES FIXTURES_SETUP ch15-lights-1024)
+add_test(NAME chapter-15-lab.lights-1024-tiled-image COMMAND image_compare ${TEST_OUT}/chapter-15-lights-1024.png
     --size 640 360 --golden ${GOLDEN}/chapter-15-lights-1024.png --max-diff 5 --max-fraction 0.001)
-set_tests_properties(chapter-15.lights-1024-tiled-image PROPERTIES FIXTURES_REQUIRED ch15-lights-1024)
+set_tests_properties(chapter-15-lab.lights-1024-tiled-image PROPERTIES FIXTURES_REQUIRED ch15-lights-1024)

@@ -117,20 +117,20 @@ foreach(number 06 10 14 15)
         COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --headless --frames-in-flight 4
         EXPECT_EXIT 2 EXPECT_STDERR "--frames-in-flight" ONE_LINE_STDERR)
 endforeach()
-# Beyond the book: tiled light culling (compute passes, an indirect dispatch) on the many-light
+# The lab (chapter-15-lab): tiled light culling (compute passes, an indirect dispatch) on the many-light
 # scene, against the Linux build's golden image.
-windows_test(windows.chapter-15-lights-1024-tiled
-    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE}
-            --scene $<TARGET_FILE_DIR:chapter-15>/scenes/lights-1024/scene.json --light-culling tiled
+windows_test(windows.chapter-15-lab-lights-1024-tiled
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15-lab> --device llvmpipe --validation --headless ${SIZE}
+            --scene $<TARGET_FILE_DIR:chapter-15-lab>/scenes/lights-1024/scene.json --light-culling tiled
             --screenshot ${WIN_OUT}/chapter-15-lights-1024.png EXPECT_STDOUT "1024 lights.*light culling" QUIET_STDERR)
-windows_image(windows.chapter-15-lights-1024-tiled ${WIN_OUT}/chapter-15-lights-1024.png --size 640 360
+windows_image(windows.chapter-15-lab-lights-1024-tiled ${WIN_OUT}/chapter-15-lights-1024.png --size 640 360
     --golden ${GOLDEN}/chapter-15-lights-1024.png ${GOLDEN_MATCH})
 
-# Beyond the book: forward shading (--shading forward), against the book's deferred golden image.
-windows_test(windows.chapter-15-forward
-    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE} --shading forward
+# The lab: forward shading (--shading forward), against the book's deferred golden image.
+windows_test(windows.chapter-15-lab-forward
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15-lab> --device llvmpipe --validation --headless ${SIZE} --shading forward
             --screenshot ${WIN_OUT}/chapter-15-forward.png EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
-windows_image(windows.chapter-15-forward ${WIN_OUT}/chapter-15-forward.png --size 640 360
+windows_image(windows.chapter-15-lab-forward ${WIN_OUT}/chapter-15-forward.png --size 640 360
     --golden ${GOLDEN}/chapter-15-final.png ${GOLDEN_MATCH})
 
 # The --gui overlay: Dear ImGui built from source (the portable dependency path), the GUI pass

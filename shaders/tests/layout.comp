@@ -1,10 +1,11 @@
 #version 450
 // The layout test: reads the structs of gpu_types.glsl from buffers C++ filled and writes every
 // field, in declaration order, as a float. tests/layout_test.cpp compares them with the values it
-// wrote through the C++ twins (chapter-15/gpu_types.hpp).
+// wrote through the C++ twins (chapter-15/gpu_types.hpp, chapter-15-lab/light_culling.hpp).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #include "gpu_types.glsl"
+#include "../chapter-15-lab/cull_view.glsl"
 
 layout(local_size_x = 1) in;
 
@@ -39,7 +40,6 @@ void main() {
     fields[i++] = scene.ambientColor.y;
     fields[i++] = scene.ambientColor.z;
     fields[i++] = float(scene.lightCount);
-    fields[i++] = float(scene.unboundedLightCount);
     for (int m = 0; m < 2; ++m) {
         fields[i++] = materials[m].diffuse.x;
         fields[i++] = materials[m].diffuse.y;
@@ -79,4 +79,5 @@ void main() {
     fields[i++] = float(cull.extent.x);
     fields[i++] = float(cull.extent.y);
     fields[i++] = float(cull.capacity);
+    fields[i++] = float(cull.unboundedLights);
 }
