@@ -2,8 +2,10 @@
 # docs.options and docs.file-lines: what in the docs can be checked against the code mechanically.
 #
 #   tests/docs_check.sh options ROOT PROGRAM...   every option a program's --help lists is in one of
-#                                                 the README's option tables, and every option a
-#                                                 table lists is one some program's --help has
+#                                                 the README's option tables marked as that
+#                                                 program's (<!-- options-for: ... -->), and every
+#                                                 program a table is marked for has each of its
+#                                                 options
 #   tests/docs_check.sh file-lines ROOT           every FILE:LINE a page quotes (docs/*.md, the
 #                                                 READMEs) names a file of the repository that has
 #                                                 that line
@@ -27,25 +29,47 @@ problem() {
 case $mode in
     options)
         # The README's option tables: rows whose first cell starts with `--...`; every --name in
-        # that cell counts (`--width W`, `--height H`).
-        documented=$(grep -E '^\| `--' "$root/README.md" | cut -d'|' -f2 | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u || true)
-        [ -n "$documented" ] || problem "README.md: no option table (rows starting with | \`--)"
-        offered=""
+        # that cell counts (`--width W`, `--height H`). Each table follows a line
+        # "<!-- options-for: PROGRAM... -->" naming the programs that take all of its options.
+        # Out: "LINE PROGRAM OPTION" for every program of a table and every option of its rows.
+        rows=$(awk '
+            /^<!-- options-for: .* -->$/ { sub(/^<!-- options-for: /, ""); sub(/ -->$/, ""); programs = $0; next }
+            /^\| `--/ {
+                if (programs == "") { print NR " - -"; next }
+                split($0, cells, "|"); cell = cells[2]; n = split(programs, names, " ")
+                while (match(cell, /--[a-z][a-z0-9-]*/)) {
+                    for (i = 1; i <= n; i++) print NR " " names[i] " " substr(cell, RSTART, RLENGTH)
+                    cell = substr(cell, RSTART + RLENGTH)
+                }
+                next
+            }
+        ' "$root/README.md")
+        [ -n "$rows" ] || problem "README.md: no option table (rows starting with | \`--)"
+        while read -r line name _; do
+            [ "$name" = - ] && problem "README.md:$line: an option row with no <!-- options-for: ... --> line before its table"
+        done <<<"$rows"
         for program in "$@"; do
+            name=$(basename "$program" .exe)
             help=$("$program" --help) || { problem "$program --help failed"; continue; }
             # The options --help describes: lines that start (indented) with --name.
-            names=$(grep -oE -- '^ +--[a-z][a-z0-9-]*' <<<"$help" | tr -d ' ' | sort -u || true)
-            [ -n "$names" ] || problem "$(basename "$program") --help lists no option"
-            offered+=$'\n'$names
-            for name in $names; do
-                grep -qxF -- "$name" <<<"$documented" ||
-                    problem "README.md: $(basename "$program") offers $name, which no option table lists"
+            offered=$(grep -oE -- '^ +--[a-z][a-z0-9-]*' <<<"$help" | tr -d ' ' | sort -u || true)
+            [ -n "$offered" ] || problem "$name --help lists no option"
+            documented=$(awk -v p="$name" '$2 == p { print $3 }' <<<"$rows" | sort -u)
+            for option in $offered; do
+                grep -qxF -- "$option" <<<"$documented" ||
+                    problem "README.md: $name offers $option, which no option table for $name lists"
             done
+            while read -r line option; do
+                [ -n "$option" ] || continue
+                grep -qxF -- "$option" <<<"$offered" ||
+                    problem "README.md:$line: the table says $name takes $option; its --help has no such option"
+            done < <(awk -v p="$name" '$2 == p { print $1, $3 }' <<<"$rows")
         done
-        offered=$(sort -u <<<"$offered")
-        for name in $documented; do
-            grep -qxF -- "$name" <<<"$offered" ||
-                problem "README.md: an option table lists $name, which no program's --help offers"
+        # Every program a table names is one of those checked.
+        for listed in $(awk '$2 != "-" { print $2 }' <<<"$rows" | sort -u); do
+            found=0
+            for program in "$@"; do [ "$(basename "$program" .exe)" = "$listed" ] && found=1; done
+            [ $found = 1 ] || problem "README.md: an option table names $listed, which is not among the programs checked"
         done
         ;;
     file-lines)
