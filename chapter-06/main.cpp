@@ -16,6 +16,7 @@
 #include "common/cli.hpp"
 #include "common/commands.hpp"
 #include "common/device.hpp"
+#include "common/formats.hpp"
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/run_control.hpp"
@@ -100,7 +101,7 @@ void destroyFramebuffers(VkDevice device, std::vector<VkFramebuffer>& framebuffe
 //> record
 // Re-recorded every frame, as the book does from this chapter on.
 void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebuffer framebuffer,
-                         VkExtent2D extent, const Pipeline& pipeline, const std::vector<Mesh>& meshes,
+                         VkExtent2D extent, VkFormat format, const Pipeline& pipeline, const std::vector<Mesh>& meshes,
                          common::RunControl& run, uint32_t slot, uint32_t frame) {
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
@@ -109,7 +110,10 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
     VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
     common::timeFrameStart(run, cmd, slot, frame);  // --benchmark only
 
+    // A linear colour, as the shader's; encoded here where the target's format does not.
     VkClearValue clear{.color = {{0.5f, 0.7f, 0.9f, 1.0f}}};
+    if (!common::encodesSrgb(format))
+        for (int c = 0; c < 3; ++c) clear.color.float32[c] = common::encodeSrgb(clear.color.float32[c]);
     VkRenderPassBeginInfo passInfo{
         .sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
         .renderPass = renderPass,
@@ -187,7 +191,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.renderPass = createRenderPass(c.device, c.target.format, c.target.presentLayout);
     c.framebuffers = createFramebuffers(c.device, c.renderPass, c.target);
     c.pipelineCache = createPipelineCache(c.device);
-    c.pipeline = createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput);
+    c.pipeline = createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
     c.run = common::createRunControl(options, c.device, {"triangle"});
 }
 //< setup
@@ -223,7 +227,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
 
         VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
         recordCommandBuffer(sync.commandBuffer, c.renderPass, c.framebuffers[imageIndex], c.target.extent,
-                            c.pipeline, c.meshes, c.run, slot, frame);
+                            c.target.format, c.pipeline, c.meshes, c.run, slot, frame);
 
         // Colour output waits for the image; the target's semaphore for this image says when the
         // drawing is done; the fence says when this frame's command buffer is free again.

@@ -7,6 +7,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 
 //> shader-module
 // The book compiles GLSL when the program starts; we compile it when the program is built
@@ -52,10 +53,21 @@ common::PipelineCache createPipelineCache(const common::Device& device) {
 
 //> pipeline
 Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkRenderPass renderPass,
-                        const VertexInput& vertexInput) {
+                        const VertexInput& vertexInput, VkFormat targetFormat) {
     // The programmable stages: the two shaders, each entered at main().
     VkShaderModule vertex = createShaderModule(device, "chapter-06/triangle.vert");
     VkShaderModule fragment = createShaderModule(device, "chapter-06/triangle.frag");
+    // The fragment shader's one specialization constant (constant_id 0): whether it sRGB-encodes
+    // its colour itself, because the target image's format does not (a _UNORM format, such as
+    // the 10-bit one a 30-bit desktop offers). Fixed when the pipeline is made.
+    VkBool32 encodeSrgb = common::encodesSrgb(targetFormat) ? VK_FALSE : VK_TRUE;
+    VkSpecializationMapEntry encodeEntry{.constantID = 0, .offset = 0, .size = sizeof(VkBool32)};
+    VkSpecializationInfo fragmentConstants{
+        .mapEntryCount = 1,
+        .pMapEntries = &encodeEntry,
+        .dataSize = sizeof(encodeSrgb),
+        .pData = &encodeSrgb,
+    };
     VkPipelineShaderStageCreateInfo stages[] = {
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_VERTEX_BIT,
@@ -64,7 +76,8 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
          .module = fragment,
-         .pName = "main"},
+         .pName = "main",
+         .pSpecializationInfo = &fragmentConstants},
     };
 
     // Input assembly: every three indices make one triangle.

@@ -25,5 +25,5 @@ struct Pipeline {
 };
 
 Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkRenderPass renderPass,
-                        const VertexInput& vertexInput);
+                        const VertexInput& vertexInput, VkFormat targetFormat);
 void destroyPipeline(const common::Device& device, Pipeline& pipeline);

@@ -7,27 +7,27 @@
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/pipeline.hpp"
 #include "common/texture.hpp"
 
 namespace {
 
 constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-GBuffer createGBuffer(const common::Device& device, VkExtent2D extent) {
+GBuffer createGBuffer(const common::Device& device, VkExtent2D extent, VkFormat depthFormat) {
     return {
         .albedo = common::createImage(device, extent, kAlbedoFormat,
                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                       VK_IMAGE_ASPECT_COLOR_BIT),
-        .depth = common::createImage(device, extent, kDepthFormat,
+        .depth = common::createImage(device, extent, depthFormat,
                                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                      VK_IMAGE_ASPECT_DEPTH_BIT),
     };
 }
 
 //> geometry-render-pass
-VkRenderPass createGeometryRenderPass(const common::Device& device) {
+VkRenderPass createGeometryRenderPass(const common::Device& device, VkFormat depthFormat) {
     // Both attachments are cleared, kept for the lighting pass, and end in the layouts it
     // samples them in, so the render pass itself does the transition.
     std::array<VkAttachmentDescription, 2> attachments{{
@@ -42,7 +42,7 @@ VkRenderPass createGeometryRenderPass(const common::Device& device) {
             .finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
         },
         {
-            .format = kDepthFormat,
+            .format = depthFormat,
             .samples = VK_SAMPLE_COUNT_1_BIT,
             .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
             .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
@@ -229,8 +229,10 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, Geometr
 GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                                 const common::GpuScene& scene, uint32_t framesInFlight) {
     GeometryPass pass;
-    pass.renderPass = createGeometryRenderPass(device);
-    pass.gbuffer = createGBuffer(device, extent);
+    // D32_SFLOAT where the device has it, else a 24-bit depth format (common/formats.hpp).
+    pass.depthFormat = common::chooseDepthFormat(device);
+    pass.renderPass = createGeometryRenderPass(device, pass.depthFormat);
+    pass.gbuffer = createGBuffer(device, extent, pass.depthFormat);
     pass.framebuffer = createGeometryFramebuffer(device, pass.renderPass, pass.gbuffer);
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
@@ -241,7 +243,7 @@ void resizeGeometryPass(const common::Device& device, GeometryPass& pass, VkExte
     vkDestroyFramebuffer(device.handle, pass.framebuffer, nullptr);
     common::destroyImage(device, pass.gbuffer.depth);
     common::destroyImage(device, pass.gbuffer.albedo);
-    pass.gbuffer = createGBuffer(device, extent);
+    pass.gbuffer = createGBuffer(device, extent, pass.depthFormat);
     pass.framebuffer = createGeometryFramebuffer(device, pass.renderPass, pass.gbuffer);
 }
 

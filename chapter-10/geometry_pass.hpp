@@ -18,7 +18,7 @@
 // dependencies keep one frame's writes from overtaking the previous frame's reads).
 struct GBuffer {
     common::Image albedo;  // R16G16B16A16_SFLOAT
-    common::Image depth;   // D32_SFLOAT
+    common::Image depth;   // D32_SFLOAT, or X8_D24_UNORM_PACK32 where the device lacks it
 };
 
 // The view matrix of one frame in flight: a host-visible uniform buffer written every frame (the
@@ -37,6 +37,7 @@ struct GeometryMaterial {
 };
 
 struct GeometryPass {
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkRenderPass renderPass = VK_NULL_HANDLE;
     GBuffer gbuffer;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;

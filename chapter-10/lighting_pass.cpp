@@ -4,6 +4,7 @@
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/pipeline.hpp"
 #include "common/texture.hpp"
 
@@ -98,13 +99,18 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/lighting.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/lighting.frag");
+    // The shader writes the target image: it sRGB-encodes its colour itself where the image's
+    // format does not (constant_id 0; chapter-06 introduces the same constant).
+    VkBool32 encodeSrgb = common::encodesSrgb(target.format) ? VK_FALSE : VK_TRUE;
+    VkSpecializationMapEntry encodeEntry{0, 0, sizeof(VkBool32)};
+    VkSpecializationInfo fragmentConstants{1, &encodeEntry, sizeof(encodeSrgb), &encodeSrgb};
     // No vertex input at all (the book's EmptyVertexBufferStructure): the vertex shader makes
     // the triangle from gl_VertexIndex. No depth test either.
     pass.pipeline = common::createGraphicsPipeline(
         device, cache,
         {
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &fragmentConstants)},
             .vertexInput = nullptr,
             .colorAttachmentCount = 1,
             .layout = pass.pipelineLayout,

@@ -269,7 +269,8 @@ void run(const common::Options& options) {
     setUp(chapter, options);
     frameLoop(chapter, options);
     common::reportRun(chapter.run, chapter.device,
-                      common::benchmarkInfo(kChapter, options, chapter.device, chapter.target));
+                      common::benchmarkInfo(kChapter, options, chapter.device, chapter.target,
+                                            chapter.geometryPass.depthFormat));
     tearDown(chapter);
 }
 //< run

@@ -80,7 +80,7 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView
         .colorAttachmentCount = 1,
         .pColorAttachments = &output,
     };
-    vkCmdBeginRendering(cmd, &rendering);
+    common::vk13.CmdBeginRendering(cmd, &rendering);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
@@ -90,7 +90,7 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, const LightView
                             &pass.attachmentsSet, 0, nullptr);
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
-    vkCmdEndRendering(cmd);
+    common::vk13.CmdEndRendering(cmd);
 
     // renderFinish: to READ_ONLY_OPTIMAL, the writes visible to the post pass's fragment shader.
     VkImageMemoryBarrier2 finish = common::imageBarrier(

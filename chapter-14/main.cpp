@@ -40,7 +40,7 @@ const common::ChapterInfo kChapter{
     "deferred rendering with dynamic rendering and synchronization2 (the book's chapter 14)",
     {"final", "albedo", "depth"},
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}, common::kGuiSwitch},
-    {common::kGuiClickChoice},
+    {common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 
 //> overlay
@@ -89,7 +89,9 @@ void setUp(Chapter& c, const common::Options& options) {
     c.instance =
         common::createInstance("chapter-14", options.validation, common::targetInstanceExtensions(c.target));
     common::createTargetSurface(c.target, c.instance);
-    // The two Vulkan 1.3 features this chapter is about.
+    // The two Vulkan 1.3 features this chapter is about: core on a 1.3 device, extensions
+    // (VK_KHR_dynamic_rendering, VK_KHR_synchronization2) on a 1.2 one; common::vk13 holds their
+    // commands under whichever names the device has.
     c.device = common::createDevice(c.instance, c.target.surface, options.device,
                                     {.dynamicRendering = true, .synchronization2 = true});
     common::createTargetImages(c.target, c.device);
@@ -109,7 +111,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.gui = common::createGui(options, c.target);
     if (c.gui.enabled)
         c.guiPass =
-            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format, options.framesInFlight);
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -221,7 +223,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
             .signalSemaphoreInfoCount = 1,
             .pSignalSemaphoreInfos = &signal,
         };
-        VK_CHECK(vkQueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(common::vk13.QueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
 
         if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
         bool current = common::presentTargetImage(c.target, c.device, imageIndex);
@@ -241,7 +243,8 @@ void report(Chapter& c, const common::Options& options) {
         std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
                     c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
                     c.camera.pitch);
-    common::reportRun(c.run, c.device, common::benchmarkInfo(kChapter, options, c.device, c.target));
+    common::reportRun(c.run, c.device, common::benchmarkInfo(kChapter, options, c.device, c.target,
+                                                             c.scenePass.gbuffer.depth.format));
     if (c.gui.enabled)
         std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
                     c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);

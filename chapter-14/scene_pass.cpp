@@ -1,6 +1,7 @@
 // chapter-14: the scene pass.
 #include "scene_pass.hpp"
 
+#include "common/formats.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -12,12 +13,12 @@ namespace {
 //> create-gbuffer
 // The attachments are written by this pass (COLOR_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT) and
 // sampled by the light pass (SAMPLED).
-GBuffer createGBuffer(const common::Device& device, VkExtent2D extent) {
+GBuffer createGBuffer(const common::Device& device, VkExtent2D extent, VkFormat depthFormat) {
     return {
         .albedo = common::createImage(device, extent, kAlbedoFormat,
                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                       VK_IMAGE_ASPECT_COLOR_BIT),
-        .depth = common::createImage(device, extent, kDepthFormat,
+        .depth = common::createImage(device, extent, depthFormat,
                                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                      VK_IMAGE_ASPECT_DEPTH_BIT),
     };
@@ -93,7 +94,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
         .colorAttachmentCount = 1,
         .pColorAttachmentFormats = &kAlbedoFormat,
-        .depthAttachmentFormat = kDepthFormat,
+        .depthAttachmentFormat = pass.gbuffer.depth.format,
     };
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-14/scene.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "chapter-14/scene.frag");
@@ -159,7 +160,7 @@ void renderInit(VkCommandBuffer cmd, const GBuffer& gbuffer) {
         .imageMemoryBarrierCount = 2,
         .pImageMemoryBarriers = barriers,
     };
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    common::vk13.CmdPipelineBarrier2(cmd, &dependency);
 }
 //< render-init
 
@@ -200,7 +201,7 @@ void renderFinish(VkCommandBuffer cmd, const GBuffer& gbuffer) {
         .imageMemoryBarrierCount = 2,
         .pImageMemoryBarriers = barriers,
     };
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    common::vk13.CmdPipelineBarrier2(cmd, &dependency);
 }
 //< render-finish
 
@@ -233,7 +234,7 @@ void beginRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
         .pColorAttachments = &albedo,
         .pDepthAttachment = &depth,
     };
-    vkCmdBeginRendering(cmd, &rendering);
+    common::vk13.CmdBeginRendering(cmd, &rendering);
 }
 //< begin-rendering
 
@@ -242,15 +243,16 @@ void beginRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight) {
     ScenePass pass;
-    pass.gbuffer = createGBuffer(device, extent);
+    pass.gbuffer = createGBuffer(device, extent, common::chooseDepthFormat(device));
     createDescriptors(device, pass, scene, framesInFlight);
     createPipeline(device, cache, pass);
     return pass;
 }
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
+    VkFormat depthFormat = pass.gbuffer.depth.format;
     destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = createGBuffer(device, extent);
+    pass.gbuffer = createGBuffer(device, extent, depthFormat);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
@@ -286,7 +288,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
     }
 
-    vkCmdEndRendering(cmd);
+    common::vk13.CmdEndRendering(cmd);
     renderFinish(cmd, pass.gbuffer);
 }
 //< record-scene

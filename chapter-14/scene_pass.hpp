@@ -20,8 +20,9 @@
 // This chapter's G-buffer: albedo and depth (chapter-15 adds position, normal and PBR data). One,
 // shared by all frames in flight: the scene pass of a frame and the light pass that reads it are
 // in the same command buffer, and the barriers order every frame's use after the previous one's.
+// Depth is D32_SFLOAT where the device can render to it, else X8_D24_UNORM_PACK32
+// (common::chooseDepthFormat); the format is in depth.format.
 inline constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 struct GBuffer {
     common::Image albedo;

@@ -34,7 +34,7 @@ ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cach
         device, cache, scenePass,
         {.shaders = {.vertex = "chapter-15-lab/scene.vert", .fragment = "chapter-15-lab/forward.frag"},
          .colorFormats = {kLightOutputFormat},
-         .depthFormat = scenePass.layout->formats.depth,
+         .depthFormat = scenePass.formats.depth,
          .reversedZ = scenePass.layout->reversedZ,
          .moreSets = {lightPass.lightsLayout, lightPass.sceneLayout}});
     return pass;
@@ -86,7 +86,7 @@ void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, const Scene
         .pColorAttachments = &color,
         .pDepthAttachment = &depthAttachment,
     };
-    vkCmdBeginRendering(cmd, &rendering);
+    common::vk13.CmdBeginRendering(cmd, &rendering);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
@@ -100,7 +100,7 @@ void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, const Scene
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelines.layout, 3, 2, lights.data(),
                             0, nullptr);
     recordSceneDraws(cmd, scenePass, pass.pipelines, scene, cameraPosition);
-    vkCmdEndRendering(cmd);
+    common::vk13.CmdEndRendering(cmd);
 
     std::array<VkImageMemoryBarrier2, 2> finish{
         common::imageBarrier(lightPass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT,

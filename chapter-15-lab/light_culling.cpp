@@ -131,7 +131,7 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
                              .dstAccessMask = dstAccess};
     VkDependencyInfo dependency{
         .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &barrier};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    common::vk13.CmdPipelineBarrier2(cmd, &dependency);
 }
 
 VkPipeline createComputePipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,

@@ -73,7 +73,7 @@ const common::ChapterInfo kChapter{
       "deferred: the G-buffer, then the light pass (the book's); "
       "forward: the scene pass shades each fragment with every light (no light pass, the G-buffer "
       "not written), to compare"},
-     common::kGuiClickChoice},
+     common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 
 // chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
@@ -233,13 +233,10 @@ void run(const common::Options& options) {
     common::Instance instance = common::createInstance("chapter-15-lab", options.validation,
                                                        common::targetInstanceExtensions(target));
     common::createTargetSurface(target, instance);
-    // chapter-15's features, and maintenance4 for the compute light pass (glslang declares its
-    // group size with LocalSizeId).
-    common::Device device = common::createDevice(instance, target.surface, options.device,
-                                                 {.dynamicRendering = true,
-                                                  .synchronization2 = true,
-                                                  .scalarBlockLayout = true,
-                                                  .maintenance4 = true});
+    // chapter-15's features.
+    common::Device device = common::createDevice(
+        instance, target.surface, options.device,
+        {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
 
@@ -300,7 +297,7 @@ void run(const common::Options& options) {
     common::Gui gui = common::createGui(options, target);
     common::GuiPass guiPass;
     if (gui.enabled)
-        guiPass = common::createGuiPass(device, pipelineCache.handle, target.format, options.framesInFlight);
+        guiPass = common::createGuiPass(device, pipelineCache.handle, target.encodedFormat, options.framesInFlight);
 
     std::vector<std::string> passes{"scene", "light", "post"};
     if (tiled) passes.insert(passes.begin() + 1, "cull");
@@ -452,7 +449,7 @@ void run(const common::Options& options) {
                              .pCommandBufferInfos = &commands,
                              .signalSemaphoreInfoCount = 1,
                              .pSignalSemaphoreInfos = &signal};
-        VK_CHECK(vkQueueSubmit2(device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(common::vk13.QueueSubmit2(device.queue, 1, &submit, sync.inFlight));
 
         if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
         bool current = common::presentTargetImage(target, device, imageIndex);
@@ -468,10 +465,10 @@ void run(const common::Options& options) {
         std::printf("chapter-15-lab: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
                     camera.position.x, camera.position.y, camera.position.z, camera.yaw, camera.pitch);
     std::vector<std::pair<std::string, std::string>> info =
-        common::benchmarkInfo(kChapter, options, device, target);
+        common::benchmarkInfo(kChapter, options, device, target, scenePass.formats.depth);
     // What the scene pass allocated: the G-buffer's attachments, depth alone for forward shading.
     info.push_back(
-        {"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.layout->formats))});
+        {"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.formats))});
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

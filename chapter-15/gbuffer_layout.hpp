@@ -18,7 +18,8 @@ struct GBufferLayout {
 
 //> book-gbuffer
 // The book's G-buffer: world position, albedo, normal and (AO, roughness, metallic), each
-// R16G16B16A16_SFLOAT, and D32_SFLOAT depth: 4 x 8 + 4 = 36 bytes per pixel.
+// R16G16B16A16_SFLOAT, and D32_SFLOAT depth: 4 x 8 + 4 = 36 bytes per pixel. (A device that cannot
+// render to D32_SFLOAT gets X8_D24_UNORM_PACK32, the same 4 bytes: chapter-15/scene_pass.cpp.)
 inline constexpr GBufferLayout kBookGBuffer{
     .name = "book",
     .formats = {.position = VK_FORMAT_R16G16B16A16_SFLOAT,

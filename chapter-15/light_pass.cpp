@@ -140,7 +140,7 @@ void recordLightPass(VkCommandBuffer cmd, const LightPass& pass, uint32_t frame,
                                 uint32_t(moreSets.size()), moreSets.data(), 0, nullptr);
     vkCmdPushConstants(cmd, pass.pipeline.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LightView), &view);
     vkCmdDraw(cmd, 3, 1, 0, 0);
-    vkCmdEndRendering(cmd);
+    common::vk13.CmdEndRendering(cmd);
 
     VkImageMemoryBarrier2 finish = common::imageBarrier(
         pass.output.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,

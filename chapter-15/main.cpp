@@ -47,7 +47,7 @@ const common::ChapterInfo kChapter{
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
      common::kGuiSwitch},
-    {common::kGuiClickChoice},
+    {common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 
 //> light-controls
@@ -215,7 +215,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.gui = common::createGui(options, c.target);
     if (c.gui.enabled)
         c.guiPass =
-            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.format, options.framesInFlight);
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -335,7 +335,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
                              .pCommandBufferInfos = &commands,
                              .signalSemaphoreInfoCount = 1,
                              .pSignalSemaphoreInfos = &signal};
-        VK_CHECK(vkQueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
+        VK_CHECK(common::vk13.QueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
 
         if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
         bool current = common::presentTargetImage(c.target, c.device, imageIndex);
@@ -356,7 +356,7 @@ void report(Chapter& c, const common::Options& options) {
                     c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
                     c.camera.pitch);
     std::vector<std::pair<std::string, std::string>> info =
-        common::benchmarkInfo(kChapter, options, c.device, c.target);
+        common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.formats.depth);
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
     common::reportRun(c.run, c.device, info);
     if (c.gui.enabled)

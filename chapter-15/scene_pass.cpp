@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "common/formats.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
@@ -169,21 +170,26 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
             throw common::Failure("this device cannot render to and sample format " + std::to_string(format) +
                                   ", which this G-buffer layout needs");
     }
-    pass.gbuffer = common::createGBuffer(device, extent, layout.formats);
+    // The layout's formats, with the depth format this device renders to: D32_SFLOAT, else a
+    // 24-bit one -- unless the layout is reversed-Z, which only float depth makes worthwhile.
+    pass.formats = layout.formats;
+    std::string reversedZ = "the G-buffer layout '" + std::string(layout.name) + "' (reversed-Z)";
+    pass.formats.depth = common::chooseDepthFormat(device, layout.reversedZ, reversedZ.c_str());
+    pass.gbuffer = common::createGBuffer(device, extent, pass.formats);
     createDescriptors(device, pass, scene, framesInFlight);
-    std::vector<VkFormat> colorFormats = common::colorFormats(layout.formats);
+    std::vector<VkFormat> colorFormats = common::colorFormats(pass.formats);
     if (colorFormats.empty()) return pass;  // depth alone: its users draw with pipelines of their own
     pass.pipelines = createScenePipelines(device, cache, pass,
                                           {.shaders = shaders,
                                            .colorFormats = colorFormats,
-                                           .depthFormat = layout.formats.depth,
+                                           .depthFormat = pass.formats.depth,
                                            .reversedZ = layout.reversedZ});
     return pass;
 }
 
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent) {
     common::destroyGBuffer(device, pass.gbuffer);
-    pass.gbuffer = common::createGBuffer(device, extent, pass.layout->formats);
+    pass.gbuffer = common::createGBuffer(device, extent, pass.formats);
 }
 
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view) {
@@ -204,7 +210,7 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelines.layout, 0, 2, shared.data(),
                             0, nullptr);
     recordSceneDraws(cmd, pass, pass.pipelines, scene, cameraPosition);
-    vkCmdEndRendering(cmd);
+    common::vk13.CmdEndRendering(cmd);
     common::gbufferRenderFinish(cmd, pass.gbuffer);
 }
 

@@ -49,6 +49,7 @@ struct ScenePipelineTarget {
 
 struct ScenePass {
     const GBufferLayout* layout = &kBookGBuffer;
+    common::GBufferFormats formats;  // the layout's, with the depth format this device renders to
     common::GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
     VkDescriptorSetLayout materialsLayout = VK_NULL_HANDLE;  // set 1: all materials, storage buffer
@@ -62,7 +63,8 @@ struct ScenePass {
 };
 
 // The G-buffer of `layout` and the pipelines that fill it (none for a layout of depth alone).
-// Throws Failure when the device cannot render to the layout's formats.
+// Throws Failure when the device cannot render to the layout's formats (for depth: to D32_SFLOAT
+// or X8_D24_UNORM_PACK32, or to D32_SFLOAT for a reversed-Z layout).
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
                           const GBufferLayout& layout = kBookGBuffer, const SceneShaders& shaders = {});

@@ -98,7 +98,7 @@ function(vkbook_shaders target chapter)
         add_custom_command(
             OUTPUT ${out}
             COMMAND ${CMAKE_COMMAND} -E make_directory ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}
-            COMMAND Vulkan::glslangValidator --target-env vulkan1.3 -I${VKBOOK_ROOT}/shaders/include ${defines}
+            COMMAND Vulkan::glslangValidator --target-env vulkan1.1 -I${VKBOOK_ROOT}/shaders/include ${defines}
                     --depfile ${out}.d -o ${out} ${in}
             MAIN_DEPENDENCY ${in}
             DEPFILE ${out}.d

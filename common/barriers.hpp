@@ -33,7 +33,7 @@ inline void pipelineBarrier(VkCommandBuffer cmd, const VkImageMemoryBarrier2* ba
         .imageMemoryBarrierCount = count,
         .pImageMemoryBarriers = barriers,
     };
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    vk13.CmdPipelineBarrier2(cmd, &dependency);
 }
 //< barrier
 

@@ -9,6 +9,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 
 namespace common {
 
@@ -147,7 +148,7 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
 
 std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo& chapter,
                                                                const Options& options, const Device& device,
-                                                               const Target& target) {
+                                                               const Target& target, VkFormat depthFormat) {
     std::vector<std::pair<std::string, std::string>> info = {
         {"chapter", chapter.name},
         {"device", device.properties.deviceName},
@@ -155,7 +156,10 @@ std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo
         {"resolution", std::to_string(target.extent.width) + "x" + std::to_string(target.extent.height)},
         {"frames_in_flight", std::to_string(options.framesInFlight)},
         {"present", target.window ? (target.vsync ? "window, vsync" : "window, no vsync") : "headless"},
+        {"target_format", formatName(target.format) + ", " + colorSpaceName(target.colorSpace)},
+        {"vulkan", device.features},
     };
+    if (depthFormat != VK_FORMAT_UNDEFINED) info.push_back({"depth_format", formatName(depthFormat)});
     for (const Choice& choice : chapter.choices)
         if (!choice.values.empty())
             info.push_back(

@@ -68,10 +68,12 @@ void addCpuFrame(FrameStats& stats, uint32_t frame, double ms);
 // resolution, layout, frames in flight...).
 void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::string, std::string>>& info);
 
-// What a benchmark ran on: chapter, device, driver, resolution, frames in flight, how it presented,
-// and the chapter's --choices (the G-buffer layout).
+// What a benchmark ran on: chapter, device, driver, the Vulkan version and extensions the chapter's
+// features came from, resolution, frames in flight, how it presented and in which format, the
+// depth format (`depthFormat`, for the chapters that have depth), and the chapter's --choices.
 std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo& chapter,
                                                                const Options& options, const Device& device,
-                                                               const Target& target);
+                                                               const Target& target,
+                                                               VkFormat depthFormat = VK_FORMAT_UNDEFINED);
 
 }  // namespace common

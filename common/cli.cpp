@@ -17,6 +17,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/instance.hpp"
 
 namespace common {
@@ -24,7 +25,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
-    "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH] [--help]\n"
+    "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH]\n"
+    "          [--target-format FORMAT] [--help]\n"
     "          [--benchmark [--warmup N] [--json FILE]]%s\n"
     "\n"
     "  --headless         render offscreen, no window or display needed\n"
@@ -39,6 +41,10 @@ constexpr const char* kUsage =
     "                     exit with code 3 if it reports any warning or error\n"
     "  --resize WxH       (testing) resize the window or offscreen target to WxH after half of\n"
     "                     --frames\n"
+    "  --target-format FORMAT  the format of the presented (or headless) images, instead of the\n"
+    "                     first the window offers of B8G8R8A8_SRGB, R8G8B8A8_SRGB, B8G8R8A8_UNORM,\n"
+    "                     R8G8B8A8_UNORM, A2R10G10B10_UNORM_PACK32, A2B10G10R10_UNORM_PACK32\n"
+    "                     (headless: B8G8R8A8_SRGB)\n"
     "  --benchmark        render --warmup frames (default 10), then --frames (default 100) measured\n"
     "                     ones without vsync; print CPU and GPU frame and pass times\n"
     "  --json FILE        with --benchmark: also write the report as JSON\n"
@@ -152,7 +158,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     app.add_option("--frames-in-flight", options.framesInFlight)->check(number("--frames-in-flight", 1, 3));
     app.add_flag("--benchmark", options.benchmark);
     app.add_option("--warmup", options.warmup)->check(number("--warmup", 0, 100000));
-    std::string json, screenshot, resize, scene, model, bookScene, view;
+    std::string json, screenshot, resize, scene, model, bookScene, view, targetFormat;
     app.add_option("--json", json)->check(check([](const std::string& file) {
         if (file.empty()) throw InputError("--json needs a file name");
         checkOutputPath(file, "benchmark report");
@@ -164,6 +170,10 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     app.add_flag("--validation", options.validation);
     app.add_option("--resize", resize)->check(check([](const std::string& text) {
         parseExtent("--resize", text);
+    }));
+    app.add_option("--target-format", targetFormat)->check(check([](const std::string& name) {
+        if (!presentFormatByName(name))
+            throw InputError("--target-format must be one of " + presentFormatNames() + ", got '" + name + "'");
     }));
     // The scene chapters' options; a chapter without a scene refuses them by name (below).
     app.add_option("--scene", scene)->check(nonEmpty("--scene needs a file name"));
@@ -208,6 +218,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     options.json = json;
     options.screenshot = screenshot;
     if (app.count("--resize")) options.resizeTo = parseExtent("--resize", resize);
+    if (app.count("--target-format")) options.targetFormat = presentFormatByName(targetFormat);
     options.scene = scene;
     options.model = model;
     options.bookScene = bookScene;

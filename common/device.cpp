@@ -43,33 +43,88 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
     return false;
 }
 
-// The first feature in `wanted` the device lacks, or nullptr.
-const char* missingFeature(VkPhysicalDevice physical, const DeviceFeatures& wanted) {
+std::string versionText(uint32_t version) {
+    return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version));
+}
+
+bool needsVulkan13Commands(const DeviceFeatures& wanted) {
+    return wanted.dynamicRendering || wanted.synchronization2;
+}
+
+// What a chapter asks for, in words: "Vulkan 1.1", "Vulkan 1.3, or 1.2 with VK_KHR_...".
+std::string requirement(const DeviceFeatures& wanted) {
+    if (needsVulkan13Commands(wanted))
+        return "Vulkan 1.3, or 1.2 with VK_KHR_dynamic_rendering and VK_KHR_synchronization2";
+    return "Vulkan " + versionText(wanted.minApiVersion);
+}
+
+// The feature structures of one device, chained for vkGetPhysicalDeviceFeatures2 (to ask) or for
+// vkCreateDevice (to enable): only those the device's version and the chapter's wishes call for.
+// Vulkan 1.3 has dynamic rendering and synchronization2 in VkPhysicalDeviceVulkan13Features; a 1.2
+// device has them in its extensions' own structures; scalar block layout is core 1.2.
+struct FeatureChain {
+    VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                         .pNext = &v13};
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &v12};
+    VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamicRendering{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+    VkPhysicalDeviceSynchronization2FeaturesKHR synchronization2{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES_KHR};
+    void* head = nullptr;
+
+    FeatureChain(uint32_t api, const DeviceFeatures& wanted) {
+        auto link = [this](auto& structure) {
+            structure.pNext = head;
+            head = &structure;
+        };
+        if (api >= VK_API_VERSION_1_2 && wanted.scalarBlockLayout) link(v12);
+        if (api >= VK_API_VERSION_1_3 && needsVulkan13Commands(wanted)) link(v13);
+        if (api < VK_API_VERSION_1_3 && wanted.dynamicRendering) link(dynamicRendering);
+        if (api < VK_API_VERSION_1_3 && wanted.synchronization2) link(synchronization2);
+    }
+    FeatureChain(const FeatureChain&) = delete;  // the chain points into itself
+
+    bool hasDynamicRendering(uint32_t api) const {
+        return api >= VK_API_VERSION_1_3 ? v13.dynamicRendering : dynamicRendering.dynamicRendering;
+    }
+    bool hasSynchronization2(uint32_t api) const {
+        return api >= VK_API_VERSION_1_3 ? v13.synchronization2 : synchronization2.synchronization2;
+    }
+};
+
+// The device extensions the chapter's features take on this device (none on 1.3).
+std::vector<const char*> featureExtensions(uint32_t api, const DeviceFeatures& wanted) {
+    std::vector<const char*> extensions;
+    if (api >= VK_API_VERSION_1_3) return extensions;
+    if (wanted.dynamicRendering) extensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
+    if (wanted.synchronization2) extensions.push_back(VK_KHR_SYNCHRONIZATION_2_EXTENSION_NAME);
+    return extensions;
+}
+
+// Why the device cannot give the chapter what it asks for, or an empty string when it can.
+std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const DeviceFeatures& wanted) {
+    uint32_t needed = needsVulkan13Commands(wanted) ? VK_API_VERSION_1_2 : wanted.minApiVersion;
+    if (wanted.scalarBlockLayout) needed = std::max(needed, uint32_t(VK_API_VERSION_1_2));
+    if (api < needed) return "it supports Vulkan " + versionText(api) + "; this chapter needs " + requirement(wanted);
+    std::string lacking;
+    for (const char* extension : featureExtensions(api, wanted))
+        if (!hasDeviceExtension(physical, extension)) lacking += (lacking.empty() ? "" : " and ") + std::string(extension);
+    if (!lacking.empty())
+        return "it supports Vulkan " + versionText(api) + " without " + lacking + "; this chapter needs " +
+               requirement(wanted);
+    FeatureChain chain(api, wanted);
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = chain.head};
     vkGetPhysicalDeviceFeatures2(physical, &features);
-    if (wanted.dynamicRendering && !v13.dynamicRendering) return "dynamicRendering";
-    if (wanted.synchronization2 && !v13.synchronization2) return "synchronization2";
-    if (wanted.scalarBlockLayout && !v12.scalarBlockLayout) return "scalarBlockLayout";
-    if (wanted.maintenance4 && !v13.maintenance4) return "maintenance4";
-    return nullptr;
+    if (wanted.dynamicRendering && !chain.hasDynamicRendering(api)) return "it lacks the dynamicRendering feature";
+    if (wanted.synchronization2 && !chain.hasSynchronization2(api)) return "it lacks the synchronization2 feature";
+    if (wanted.scalarBlockLayout && !chain.v12.scalarBlockLayout) return "it lacks the scalarBlockLayout feature";
+    return {};
 }
 
 Candidate inspect(VkPhysicalDevice physical, VkSurfaceKHR surface, const DeviceFeatures& wanted) {
     Candidate candidate{physical, {}, 0, {}};
     vkGetPhysicalDeviceProperties(physical, &candidate.properties);
-    if (candidate.properties.apiVersion < VK_API_VERSION_1_3) {
-        candidate.unsuitable = "it supports Vulkan 1." +
-                               std::to_string(VK_API_VERSION_MINOR(candidate.properties.apiVersion)) +
-                               ", not 1.3";
-        return candidate;
-    }
-    if (const char* missing = missingFeature(physical, wanted)) {
-        candidate.unsuitable = std::string("it lacks the ") + missing + " feature";
-        return candidate;
-    }
+    candidate.unsuitable = missingFeatures(physical, candidate.properties.apiVersion, wanted);
+    if (!candidate.unsuitable.empty()) return candidate;
     if (surface != VK_NULL_HANDLE && !hasDeviceExtension(physical, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
         candidate.unsuitable = "it has no VK_KHR_swapchain";
         return candidate;
@@ -137,27 +192,46 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
 
 }  // namespace
 
+Vulkan13Commands vk13;
+
 Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_view nameFilter,
                     const DeviceFeatures& features) {
     Candidate chosen = choose(instance, surface, nameFilter, features);
     Device device;
     device.physical = chosen.physical;
     device.properties = chosen.properties;
+    device.apiVersion = chosen.properties.apiVersion;
     device.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
-    VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
-                                            .pNext = &driver};
-    vkGetPhysicalDeviceProperties2(device.physical, &properties2);
-    device.driver = std::string(driver.driverName) + ", " + driver.driverInfo;
+    device.driver = "driver version " + std::to_string(device.properties.driverVersion);
+    if (device.apiVersion >= VK_API_VERSION_1_2) {  // VkPhysicalDeviceDriverProperties is core 1.2
+        VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+        VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                                .pNext = &driver};
+        vkGetPhysicalDeviceProperties2(device.physical, &properties2);
+        device.driver = std::string(driver.driverName) + ", " + driver.driverInfo;
+    }
     uint32_t familyCount = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device.physical, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
     vkGetPhysicalDeviceQueueFamilyProperties(device.physical, &familyCount, families.data());
     device.timestampValidBits = families[device.queueFamily].timestampValidBits;
 
-    std::vector<const char*> extensions;
-    if (surface != VK_NULL_HANDLE) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    std::vector<const char*> extensions = featureExtensions(device.apiVersion, features);
+    device.features = "Vulkan " + versionText(device.apiVersion);
+    for (const char* extension : extensions) device.features += std::string(" + ") + extension;
+    if (surface != VK_NULL_HANDLE) {
+        extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        // Lets the GUI pass view an _SRGB swapchain image as _UNORM (common/gui_pass.cpp). It
+        // builds on VK_KHR_image_format_list, core since 1.2.
+        bool formatList = device.apiVersion >= VK_API_VERSION_1_2 ||
+                          hasDeviceExtension(device.physical, VK_KHR_IMAGE_FORMAT_LIST_EXTENSION_NAME);
+        if (formatList && hasDeviceExtension(device.physical, VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME)) {
+            extensions.push_back(VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME);
+            if (device.apiVersion < VK_API_VERSION_1_2) extensions.push_back(VK_KHR_IMAGE_FORMAT_LIST_EXTENSION_NAME);
+            device.swapchainMutableFormat = true;
+        }
+    }
     // A portability implementation (MoltenVK) must have this extension enabled when it lists it.
     if (hasDeviceExtension(device.physical, "VK_KHR_portability_subset"))
         extensions.push_back("VK_KHR_portability_subset");
@@ -170,16 +244,13 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         .pQueuePriorities = &priority,
     };
     // Exactly the features asked for, no more: what a chapter uses is what it enables.
-    VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-                                         .synchronization2 = features.synchronization2,
-                                         .dynamicRendering = features.dynamicRendering,
-                                         .maintenance4 = features.maintenance4};
-    VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                         .pNext = &v13,
-                                         .scalarBlockLayout = features.scalarBlockLayout};
+    FeatureChain enabled(device.apiVersion, features);
+    enabled.v12.scalarBlockLayout = features.scalarBlockLayout;
+    enabled.v13.dynamicRendering = enabled.dynamicRendering.dynamicRendering = features.dynamicRendering;
+    enabled.v13.synchronization2 = enabled.synchronization2.synchronization2 = features.synchronization2;
     VkDeviceCreateInfo createInfo{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-        .pNext = &v12,
+        .pNext = enabled.head,
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queueInfo,
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
@@ -187,6 +258,23 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     };
     VK_CHECK(vkCreateDevice(device.physical, &createInfo, nullptr, &device.handle));
     vkGetDeviceQueue(device.handle, device.queueFamily, 0, &device.queue);
+
+    // The same commands under their core names (1.3) or their extensions' (1.2).
+    if (needsVulkan13Commands(features)) {
+        bool core = device.apiVersion >= VK_API_VERSION_1_3;
+        auto load = [&](const char* coreName, const char* extensionName) {
+            PFN_vkVoidFunction function = vkGetDeviceProcAddr(device.handle, core ? coreName : extensionName);
+            if (!function) throw Failure(std::string("the driver has no ") + (core ? coreName : extensionName));
+            return function;
+        };
+        vk13.CmdBeginRendering =
+            reinterpret_cast<PFN_vkCmdBeginRendering>(load("vkCmdBeginRendering", "vkCmdBeginRenderingKHR"));
+        vk13.CmdEndRendering =
+            reinterpret_cast<PFN_vkCmdEndRendering>(load("vkCmdEndRendering", "vkCmdEndRenderingKHR"));
+        vk13.CmdPipelineBarrier2 =
+            reinterpret_cast<PFN_vkCmdPipelineBarrier2>(load("vkCmdPipelineBarrier2", "vkCmdPipelineBarrier2KHR"));
+        vk13.QueueSubmit2 = reinterpret_cast<PFN_vkQueueSubmit2>(load("vkQueueSubmit2", "vkQueueSubmit2KHR"));
+    }
 
     VkCommandPoolCreateInfo poolInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
@@ -201,6 +289,7 @@ void destroyDevice(Device& device) {
     vkDestroyCommandPool(device.handle, device.oneTimePool, nullptr);
     vkDestroyDevice(device.handle, nullptr);
     device = {};
+    vk13 = {};
 }
 
 }  // namespace common

@@ -67,7 +67,7 @@ void beginFullscreen(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent) {
         .colorAttachmentCount = 1,
         .pColorAttachments = &color,
     };
-    vkCmdBeginRendering(cmd, &rendering);
+    vk13.CmdBeginRendering(cmd, &rendering);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};

@@ -23,6 +23,7 @@ uint32_t bytesPerPixel(const GBufferFormats& formats) {
             case VK_FORMAT_R16G16B16A16_SFLOAT:
                 return 8;
             case VK_FORMAT_D32_SFLOAT:
+            case VK_FORMAT_X8_D24_UNORM_PACK32:
             case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
             case VK_FORMAT_R16G16_UNORM:
                 return 4;
@@ -140,7 +141,7 @@ void beginGBufferRendering(VkCommandBuffer cmd, const GBuffer& gbuffer, float de
         .pColorAttachments = colors.data(),
         .pDepthAttachment = &depth,
     };
-    vkCmdBeginRendering(cmd, &rendering);
+    vk13.CmdBeginRendering(cmd, &rendering);
 }
 //< gbuffer-begin-rendering
 

@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <sstream>
 
@@ -32,12 +33,34 @@ std::vector<GuiClick> parseClicks(const std::string& text) {
     return clicks;
 }
 
+float parseScale(const std::string& text) {
+    char* end = nullptr;
+    float scale = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !(scale >= 1.0f && scale <= 4.0f))
+        throw InputError("--gui-scale must be a number from 1 to 4, got '" + text + "'");
+    return scale;
+}
+
+// The scale a window's framebuffer has over its size in points (GLFW's content scale is the
+// monitor's setting, which on X11 is not what the framebuffer has).
+float windowScale(GLFWwindow* window) {
+    int width = 0, height = 0, pixels = 0, rows = 0;
+    glfwGetWindowSize(window, &width, &height);
+    glfwGetFramebufferSize(window, &pixels, &rows);
+    return width > 0 ? std::clamp(float(pixels) / float(width), 1.0f, 4.0f) : 1.0f;
+}
+
 }  // namespace
 
 Gui createGui(const Options& options, const Target& target) {
     Gui gui;
     auto clicks = options.values.find("gui-click");
     if (clicks != options.values.end()) gui.clicks = parseClicks(clicks->second);
+    auto scale = options.values.find("gui-scale");
+    if (scale != options.values.end()) {
+        if (target.window) throw InputError("--gui-scale is for headless runs; a window has its display's scale");
+        gui.scale = parseScale(scale->second);
+    }
     gui.enabled = options.switches.count("gui") != 0;
     if (!gui.enabled) return gui;
     IMGUI_CHECKVERSION();
@@ -47,6 +70,13 @@ Gui createGui(const Options& options, const Target& target) {
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0.0f;
+    // Dear ImGui's font, rasterised at `scale` pixels a point and drawn at 1/scale: sharp text
+    // of the same size in points at any scale.
+    if (target.window) gui.scale = windowScale(target.window);
+    ImFontConfig font;
+    font.SizePixels = 13.0f * gui.scale;  // the default font's own size, 13 pixels at scale 1
+    io.Fonts->AddFontDefault(&font);
+    io.FontGlobalScale = 1.0f / gui.scale;
     gui.deterministic = target.window == nullptr;
     if (target.window) gui.glfwBackend = ImGui_ImplGlfw_InitForVulkan(target.window, true);
     return gui;
@@ -67,7 +97,10 @@ void beginGui(Gui& gui, const Target& target, uint32_t frame) {
         ImGui_ImplGlfw_NewFrame();  // window size, time, mouse and keyboard from GLFW
         if (pressedOnce(target.window, gui.toggleKey)) gui.visible = !gui.visible;
     } else {
-        io.DisplaySize = ImVec2(float(target.extent.width), float(target.extent.height));
+        // Headless: the image's pixels, `scale` of them a point (ImGui's GLFW backend sets the
+        // same two from the window).
+        io.DisplaySize = ImVec2(float(target.extent.width) / gui.scale, float(target.extent.height) / gui.scale);
+        io.DisplayFramebufferScale = ImVec2(gui.scale, gui.scale);
         io.DeltaTime = 1.0f / 60.0f;
         io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
         io.MouseDown[0] = false;

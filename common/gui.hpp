@@ -1,7 +1,6 @@
 // Dear ImGui for chapters 14 and 15: the overlay's widgets and input (--gui). The book draws a GUI
 // with Dear ImGui in every chapter from its GUI chapter on, its GuiRender turning ImGui's draw
-// lists into Vulkan draws; that pass is chapter-14/gui_pass.cpp (written out) and
-// common/gui_pass.cpp (for chapter-15). This module is the ImGui side: the context, GLFW input
+// lists into Vulkan draws; that pass is common/gui_pass.cpp. This module is the ImGui side: the context, GLFW input
 // (Dear ImGui's own GLFW backend, for input only), F1, the timings window both chapters show, and
 // a headless mode that draws the same overlay deterministically (for golden images).
 #pragma once
@@ -20,7 +19,7 @@
 
 namespace common {
 
-// A scripted left click (--gui-click X,Y@FRAME): the pointer at (X, Y) in pixels from the frame
+// A scripted left click (--gui-click X,Y@FRAME): the pointer at (X, Y) in window points from the frame
 // before FRAME, the button down at FRAME and up at the next. A testing aid, like --resize.
 struct GuiClick {
     float x = 0.0f, y = 0.0f;
@@ -32,6 +31,9 @@ struct Gui {
     bool visible = true;         // F1 hides and shows the overlay
     bool deterministic = false;  // headless: fixed time step, no real input, timings as placeholders
     bool glfwBackend = false;    // Dear ImGui's GLFW backend feeds input (a window)
+    // Pixels per window point: 2 on a HiDPI display (Retina, a desktop at scale 2), --gui-scale
+    // headless. ImGui lays out in points; the font is rasterised at this many pixels a point.
+    float scale = 1.0f;
     KeyPress toggleKey{GLFW_KEY_F1};
     std::vector<GuiClick> clicks;
     bool help = false;                // the help window: keys and passes
@@ -45,9 +47,14 @@ inline const std::pair<std::string, std::string> kGuiSwitch{
 inline const Choice kGuiClickChoice{"gui-click",
                                     {},
                                     "testing aid: scripted left clicks of the overlay, "
-                                    "X,Y@FRAME[+X,Y@FRAME...] (pixels, frames at least 3 apart)"};
+                                    "X,Y@FRAME[+X,Y@FRAME...] (window points, frames at least 3 apart)"};
+inline const Choice kGuiScaleChoice{"gui-scale",
+                                    {},
+                                    "testing aid, headless: the overlay's pixels per point, 1..4 (a "
+                                    "HiDPI display's scale; in a window the display's own is used)"};
 
-// The context (nothing when --gui is not given). Throws InputError for a bad --gui-click.
+// The context (nothing when --gui is not given). Throws InputError for a bad --gui-click or
+// --gui-scale.
 Gui createGui(const Options& options, const Target& target);
 void destroyGui(Gui& gui);
 // One ImGui frame: input (F1 toggles the overlay), `widgets` (the chapter's ImGui calls), and

@@ -11,6 +11,7 @@
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/pipeline.hpp"
 #include "common/texture.hpp"
 
@@ -28,6 +29,13 @@ struct GuiTransform {
 // colour as four bytes.
 VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
                              VkFormat format) {
+    // ImGui's colours are sRGB values, blended as they are. We draw through a _UNORM view of the
+    // presented image (Target::encodedViews), so they are; only where the image has no such view
+    // does the hardware encode, and the vertex shader decodes them first (constant_id 0), which
+    // blends them in linear light instead.
+    VkBool32 decodeSrgb = common::encodesSrgb(format) ? VK_TRUE : VK_FALSE;
+    VkSpecializationMapEntry decodeEntry{0, 0, sizeof(VkBool32)};
+    VkSpecializationInfo vertexConstants{1, &decodeEntry, sizeof(decodeSrgb), &decodeSrgb};
     VkShaderModule vertex = common::loadShaderModule(device, "common/gui.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "common/gui.frag");
     VkVertexInputBindingDescription binding{0, sizeof(ImDrawVert), VK_VERTEX_INPUT_RATE_VERTEX};
@@ -50,7 +58,7 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
     // by its alpha. Viewport and scissor are dynamic (the scissor changes with every command).
     VkPipeline pipeline = common::createGraphicsPipeline(
         device, cache,
-        {.stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+        {.stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex, &vertexConstants),
                     common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
          .vertexInput = &vertexInput,
          .cullMode = VK_CULL_MODE_NONE,
@@ -158,7 +166,7 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
         VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     common::pipelineBarrier(cmd, &after, 1);
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = target.views[imageIndex],
+                                    .imageView = target.encodedViews[imageIndex],
                                     .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
                                     .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
@@ -167,7 +175,7 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
                               .layerCount = 1,
                               .colorAttachmentCount = 1,
                               .pColorAttachments = &color};
-    vkCmdBeginRendering(cmd, &rendering);
+    vk13.CmdBeginRendering(cmd, &rendering);
     if (drawing) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 1,
@@ -176,23 +184,27 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
         vkCmdBindVertexBuffers(cmd, 0, 1, &buffers.vertices.handle, &offset);
         vkCmdBindIndexBuffer(cmd, buffers.indices.handle, 0,
                              sizeof(ImDrawIdx) == 2 ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32);
-        // ImGui's coordinates are pixels, y down: Vulkan's own viewport orientation (not flipped).
-        VkViewport viewport{0.0f, 0.0f, draw->DisplaySize.x, draw->DisplaySize.y, 0.0f, 1.0f};
+        // ImGui's coordinates are window points, y down: Vulkan's own viewport orientation (not
+        // flipped). The transform maps the display's points to clip space and the viewport
+        // covers the image's pixels, so on a HiDPI display (FramebufferScale 2: two pixels a
+        // point) the overlay covers the same part of the window at twice the detail.
+        VkViewport viewport{0.0f, 0.0f, float(target.extent.width), float(target.extent.height), 0.0f, 1.0f};
         vkCmdSetViewport(cmd, 0, 1, &viewport);
+        ImVec2 scale = draw->FramebufferScale;
         GuiTransform transform{{2.0f / draw->DisplaySize.x, 2.0f / draw->DisplaySize.y},
                                {-1.0f - draw->DisplayPos.x * 2.0f / draw->DisplaySize.x,
                                 -1.0f - draw->DisplayPos.y * 2.0f / draw->DisplaySize.y}};
         vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(transform),
                            &transform);
-        // One draw per command, clipped by its scissor rectangle (inside the image).
+        // One draw per command, clipped by its scissor rectangle (points to pixels, inside the image).
         uint32_t firstVertex = 0, firstIndex = 0;
         for (int n = 0; n < draw->CmdListsCount; ++n) {
             const ImDrawList* list = draw->CmdLists[n];
             for (const ImDrawCmd& command : list->CmdBuffer) {
-                float x0 = std::max(command.ClipRect.x - draw->DisplayPos.x, 0.0f);
-                float y0 = std::max(command.ClipRect.y - draw->DisplayPos.y, 0.0f);
-                float x1 = std::min(command.ClipRect.z - draw->DisplayPos.x, float(target.extent.width));
-                float y1 = std::min(command.ClipRect.w - draw->DisplayPos.y, float(target.extent.height));
+                float x0 = std::max((command.ClipRect.x - draw->DisplayPos.x) * scale.x, 0.0f);
+                float y0 = std::max((command.ClipRect.y - draw->DisplayPos.y) * scale.y, 0.0f);
+                float x1 = std::min((command.ClipRect.z - draw->DisplayPos.x) * scale.x, float(target.extent.width));
+                float y1 = std::min((command.ClipRect.w - draw->DisplayPos.y) * scale.y, float(target.extent.height));
                 if (x1 <= x0 || y1 <= y0) continue;
                 VkRect2D scissor{{int32_t(x0), int32_t(y0)}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
                 vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -203,7 +215,7 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
             firstIndex += uint32_t(list->IdxBuffer.Size);
         }
     }
-    vkCmdEndRendering(cmd);
+    vk13.CmdEndRendering(cmd);
 
     // renderFinish: to the layout the target presents from.
     VkImageMemoryBarrier2 finish = common::imageBarrier(

@@ -5,18 +5,10 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
+#include "common/formats.hpp"
 #include "common/descriptors.hpp"
 
 namespace common {
-namespace {
-
-bool isSrgb(VkFormat format) {
-    return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB ||
-           format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
-}
-
-}  // namespace
-
 PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
                         const Image& lightOutput) {
     PostPass pass;
@@ -55,7 +47,7 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
         {1, offsetof(Constants, encodeSrgb), sizeof(VkBool32)},
     }};
     for (uint32_t fxaa = 0; fxaa < 2; ++fxaa) {
-        Constants constants{fxaa, isSrgb(targetFormat) ? VK_FALSE : VK_TRUE};
+        Constants constants{fxaa, common::encodesSrgb(targetFormat) ? VK_FALSE : VK_TRUE};
         VkSpecializationInfo specialization{
             .mapEntryCount = uint32_t(entries.size()),
             .pMapEntries = entries.data(),
@@ -92,7 +84,7 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& tar
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout, 0, 1, &pass.inputSet, 0,
                             nullptr);
     vkCmdDraw(cmd, 3, 1, 0, 0);
-    vkCmdEndRendering(cmd);
+    vk13.CmdEndRendering(cmd);
 
     // The GUI pass draws over the image next: it stays in ATTACHMENT_OPTIMAL, and the GUI pass
     // orders itself after these writes and moves it on.

@@ -13,24 +13,38 @@
 #include "common/check.hpp"
 #include "common/commands.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 
 #include <glm/gtc/packing.hpp>
 
 namespace common {
 namespace {
 
-// Byte offsets of R, G and B within one 4-byte texel, or false for formats we do not read.
-bool channelOffsets(VkFormat format, int offsets[3]) {
+// One 4-byte texel of a presented image's format to 8-bit R, G, B as the display would show them
+// (the values stored are already sRGB-encoded, by the hardware or by our shaders). False for a
+// format we do not read.
+bool decodeTexel(VkFormat format, const uint8_t* texel, uint8_t rgb[3]) {
+    uint32_t packed;
+    std::memcpy(&packed, texel, 4);
+    auto ten = [&](int shift) {  // a 10-bit channel to 8 bits, rounded
+        return static_cast<uint8_t>((((packed >> shift) & 0x3ffu) * 255u + 511u) / 1023u);
+    };
     switch (format) {
         case VK_FORMAT_B8G8R8A8_UNORM:
         case VK_FORMAT_B8G8R8A8_SRGB:
-            offsets[0] = 2, offsets[1] = 1, offsets[2] = 0;
+            rgb[0] = texel[2], rgb[1] = texel[1], rgb[2] = texel[0];
             return true;
         case VK_FORMAT_R8G8B8A8_UNORM:
         case VK_FORMAT_R8G8B8A8_SRGB:
         case VK_FORMAT_A8B8G8R8_UNORM_PACK32:  // packed ABGR in a little-endian uint32 is R,G,B,A in memory
         case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
-            offsets[0] = 0, offsets[1] = 1, offsets[2] = 2;
+            rgb[0] = texel[0], rgb[1] = texel[1], rgb[2] = texel[2];
+            return true;
+        case VK_FORMAT_A2R10G10B10_UNORM_PACK32:  // bits 29..20 R, 19..10 G, 9..0 B
+            rgb[0] = ten(20), rgb[1] = ten(10), rgb[2] = ten(0);
+            return true;
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:  // bits 29..20 B, 19..10 G, 9..0 R
+            rgb[0] = ten(0), rgb[1] = ten(10), rgb[2] = ten(20);
             return true;
         default:
             return false;
@@ -126,6 +140,13 @@ std::vector<float> readFloatImage(const Device& device, VkImage image, VkFormat 
     } else if (format == VK_FORMAT_D32_SFLOAT) {
         std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 4, VK_IMAGE_ASPECT_DEPTH_BIT);
         for (size_t i = 0; i < count / 4; ++i) std::memcpy(&values[i * 4], bytes.data() + i * 4, 4);
+    } else if (format == VK_FORMAT_X8_D24_UNORM_PACK32) {
+        std::vector<uint8_t> bytes = readImage(device, image, extent, layout, 4, VK_IMAGE_ASPECT_DEPTH_BIT);
+        for (size_t i = 0; i < count / 4; ++i) {
+            uint32_t packed;
+            std::memcpy(&packed, bytes.data() + i * 4, 4);
+            values[i * 4] = float(packed & 0xffffffu) / 16777215.0f;
+        }
     } else {
         throw Failure("readFloatImage: unsupported format " + std::to_string(format));
     }
@@ -150,14 +171,14 @@ void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height
 
 void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExtent2D extent,
                     VkImageLayout layout, const std::filesystem::path& path) {
-    int offsets[3];
-    if (!channelOffsets(format, offsets))
-        throw Failure("cannot take a screenshot of an image in format " + std::to_string(format));
+    uint8_t probe[4] = {}, ignored[3];
+    if (!decodeTexel(format, probe, ignored))
+        throw Failure("cannot take a screenshot of an image in format " + formatName(format));
 
     std::vector<uint8_t> texels = readImage(device, image, extent, layout, 4);
     std::vector<uint8_t> rgb(size_t{extent.width} * extent.height * 3);
     for (size_t i = 0, n = size_t{extent.width} * extent.height; i < n; ++i)
-        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = texels[i * 4 + size_t(offsets[c])];
+        decodeTexel(format, &texels[i * 4], &rgb[i * 3]);
 
     std::filesystem::path temporary = temporarySibling(path);
     if (!stbi_write_png(utf8(temporary).c_str(), static_cast<int>(extent.width),

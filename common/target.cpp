@@ -6,14 +6,14 @@
 
 #include "common/check.hpp"
 #include "common/commands.hpp"
+#include "common/formats.hpp"
 
 namespace common {
 namespace {
 
-void onFramebufferSize(GLFWwindow* window, int, int) {
-    static_cast<Target*>(glfwGetWindowUserPointer(window))->resized = true;
-}
-
+// Installed once, when the window opens, before anything else installs its own (Dear ImGui's
+// GLFW backend chains to it). It needs nothing but the window, so no pointer to a Target that
+// may move; a new size is noticed by pollTarget.
 void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
 }
@@ -24,35 +24,71 @@ std::string glfwErrorText() {
     return description ? description : "unknown GLFW error";
 }
 
-VkSurfaceFormatKHR chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface) {
-    uint32_t count = 0;
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, surface, &count, nullptr));
-    std::vector<VkSurfaceFormatKHR> formats(count);
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, surface, &count, formats.data()));
-    if (formats.empty()) throw Failure("the window surface offers no image format");
-    // An _SRGB format lets the hardware encode our linear shader output for the display.
-    for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB})
-        for (const VkSurfaceFormatKHR& f : formats)
-            if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
-    return formats.front();
+std::string offeredFormats(const std::vector<VkSurfaceFormatKHR>& formats) {
+    std::string names;
+    for (const VkSurfaceFormatKHR& f : formats)
+        names += (names.empty() ? "" : ", ") + formatName(f.format) + " " + colorSpaceName(f.colorSpace);
+    return names;
 }
 
-VkFormat chooseOffscreenFormat(const Device& device) {
-    // The format a window would most likely get, so headless images match windowed ones.
-    for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
+// The first of kPresentFormats the surface offers in the sRGB colour space (or --target-format's).
+VkSurfaceFormatKHR chooseSurfaceFormat(const Target& target, const Device& device) {
+    uint32_t count = 0;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, target.surface, &count, nullptr));
+    std::vector<VkSurfaceFormatKHR> formats(count);
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical, target.surface, &count, formats.data()));
+    auto offered = [&](VkFormat format) {
+        return std::any_of(formats.begin(), formats.end(), [&](const VkSurfaceFormatKHR& f) {
+            return f.format == format && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
+        });
+    };
+    if (target.wantedFormat) {
+        if (!offered(*target.wantedFormat))
+            throw InputError("--target-format " + formatName(*target.wantedFormat) +
+                             ": the window surface does not offer it (it offers " + offeredFormats(formats) + ")");
+        return {*target.wantedFormat, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
+    }
+    for (VkFormat format : kPresentFormats)
+        if (offered(format)) return {format, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
+    throw Failure("the window surface offers no format this program can draw to (it offers " +
+                  offeredFormats(formats) + "; usable: " + presentFormatNames() + " in SRGB_NONLINEAR)");
+}
+
+VkFormat chooseOffscreenFormat(const Target& target, const Device& device) {
+    auto renderable = [&](VkFormat format) {
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
-        VkFormatFeatureFlags needed =
-            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
-        if ((properties.optimalTilingFeatures & needed) == needed) return format;
+        VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+        return (properties.optimalTilingFeatures & needed) == needed;
+    };
+    if (target.wantedFormat) {
+        if (!renderable(*target.wantedFormat))
+            throw Failure("--target-format " + formatName(*target.wantedFormat) +
+                          ": the device cannot render to and copy from it");
+        return *target.wantedFormat;
     }
+    // The format a window would most likely get, so headless images match windowed ones.
+    for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB})
+        if (renderable(format)) return format;
     throw Failure("the device cannot render to an 8-bit sRGB colour image");
+}
+
+// Views of the images as `encodedFormat` (see Target::encodedViews), where that differs.
+void createEncodedViews(Target& target, const Device& device, bool mutableImages) {
+    target.encodedFormat = mutableImages ? withoutSrgb(target.format) : target.format;
+    if (target.encodedFormat == target.format) {
+        target.encodedViews = target.views;
+        return;
+    }
+    for (VkImage image : target.images)
+        target.encodedViews.push_back(
+            createImageView(device, image, target.encodedFormat, VK_IMAGE_ASPECT_COLOR_BIT));
 }
 
 void createSwapchain(Target& target, const Device& device) {
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(device.physical, target.surface, &caps));
-    VkSurfaceFormatKHR surfaceFormat = chooseSurfaceFormat(device, target.surface);
+    VkSurfaceFormatKHR surfaceFormat = chooseSurfaceFormat(target, device);
 
     VkExtent2D extent = caps.currentExtent;
     if (extent.width == UINT32_MAX) {  // the surface takes the swapchain's size: use the framebuffer's
@@ -83,9 +119,17 @@ void createSwapchain(Target& target, const Device& device) {
         for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_IMMEDIATE_KHR, VK_PRESENT_MODE_MAILBOX_KHR})
             if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) presentMode = wanted;
     }
+    // _SRGB images that may also be viewed as _UNORM (Target::encodedViews).
+    VkFormat viewFormats[] = {surfaceFormat.format, withoutSrgb(surfaceFormat.format)};
+    bool mutableImages = device.swapchainMutableFormat && viewFormats[1] != viewFormats[0];
+    VkImageFormatListCreateInfo formatList{.sType = VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO,
+                                           .viewFormatCount = 2,
+                                           .pViewFormats = viewFormats};
     VkSwapchainKHR old = target.swapchain;
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
+        .pNext = mutableImages ? &formatList : nullptr,
+        .flags = mutableImages ? VkSwapchainCreateFlagsKHR{VK_SWAPCHAIN_CREATE_MUTABLE_FORMAT_BIT_KHR} : 0,
         .surface = target.surface,
         .minImageCount = imageCount,
         .imageFormat = surfaceFormat.format,
@@ -103,17 +147,22 @@ void createSwapchain(Target& target, const Device& device) {
         .oldSwapchain = old,
     };
     VK_CHECK(vkCreateSwapchainKHR(device.handle, &info, nullptr, &target.swapchain));
-    if (old != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, old, nullptr);
+    // The old swapchain is retired now (no new image can be acquired from it) but not destroyed:
+    // its last images may still be on their way to the screen (Target::Retired).
+    if (old != VK_NULL_HANDLE) target.retired.back().swapchain = old;
 
     uint32_t count = 0;
     VK_CHECK(vkGetSwapchainImagesKHR(device.handle, target.swapchain, &count, nullptr));
     target.images.resize(count);
     VK_CHECK(vkGetSwapchainImagesKHR(device.handle, target.swapchain, &count, target.images.data()));
     target.format = surfaceFormat.format;
+    target.colorSpace = surfaceFormat.colorSpace;
     target.extent = extent;
     target.presentLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
     for (VkImage image : target.images)
         target.views.push_back(createImageView(device, image, target.format, VK_IMAGE_ASPECT_COLOR_BIT));
+    createEncodedViews(target, device, mutableImages);
+    target.presentedSinceRetiring.assign(target.images.size(), false);
 }
 
 void createOffscreen(Target& target, const Device& device) {
@@ -123,30 +172,45 @@ void createOffscreen(Target& target, const Device& device) {
                          std::to_string(target.requestedExtent.height) + " exceeds this device's limit of " +
                          std::to_string(limit));
     constexpr uint32_t kOffscreenImages = 2;  // like a double-buffered swapchain
-    target.format = chooseOffscreenFormat(device);
+    target.format = chooseOffscreenFormat(target, device);
     target.extent = target.requestedExtent;
     target.presentLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    bool mutableImages = withoutSrgb(target.format) != target.format;
     for (uint32_t i = 0; i < kOffscreenImages; ++i) {
-        target.offscreen.push_back(
-            createImage(device, target.extent, target.format,
-                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                        VK_IMAGE_ASPECT_COLOR_BIT));
+        target.offscreen.push_back(createImage(
+            device, target.extent, target.format,
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1,
+            mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0}));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
     }
+    createEncodedViews(target, device, mutableImages);
     target.nextOffscreen = 0;
 }
 
-// Destroys what depends on the images; a swapchain itself survives to become oldSwapchain.
+void destroyRetired(Target& target, const Device& device) {
+    for (Target::Retired& retired : target.retired) {
+        for (VkSemaphore semaphore : retired.semaphores) vkDestroySemaphore(device.handle, semaphore, nullptr);
+        vkDestroySwapchainKHR(device.handle, retired.swapchain, nullptr);
+    }
+    target.retired.clear();
+}
+
+// Destroys what depends on the images. A swapchain survives to become oldSwapchain, and its
+// semaphores, which the presentation engine may still wait on, are retired with it.
 void releaseImages(Target& target, const Device& device) {
-    for (VkSemaphore semaphore : target.renderFinished) vkDestroySemaphore(device.handle, semaphore, nullptr);
-    target.renderFinished.clear();
+    if (target.encodedViews != target.views)
+        for (VkImageView view : target.encodedViews) vkDestroyImageView(device.handle, view, nullptr);
+    target.encodedViews.clear();
     if (target.window) {
+        target.retired.push_back({VK_NULL_HANDLE, std::move(target.renderFinished)});
         for (VkImageView view : target.views) vkDestroyImageView(device.handle, view, nullptr);
     } else {
+        for (VkSemaphore semaphore : target.renderFinished) vkDestroySemaphore(device.handle, semaphore, nullptr);
         for (Image& image : target.offscreen) destroyImage(device, image);
         target.offscreen.clear();
     }
+    target.renderFinished.clear();
     target.views.clear();
     target.images.clear();
 }
@@ -157,6 +221,7 @@ Target openTarget(const Options& options, const char* title) {
     Target target;
     target.requestedExtent = {options.width, options.height};
     target.vsync = !options.benchmark;
+    target.wantedFormat = options.targetFormat;
     if (options.headless) return target;
 
     if (!glfwInit()) throw Failure("cannot open a window (" + glfwErrorText() + "); run with --headless");
@@ -172,6 +237,7 @@ Target openTarget(const Options& options, const char* title) {
         glfwTerminate();
         throw Failure("cannot create a window (" + why + "); run with --headless");
     }
+    glfwSetKeyCallback(target.window, onKey);
     return target;
 }
 
@@ -189,10 +255,9 @@ void createTargetSurface(Target& target, const Instance& instance) {
 
 void createTargetImages(Target& target, const Device& device) {
     if (target.window) {
-        // The callbacks find the target through the window; it must not move from here on.
-        glfwSetWindowUserPointer(target.window, &target);
-        glfwSetFramebufferSizeCallback(target.window, onFramebufferSize);
-        glfwSetKeyCallback(target.window, onKey);
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(target.window, &width, &height);
+        target.framebufferSize = {uint32_t(width), uint32_t(height)};
         createSwapchain(target, device);
     } else {
         createOffscreen(target, device);
@@ -204,8 +269,8 @@ void createTargetImages(Target& target, const Device& device) {
 
 void requestTargetSize(Target& target, VkExtent2D size) {
     if (target.window) {
-        // Goes through the window system; the framebuffer callback sets `resized` when the new
-        // size arrives, exactly as when a user drags the window border.
+        // Goes through the window system; pollTarget sees the new size when it arrives, exactly
+        // as when a user drags the window border.
         glfwSetWindowSize(target.window, static_cast<int>(size.width), static_cast<int>(size.height));
     } else {
         target.requestedExtent = size;
@@ -221,6 +286,10 @@ bool pollTarget(Target& target) {
     // framebuffer 0x0 (Windows), recreateTargetImages waits the same way.
     while (glfwGetWindowAttrib(target.window, GLFW_ICONIFIED) && !glfwWindowShouldClose(target.window))
         glfwWaitEvents();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(target.window, &width, &height);
+    if (uint32_t(width) != target.framebufferSize.width || uint32_t(height) != target.framebufferSize.height)
+        target.resized = true;
     return glfwWindowShouldClose(target.window);
 }
 
@@ -232,6 +301,12 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
         if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
         // Suboptimal still signals the semaphore: draw, then recreate.
         if (result != VK_SUBOPTIMAL_KHR) VK_CHECK_RESULT(result, "vkAcquireNextImageKHR");
+        // This image was presented since the last swapchain was retired, and the presentation
+        // engine has handed it back: every presentation queued before that one is done.
+        if (!target.retired.empty() && target.presentedSinceRetiring[*imageIndex]) {
+            destroyRetired(target, device);
+            target.presentedSinceRetiring.assign(target.images.size(), false);
+        }
         return true;
     }
     // Headless: images are handed out in turn, and an empty submission signals the semaphore the
@@ -258,6 +333,7 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
             .pImageIndices = &imageIndex,
         };
         VkResult result = vkQueuePresentKHR(device.queue, &info);
+        target.presentedSinceRetiring[imageIndex] = true;
         if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
         VK_CHECK_RESULT(result, "vkQueuePresentKHR");
         return !target.resized;
@@ -286,6 +362,9 @@ bool recreateTargetImages(Target& target, const Device& device) {
         }
         if (glfwWindowShouldClose(target.window)) return false;
     }
+    // The old images' views, framebuffers and the command buffers that use them are the GPU's
+    // until it is idle; the presentation engine's use of the old swapchain is not covered by
+    // this wait (Target::Retired).
     VK_CHECK(vkDeviceWaitIdle(device.handle));
     releaseImages(target, device);
     createTargetImages(target, device);
@@ -293,7 +372,10 @@ bool recreateTargetImages(Target& target, const Device& device) {
 }
 
 void destroyTargetImages(Target& target, const Device& device) {
+    // At the end of a run, after the device is idle: the queue has processed every presentation
+    // request (the wait covers the queue), and nothing will be presented any more.
     releaseImages(target, device);
+    destroyRetired(target, device);
     if (target.swapchain != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, target.swapchain, nullptr);
     target.swapchain = VK_NULL_HANDLE;
 }

@@ -14,6 +14,7 @@
 #include <GLFW/glfw3.h>
 #include <vulkan/vulkan.h>
 
+#include <optional>
 #include <vector>
 
 #include "common/cli.hpp"
@@ -29,13 +30,22 @@ struct Target {
     VkSwapchainKHR swapchain = VK_NULL_HANDLE;
     std::vector<Image> offscreen;  // headless: the images a swapchain would own
 
+    // The images' format: what the window system offers (common/formats.hpp lists the ones we
+    // take), or --target-format's. A pass that writes the images sRGB-encodes itself unless
+    // common::encodesSrgb(format).
     VkFormat format = VK_FORMAT_UNDEFINED;
+    VkColorSpaceKHR colorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     VkExtent2D extent{};
     // The layout an image must be in when handed to presentTargetImage: PRESENT_SRC_KHR for a
     // swapchain, TRANSFER_SRC_OPTIMAL for headless images (they are only ever copied out).
     VkImageLayout presentLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     std::vector<VkImage> images;
     std::vector<VkImageView> views;
+    // The same images seen without the hardware's sRGB encoding (an _SRGB format viewed as its
+    // _UNORM twin), where the images allow it: Dear ImGui's colours are sRGB values meant to be
+    // blended as they are, and the GUI pass draws through these. Otherwise the same as `views`.
+    VkFormat encodedFormat = VK_FORMAT_UNDEFINED;
+    std::vector<VkImageView> encodedViews;
     // Signalled when drawing into image i is done and waited on by its presentation. One per
     // image, not per frame in flight: a frame's semaphore could otherwise be signalled again
     // while the presentation engine still waits on it.
@@ -43,8 +53,22 @@ struct Target {
 
     bool resized = false;          // the window or the requested size changed since the images were made
     VkExtent2D requestedExtent{};  // headless: size of the images; window: size asked for
+    VkExtent2D framebufferSize{};  // window: the framebuffer size the swapchain was made for
+    std::optional<VkFormat> wantedFormat;  // --target-format
     uint32_t nextOffscreen = 0;
     bool vsync = true;  // false with --benchmark: MAILBOX or IMMEDIATE when the surface offers one
+
+    // A swapchain replaced by a new one, and its renderFinished semaphores: the presentation
+    // engine may still be presenting its images and waiting on those semaphores, which no fence
+    // or device wait tells. They are destroyed once an image of the new swapchain comes back
+    // from the presentation engine after being presented: presentation requests on one queue
+    // complete in order, so every earlier one, the old swapchain's included, is done by then.
+    struct Retired {
+        VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+        std::vector<VkSemaphore> semaphores;
+    };
+    std::vector<Retired> retired;
+    std::vector<bool> presentedSinceRetiring;  // per image of the current swapchain
 };
 
 // Opens the window (or nothing, headless) described by the command line.

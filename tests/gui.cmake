@@ -32,7 +32,7 @@ chapter_test(chapter-14.gui-click-fxaa
             --frames 6 --gui-click 27,241@2 --screenshot ${TEST_OUT}/chapter-14-gui-fxaa.png QUIET_STDERR)
 set_tests_properties(chapter-14.gui-click-fxaa PROPERTIES FIXTURES_SETUP ch14-gui-fxaa)
 add_test(NAME chapter-14.gui-click-fxaa-ticked
-    COMMAND image_compare ${TEST_OUT}/chapter-14-gui-fxaa.png --pixel 27 241 54 110 182 --pixel-tolerance 6)
+    COMMAND image_compare ${TEST_OUT}/chapter-14-gui-fxaa.png --pixel 27 241 47 93 149 --pixel-tolerance 6)
 set_tests_properties(chapter-14.gui-click-fxaa-ticked PROPERTIES FIXTURES_REQUIRED ch14-gui-fxaa)
 
 chapter_test(chapter-15.gui-click-bad COMMAND $<TARGET_FILE:chapter-15> --headless --gui --gui-click 10,20
@@ -48,7 +48,7 @@ if(XVFB_RUN)
             QUIET_STDERR)
         set_tests_properties(chapter-14.window-gui-click PROPERTIES FIXTURES_SETUP ch14-window-gui-click)
         add_test(NAME chapter-14.window-gui-click-ticked
-            COMMAND image_compare ${TEST_OUT}/chapter-14-window-gui-click.png --pixel 27 241 54 110 182
+            COMMAND image_compare ${TEST_OUT}/chapter-14-window-gui-click.png --pixel 27 241 47 93 149
                     --pixel-tolerance 6)
         set_tests_properties(chapter-14.window-gui-click-ticked PROPERTIES FIXTURES_REQUIRED ch14-window-gui-click)
         chapter_test(chapter-14.window-gui-f1

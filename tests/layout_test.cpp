@@ -89,7 +89,7 @@ void run(const common::Options& options) {
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
-                                                 {.scalarBlockLayout = true, .maintenance4 = true});
+                                                 {.scalarBlockLayout = true});
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     common::Buffer buffers[7] = {
         common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),

@@ -3,8 +3,12 @@
 // albedo, as in the book; --view depth shows the depth attachment instead.
 #extension GL_GOOGLE_include_directive : require
 #include "depth_view.glsl"
+#include "srgb.glsl"
 
 //> lighting-frag
+// True when the target image's format does not sRGB-encode what we write (a _UNORM format).
+layout(constant_id = 0) const bool ENCODE_SRGB = false;
+
 layout(location = 0) in vec2 inUv;
 
 layout(location = 0) out vec4 outColor;
@@ -19,10 +23,12 @@ layout(push_constant) uniform LightingView {
 } show;
 
 void main() {
+    vec3 color;
     if (show.view == 2) {
-        outColor = vec4(vec3(depthToGrey(texture(depthAttachment, inUv).r, show.near, show.far)), 1.0);
+        color = vec3(depthToGrey(texture(depthAttachment, inUv).r, show.near, show.far));
     } else {
-        outColor = vec4(texture(albedoAttachment, inUv).rgb, 1.0);
+        color = texture(albedoAttachment, inUv).rgb;
     }
+    outColor = vec4(ENCODE_SRGB ? encodeSrgb(color) : color, 1.0);
 }
 //< lighting-frag

@@ -5,21 +5,17 @@
 // is created, so the shader compiler removes the branches.
 #extension GL_GOOGLE_include_directive : require
 #include "fxaa.glsl"
+#include "srgb.glsl"
 
 //> post-frag
 layout(constant_id = 0) const bool USE_FXAA = false;
-layout(constant_id = 1) const bool ENCODE_SRGB = false;  // true for a _UNORM target format
+layout(constant_id = 1) const bool ENCODE_SRGB = false;  // true for a _UNORM target format (common::encodesSrgb)
 
 layout(location = 0) in vec2 inUv;
 
 layout(location = 0) out vec4 outColor;
 
 layout(set = 0, binding = 0) uniform sampler2D lightOutput;
-
-// The sRGB transfer function (IEC 61966-2-1).
-vec3 encodeSrgb(vec3 c) {
-    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
 
 void main() {
     vec3 color = USE_FXAA ? fxaa(lightOutput, inUv) : texture(lightOutput, inUv).rgb;

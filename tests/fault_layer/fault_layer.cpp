@@ -14,6 +14,14 @@
 //                                        after a real device loss (a wait returns at once: no hang).
 // A failed call is not passed down, so the layers below (validation) and the driver never see it
 // and keep a consistent picture. VKBOOK_FAULT_TRACE=1 prints each counted call, to choose n.
+//
+// It also makes the device look older or poorer than it is, as a reader's may be:
+//   VKBOOK_DEVICE_API=1.2 (or 1.1)  the physical device reports that Vulkan version;
+//   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...) and
+//                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
+//                                   among a surface's formats).
+// Only what the application asks of the physical device changes: the layers below still see the
+// real device, so validation checks what the application then does against what it enables.
 // Otherwise the layer prints nothing. It is an implicit layer that is only enabled when
 // VKBOOK_FAULT_LAYER=1 (see its manifest in tests/fault.cmake): the loader reports layers enabled
 // through VK_INSTANCE_LAYERS as a warning to the debug messenger, which --validation would count.
@@ -27,10 +35,12 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace {
 
@@ -131,6 +141,68 @@ VkResult deviceLoss(DeviceData& device, const char* call) {
     std::lock_guard lock(gLock);
     if (failsNow(call)) device.lost = true;
     return device.lost ? VK_ERROR_DEVICE_LOST : VK_SUCCESS;
+}
+
+// ---- The device as the application is to see it -------------------------------------------------
+
+struct Profile {
+    uint32_t apiVersion = 0;  // 0: the device's own
+    std::vector<std::string> hidden;
+};
+
+const std::unordered_map<std::string, VkFormat>& formatNames() {
+    static const std::unordered_map<std::string, VkFormat> names = {
+        {"D32_SFLOAT", VK_FORMAT_D32_SFLOAT},
+        {"X8_D24_UNORM_PACK32", VK_FORMAT_X8_D24_UNORM_PACK32},
+        {"B8G8R8A8_SRGB", VK_FORMAT_B8G8R8A8_SRGB},
+        {"R8G8B8A8_SRGB", VK_FORMAT_R8G8B8A8_SRGB},
+        {"B8G8R8A8_UNORM", VK_FORMAT_B8G8R8A8_UNORM},
+        {"R8G8B8A8_UNORM", VK_FORMAT_R8G8B8A8_UNORM},
+        {"A2R10G10B10_UNORM_PACK32", VK_FORMAT_A2R10G10B10_UNORM_PACK32},
+        {"A2B10G10R10_UNORM_PACK32", VK_FORMAT_A2B10G10R10_UNORM_PACK32},
+    };
+    return names;
+}
+
+Profile parseProfile() {
+    Profile p;
+    if (const char* api = std::getenv("VKBOOK_DEVICE_API"); api && *api) {
+        if (std::strcmp(api, "1.1") == 0) p.apiVersion = VK_API_VERSION_1_1;
+        else if (std::strcmp(api, "1.2") == 0) p.apiVersion = VK_API_VERSION_1_2;
+        else std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
+    }
+    if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
+        std::string list = hide;
+        for (size_t start = 0; start <= list.size();) {
+            size_t comma = list.find(',', start);
+            if (comma == std::string::npos) comma = list.size();
+            std::string name = list.substr(start, comma - start);
+            if (!name.starts_with("VK_") && !formatNames().count(name))
+                std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension nor a format it knows\n", name.c_str());
+            if (!name.empty()) p.hidden.push_back(name);
+            start = comma + 1;
+        }
+    }
+    return p;
+}
+
+const Profile& profile() {
+    static const Profile parsed = parseProfile();
+    return parsed;
+}
+
+bool hidden(const char* name) {
+    for (const std::string& h : profile().hidden)
+        if (h == name) return true;
+    return false;
+}
+
+bool hidden(VkFormat format) {
+    for (const std::string& h : profile().hidden) {
+        auto found = formatNames().find(h);
+        if (found != formatNames().end() && found->second == format) return true;
+    }
+    return false;
 }
 
 // ---- Instance and device creation: linking into the chain ---------------------------------------
@@ -301,6 +373,92 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
 #undef LOSE_OR_PASS_DOWN
 #undef FAIL_OR_PASS_DOWN
 
+// ---- Physical-device queries, answered as the profile says --------------------------------------
+
+template <typename Function>
+Function nextInstanceCall(VkPhysicalDevice physical, const char* name) {
+    InstanceData data = instanceData(physical);
+    return reinterpret_cast<Function>(data.next(data.handle, name));
+}
+
+void lowerVersion(VkPhysicalDeviceProperties& properties) {
+    if (profile().apiVersion != 0 && profile().apiVersion < properties.apiVersion)
+        properties.apiVersion = profile().apiVersion;
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties(VkPhysicalDevice physical,
+                                                       VkPhysicalDeviceProperties* properties) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties>(physical, "vkGetPhysicalDeviceProperties")(physical,
+                                                                                                   properties);
+    lowerVersion(*properties);
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties2(VkPhysicalDevice physical,
+                                                        VkPhysicalDeviceProperties2* properties) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties2>(physical, "vkGetPhysicalDeviceProperties2")(physical,
+                                                                                                     properties);
+    lowerVersion(properties->properties);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevice physical,
+                                                                  const char* layerName, uint32_t* count,
+                                                                  VkExtensionProperties* properties) {
+    auto next = nextInstanceCall<PFN_vkEnumerateDeviceExtensionProperties>(
+        physical, "vkEnumerateDeviceExtensionProperties");
+    if (layerName != nullptr) return next(physical, layerName, count, properties);
+    uint32_t all = 0;
+    VkResult result = next(physical, nullptr, &all, nullptr);
+    if (result != VK_SUCCESS) return result;
+    std::vector<VkExtensionProperties> extensions(all);
+    result = next(physical, nullptr, &all, extensions.data());
+    if (result != VK_SUCCESS) return result;
+    std::erase_if(extensions, [](const VkExtensionProperties& e) { return hidden(e.extensionName); });
+    if (properties == nullptr) {
+        *count = uint32_t(extensions.size());
+        return VK_SUCCESS;
+    }
+    uint32_t written = std::min(*count, uint32_t(extensions.size()));
+    std::copy_n(extensions.begin(), written, properties);
+    *count = written;
+    return written < extensions.size() ? VK_INCOMPLETE : VK_SUCCESS;
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFormatProperties(VkPhysicalDevice physical, VkFormat format,
+                                                             VkFormatProperties* properties) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties>(physical, "vkGetPhysicalDeviceFormatProperties")(
+        physical, format, properties);
+    if (hidden(format)) *properties = {};
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFormatProperties2(VkPhysicalDevice physical, VkFormat format,
+                                                              VkFormatProperties2* properties) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties2>(physical, "vkGetPhysicalDeviceFormatProperties2")(
+        physical, format, properties);
+    if (hidden(format)) properties->formatProperties = {};
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL getPhysicalDeviceSurfaceFormats(VkPhysicalDevice physical, VkSurfaceKHR surface,
+                                                               uint32_t* count, VkSurfaceFormatKHR* formats) {
+    auto next = nextInstanceCall<PFN_vkGetPhysicalDeviceSurfaceFormatsKHR>(
+        physical, "vkGetPhysicalDeviceSurfaceFormatsKHR");
+    uint32_t all = 0;
+    VkResult result = next(physical, surface, &all, nullptr);
+    if (result != VK_SUCCESS) return result;
+    std::vector<VkSurfaceFormatKHR> offered(all);
+    result = next(physical, surface, &all, offered.data());
+    if (result != VK_SUCCESS && result != VK_INCOMPLETE) return result;
+    offered.resize(all);
+    std::erase_if(offered, [](const VkSurfaceFormatKHR& f) { return hidden(f.format); });
+    if (formats == nullptr) {
+        *count = uint32_t(offered.size());
+        return VK_SUCCESS;
+    }
+    uint32_t written = std::min(*count, uint32_t(offered.size()));
+    std::copy_n(offered.begin(), written, formats);
+    *count = written;
+    return written < offered.size() ? VK_INCOMPLETE : VK_SUCCESS;
+}
+
 // ---- GetProcAddr: our functions for the calls we intercept, the next layer's for the rest ------
 
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getDeviceProcAddr(VkDevice device, const char* name);
@@ -342,6 +500,21 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
     if (std::strcmp(name, "vkDestroyInstance") == 0)
         return reinterpret_cast<PFN_vkVoidFunction>(destroyInstance);
     if (std::strcmp(name, "vkCreateDevice") == 0) return reinterpret_cast<PFN_vkVoidFunction>(createDevice);
+    static const std::unordered_map<std::string, PFN_vkVoidFunction> physicalDeviceCalls = {
+        {"vkGetPhysicalDeviceProperties", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties)},
+        {"vkGetPhysicalDeviceProperties2", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
+        {"vkGetPhysicalDeviceProperties2KHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
+        {"vkEnumerateDeviceExtensionProperties",
+         reinterpret_cast<PFN_vkVoidFunction>(enumerateDeviceExtensionProperties)},
+        {"vkGetPhysicalDeviceFormatProperties",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties)},
+        {"vkGetPhysicalDeviceFormatProperties2",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties2)},
+        {"vkGetPhysicalDeviceFormatProperties2KHR",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties2)},
+        {"vkGetPhysicalDeviceSurfaceFormatsKHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceSurfaceFormats)},
+    };
+    if (auto found = physicalDeviceCalls.find(name); found != physicalDeviceCalls.end()) return found->second;
     if (PFN_vkVoidFunction ours = interceptedDeviceCall(name)) return ours;
     if (instance == VK_NULL_HANDLE) return nullptr;
     return instanceData(instance).next(instance, name);
