@@ -39,7 +39,7 @@ const common::ChapterInfo kChapter{
     "chapter-14",
     "deferred rendering with dynamic rendering and synchronization2 (the book's chapter 14)",
     {"final", "albedo", "depth"},
-    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}, common::kGuiSwitch},
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}, common::kGuiSwitch, common::kGuiStillSwitch},
     {common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 

@@ -46,7 +46,8 @@ const common::ChapterInfo kChapter{
     {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of shade_pixel.glsl's `view`
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
-     common::kGuiSwitch},
+     common::kGuiSwitch,
+     common::kGuiStillSwitch},
     {common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 

@@ -77,7 +77,7 @@ Gui createGui(const Options& options, const Target& target) {
     font.SizePixels = 13.0f * gui.scale;  // the default font's own size, 13 pixels at scale 1
     io.Fonts->AddFontDefault(&font);
     io.FontGlobalScale = 1.0f / gui.scale;
-    gui.deterministic = target.window == nullptr;
+    gui.deterministic = target.window == nullptr || options.switches.count("gui-still") != 0;
     if (target.window) gui.glfwBackend = ImGui_ImplGlfw_InitForVulkan(target.window, true);
     return gui;
 }

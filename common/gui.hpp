@@ -29,7 +29,7 @@ struct GuiClick {
 struct Gui {
     bool enabled = false;        // --gui
     bool visible = true;         // F1 hides and shows the overlay
-    bool deterministic = false;  // headless: fixed time step, no real input, timings as placeholders
+    bool deterministic = false;  // headless or --gui-still: timings as placeholders
     bool glfwBackend = false;    // Dear ImGui's GLFW backend feeds input (a window)
     // Pixels per window point: 2 on a HiDPI display (Retina, a desktop at scale 2), --gui-scale
     // headless. ImGui lays out in points; the font is rasterised at this many pixels a point.
@@ -44,6 +44,8 @@ struct Gui {
 // The chapter-specific options every GUI chapter adds to its ChapterInfo.
 inline const std::pair<std::string, std::string> kGuiSwitch{
     "gui", "draw the Dear ImGui overlay (F1 hides and shows it); headless, deterministically"};
+inline const std::pair<std::string, std::string> kGuiStillSwitch{
+    "gui-still", "testing aid: the overlay shows placeholders, not timings, in a window too"};
 inline const Choice kGuiClickChoice{"gui-click",
                                     {},
                                     "testing aid: scripted left clicks of the overlay, "

@@ -9,6 +9,15 @@
 #                                                    overlay: the camera must move (the check above can
 #                                                    fail)
 #   window_gui.sh f1 CHAPTER OUT.png [options...]      presses F1: the last frame has no overlay
+#   window_gui.sh type-after-resize CHAPTER [options...]  resizes the window (as a user would, through
+#                                                    the window system), then Ctrl+clicks chapter-15's
+#                                                    "sun angle" slider, which makes it a text field,
+#                                                    selects its text (Ctrl+A), deletes it
+#                                                    (Backspace), types 300 and Enter, and closes the
+#                                                    window (Escape): the chapter must report the sun
+#                                                    at 300 degrees. Every key but the digits is one
+#                                                    that only reaches the overlay through the key
+#                                                    callback Dear ImGui chains to ours.
 # The chapter runs with --validation: any validation message fails it (exit 3).
 set -u
 mode=$1
@@ -42,6 +51,28 @@ drag-overlay | drag-scene)
     done
     xdotool mouseup 3
     ;;
+type-after-resize)
+    xdotool windowsize "$window" 800 450
+    sleep 1.5  # the swapchain is rebuilt for the new size
+    # The Lights window hangs from the top right corner: its slider is 190 points from the right.
+    # Dear ImGui 1.86 samples the keys' state once a frame: each key is held over a few frames.
+    hold() { xdotool keydown "$1"; sleep 0.4; xdotool keyup "$1"; sleep 0.2; }
+    xdotool mousemove --window "$window" 610 46 keydown ctrl
+    sleep 0.4
+    xdotool mousedown 1
+    sleep 0.3
+    xdotool mouseup 1
+    sleep 0.3
+    xdotool keydown a
+    sleep 0.4
+    xdotool keyup a keyup ctrl
+    sleep 0.2
+    hold BackSpace
+    xdotool type 300
+    hold Return
+    sleep 0.3
+    xdotool mousemove --window "$window" 400 400 key Escape
+    ;;
 f1)
     xdotool mousemove --window "$window" 500 300  # keyboard focus follows the pointer without a window manager
     xdotool keydown F1  # held over a few frames: the chapter polls the key's state each frame
@@ -55,6 +86,8 @@ cat "$out"
 case $mode in
 drag-overlay) grep -q "camera moved" "$out" && { echo "a drag on the overlay moved the camera"; rc=1; } ;;
 drag-scene) grep -q "camera moved" "$out" || { echo "a drag on the scene did not move the camera"; rc=1; } ;;
+type-after-resize)
+    grep -q "sun at 300.0 degrees" "$out" || { echo "the value typed into the overlay after a resize did not arrive"; rc=1; } ;;
 esac
 rm -f "$out"
 exit $rc

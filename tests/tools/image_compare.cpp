@@ -5,12 +5,18 @@
 //   image_compare IMAGE [--size W H] [--pixel-linear X Y R G B]... [--pixel X Y R G B]...
 //                       [--pixel-tolerance N] [--golden FILE --max-diff N --max-fraction F]
 //                       [--expect-scaled REFERENCE FACTOR --max-diff N --max-fraction F]
+//                       [--overlay-like BASE OTHER OTHER_BASE]
 //
 // --pixel-linear takes a linear colour (what a shader writes or a clear colour holds) and
 // expects its sRGB encoding in the PNG; --pixel takes 8-bit values as stored. --expect-scaled
 // checks IMAGE = FACTOR x REFERENCE in linear colour (both PNGs sRGB-encoded), with the same
 // per-channel tolerance. On a golden mismatch an image of the differing pixels is written to
 // IMAGE.diff.png.
+// --overlay-like checks that an overlay covers the same part of the window in two images of
+// different sizes (a HiDPI scale against scale 1): IMAGE minus BASE (the same run without the
+// overlay) is where IMAGE's overlay is; OTHER minus OTHER_BASE is the other's. Both masks are taken
+// to the smaller size (a pixel is covered when most of its block is); they must overlap by at least
+// 95% (intersection over union) and their bounding boxes agree within 1% of the width and height.
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -51,6 +57,24 @@ int encodeSrgb(double linear) {
     return static_cast<int>(std::lround(std::fmin(std::fmax(c, 0.0), 1.0) * 255.0));
 }
 
+// Where `gui` differs from `base` (any channel by more than 16), at `size`x`size` blocks.
+std::vector<bool> overlayMask(const Png& gui, const Png& base, int block, int width, int height) {
+    std::vector<bool> mask(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            int covered = 0;
+            for (int by = 0; by < block; ++by)
+                for (int bx = 0; bx < block; ++bx) {
+                    size_t i = (size_t(y * block + by) * gui.width + size_t(x * block + bx)) * 3;
+                    bool differs = false;
+                    for (int c = 0; c < 3; ++c) differs = differs || std::abs(gui.rgb[i + c] - base.rgb[i + c]) > 16;
+                    covered += differs;
+                }
+            mask[size_t(y) * width + x] = covered * 2 > block * block;
+        }
+    return mask;
+}
+
 struct PixelCheck {
     int x, y, rgb[3];
 };
@@ -69,6 +93,9 @@ int main(int argc, char** argv) {
     const char* scaledReference = nullptr;
     double scale = 1.0;
     std::vector<PixelCheck> pixels;
+    const char* overlayBase = nullptr;
+    const char* overlayOther = nullptr;
+    const char* overlayOtherBase = nullptr;
     for (int i = 2; i < argc; ++i) {
         std::string_view arg = argv[i];
         auto need = [&](int n) {
@@ -99,6 +126,11 @@ int main(int argc, char** argv) {
             need(2);
             scaledReference = argv[++i];
             scale = std::atof(argv[++i]);
+        } else if (arg == "--overlay-like") {
+            need(3);
+            overlayBase = argv[++i];
+            overlayOther = argv[++i];
+            overlayOtherBase = argv[++i];
         } else if (arg == "--max-diff") {
             need(1);
             maxDiff = std::atoi(argv[++i]);
@@ -173,6 +205,45 @@ int main(int argc, char** argv) {
                         diffPath.c_str());
             ++failures;
         }
+    }
+    if (overlayBase) {
+        Png base, other, otherBase;
+        if (!load(overlayBase, base) || !load(overlayOther, other) || !load(overlayOtherBase, otherBase)) return 1;
+        const Png& small = other.width < image.width ? other : image;
+        const Png& large = other.width < image.width ? image : other;
+        const Png& smallBase = other.width < image.width ? otherBase : base;
+        const Png& largeBase = other.width < image.width ? base : otherBase;
+        int block = large.width / small.width;
+        if (base.width != image.width || otherBase.width != other.width || block < 1 ||
+            large.width != small.width * block || large.height != small.height * block) {
+            std::printf("FAIL --overlay-like: sizes %dx%d and %dx%d are not a whole multiple of each other\n",
+                        image.width, image.height, other.width, other.height);
+            return 1;
+        }
+        int w = small.width, h = small.height;
+        std::vector<bool> a = overlayMask(small, smallBase, 1, w, h), b = overlayMask(large, largeBase, block, w, h);
+        size_t both = 0, either = 0;
+        int box[2][4] = {{w, h, -1, -1}, {w, h, -1, -1}};  // x0, y0, x1, y1
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                bool in[2] = {a[size_t(y) * w + x], b[size_t(y) * w + x]};
+                both += in[0] && in[1];
+                either += in[0] || in[1];
+                for (int m = 0; m < 2; ++m)
+                    if (in[m]) {
+                        box[m][0] = std::min(box[m][0], x), box[m][1] = std::min(box[m][1], y);
+                        box[m][2] = std::max(box[m][2], x), box[m][3] = std::max(box[m][3], y);
+                    }
+            }
+        double iou = either ? double(both) / double(either) : 0.0;
+        int worstEdge = 0;
+        for (int e = 0; e < 4; ++e) worstEdge = std::max(worstEdge, std::abs(box[0][e] - box[1][e]));
+        bool ok = either > 0 && iou >= 0.95 && worstEdge <= std::max(w, h) / 100;
+        std::printf("%s overlay: %zu pixels at %dx%d, intersection over union %.4f (at least 0.95), bounding boxes "
+                    "(%d,%d)-(%d,%d) and (%d,%d)-(%d,%d), edges %d pixels apart (at most %d)\n",
+                    ok ? "ok  " : "FAIL", either, w, h, iou, box[0][0], box[0][1], box[0][2], box[0][3], box[1][0],
+                    box[1][1], box[1][2], box[1][3], worstEdge, std::max(w, h) / 100);
+        failures += !ok;
     }
     if (scaledReference) {
         Png reference;
