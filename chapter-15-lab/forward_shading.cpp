@@ -41,7 +41,7 @@ ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cach
 }
 
 //> record-forward
-void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, const ScenePass& scenePass,
+void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, ScenePass& scenePass,
                        const LightPass& lightPass, const common::GpuScene& scene, uint32_t frame,
                        glm::vec3 cameraPosition) {
     // The light output and depth to ATTACHMENT_OPTIMAL once the previous frame has read them (the

@@ -33,7 +33,7 @@ ForwardPass createForwardPass(const common::Device& device, VkPipelineCache cach
                               const LightPass& lightPass);
 // Leaves the light output READ_ONLY_OPTIMAL for the post pass and the depth attachment
 // READ_ONLY_OPTIMAL (for --dump), as the deferred passes do.
-void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, const ScenePass& scenePass,
+void recordForwardPass(VkCommandBuffer cmd, const ForwardPass& pass, ScenePass& scenePass,
                        const LightPass& lightPass, const common::GpuScene& scene, uint32_t frame,
                        glm::vec3 cameraPosition);
 void destroyForwardPass(const common::Device& device, ForwardPass& pass);

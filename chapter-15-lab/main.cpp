@@ -74,6 +74,11 @@ const common::ChapterInfo kChapter{
       "deferred: the G-buffer, then the light pass (the book's); "
       "forward: the scene pass shades each fragment with every light (no light pass, the G-buffer "
       "not written), to compare"},
+     {"acquire",
+      {"early", "late"},
+      "early: acquire the image, then record and submit the frame, waiting for the image at colour "
+      "output (the book's); late: submit the scene and light passes first, then acquire and submit "
+      "the post and GUI passes, which alone wait for the image"},
      common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 
@@ -117,7 +122,7 @@ void placePointLight(LightControls& controls, common::Scene& scene, common::GpuS
     common::Transform transform = scene.models[size_t(light.marker)].transform;
     transform.position = light.position;
     for (common::Draw& draw : gpuScene.draws)
-        if (draw.instance == uint32_t(light.marker)) draw.model = transform.matrix();
+        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
 }
 
 void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
@@ -240,6 +245,17 @@ void run(const common::Options& options) {
         {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
+    // --acquire late: a second command buffer per frame (from the frame's pool) for the passes that
+    // write the acquired image.
+    bool acquireLate = options.choices.count("acquire") != 0 && options.choices.at("acquire") == 1;
+    std::vector<VkCommandBuffer> lateCommands(frames.size());
+    for (size_t i = 0; acquireLate && i < frames.size(); ++i) {
+        VkCommandBufferAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                              .commandPool = frames[i].commandPool,
+                                              .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                              .commandBufferCount = 1};
+        VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &lateCommands[i]));
+    }
 
     common::GpuScene gpuScene = common::loadGpuScene(
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
@@ -373,11 +389,13 @@ void run(const common::Options& options) {
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
         common::collectGpuTimes(run, device, slot);
         uint32_t imageIndex = 0;
-        if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget()) break;
-            continue;
+        if (!acquireLate) {  // the book's order: the image first
+            if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
+                if (!recreateTarget()) break;
+                continue;
+            }
+            VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
         }
-        VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
         if (gui.enabled) common::updateGuiBuffers(device, guiPass, slot, overlay);
 
         // This frame's uniforms: camera, lights (they may have moved), scene info.
@@ -427,14 +445,36 @@ void run(const common::Options& options) {
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView);
             common::timePassEnd(run, sync.commandBuffer, slot, pass++);
         }
-        common::recordPostPass(sync.commandBuffer, postPass, target, imageIndex, fxaa, gui.enabled);
-        common::timePassEnd(run, sync.commandBuffer, slot, pass++);
-        if (gui.enabled) {
-            common::recordGuiPass(sync.commandBuffer, guiPass, slot, target, imageIndex, overlay);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+        // --acquire late: the off-screen passes go to the GPU now, with nothing to wait for; the
+        // image is acquired only for the passes that write it, recorded into a second command
+        // buffer. (Queue order and the G-buffer's barriers still order the two submits.)
+        VkCommandBuffer presentCommands = sync.commandBuffer;
+        if (acquireLate) {
+            VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+            VkCommandBufferSubmitInfo offscreen{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                                .commandBuffer = sync.commandBuffer};
+            VkSubmitInfo2 first{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                                .commandBufferInfoCount = 1,
+                                .pCommandBufferInfos = &offscreen};
+            VK_CHECK(common::vk13.QueueSubmit2(device.queue, 1, &first, VK_NULL_HANDLE));
+            if (!common::acquireTargetImage(target, device, sync.imageAvailable, &imageIndex)) {
+                if (!recreateTarget()) break;
+                continue;
+            }
+            VK_CHECK(vkResetFences(device.handle, 1, &sync.inFlight));
+            presentCommands = lateCommands[slot];
+            VK_CHECK(vkBeginCommandBuffer(presentCommands, &beginInfo));
         }
-        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+        common::recordPostPass(presentCommands, postPass, target, imageIndex, fxaa, gui.enabled);
+        common::timePassEnd(run, presentCommands, slot, pass++);
+        if (gui.enabled) {
+            common::recordGuiPass(presentCommands, guiPass, slot, target, imageIndex, overlay);
+            common::timePassEnd(run, presentCommands, slot, pass++);
+        }
+        VK_CHECK(vkEndCommandBuffer(presentCommands));
 
+        // Every colour write of this batch waits for the image: with one submit (the book's),
+        // the G-buffer's and the light output's too, not only the post pass's.
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                                    .semaphore = sync.imageAvailable,
                                    .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
@@ -442,7 +482,7 @@ void run(const common::Options& options) {
                                      .semaphore = target.renderFinished[imageIndex],
                                      .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
         VkCommandBufferSubmitInfo commands{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
-                                           .commandBuffer = sync.commandBuffer};
+                                           .commandBuffer = presentCommands};
         VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
                              .waitSemaphoreInfoCount = 1,
                              .pWaitSemaphoreInfos = &wait,

@@ -92,7 +92,7 @@ void placePointLight(LightControls& controls, common::Scene& scene, common::GpuS
     common::Transform transform = scene.models[size_t(light.marker)].transform;
     transform.position = light.position;
     for (common::Draw& draw : gpuScene.draws)
-        if (draw.instance == uint32_t(light.marker)) draw.model = transform.matrix();
+        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
 }
 
 void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,

@@ -197,7 +197,7 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 }
 
 //> record-scene
-void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
+void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame, glm::vec3 cameraPosition) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
     common::beginGBufferRendering(cmd, pass.gbuffer, pass.layout->reversedZ ? 0.0f : 1.0f);
@@ -214,22 +214,29 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     common::gbufferRenderFinish(cmd, pass.gbuffer);
 }
 
-void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePipelines& pipelines,
-                      const common::GpuScene& scene, glm::vec3 cameraPosition) {
-    // The order of the draws: opaque ones by the distance of their bounds' centre, then cut-outs.
-    std::vector<std::pair<float, const common::Draw*>> order;
-    for (const common::Draw& draw : scene.draws) {
-        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        glm::vec3 center = glm::vec3(draw.model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
-        float key = glm::length(center - cameraPosition);
-        if (scene.materials[draw.material].alphaTested) key += 1e30f;  // after every opaque draw
-        order.push_back({key, &draw});
+// The order of the draws: opaque ones by the distance of their bounds' centre, then cut-outs.
+// Made again only when the camera has moved (a moved light marker waits for that: the order only
+// saves shading work, it never changes the image).
+void orderSceneDraws(ScenePass& pass, const common::GpuScene& scene, glm::vec3 cameraPosition) {
+    if (pass.order.size() == scene.draws.size() && pass.orderedFrom == cameraPosition) return;
+    std::vector<float> distance(scene.draws.size());
+    for (size_t i = 0; i < scene.draws.size(); ++i) {
+        const common::Draw& draw = scene.draws[i];
+        distance[i] = glm::length(draw.center - cameraPosition);
+        if (scene.materials[draw.material].alphaTested) distance[i] += 1e30f;  // after every opaque draw
     }
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    pass.order.resize(scene.draws.size());
+    for (uint32_t i = 0; i < pass.order.size(); ++i) pass.order[i] = i;
+    std::sort(pass.order.begin(), pass.order.end(), [&](uint32_t a, uint32_t b) { return distance[a] < distance[b]; });
+    pass.orderedFrom = cameraPosition;
+}
 
+void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines& pipelines,
+                      const common::GpuScene& scene, glm::vec3 cameraPosition) {
+    orderSceneDraws(pass, scene, cameraPosition);
     VkPipeline bound = VK_NULL_HANDLE;
-    for (const auto& [key, drawPointer] : order) {
-        const common::Draw& draw = *drawPointer;
+    for (uint32_t index : pass.order) {
+        const common::Draw& draw = scene.draws[index];
         const common::GpuMaterial& material = scene.materials[draw.material];
         VkPipeline pipeline =
             material.doubleSided
@@ -242,9 +249,9 @@ void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePip
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout, 2, 1,
                                 &pass.materialTextureSets[draw.material], 0, nullptr);
-        // Normals need the inverse-transpose of the model matrix; computed once per draw here
-        // rather than once per vertex in the shader, as the book does.
-        glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(draw.model)));
+        // Normals need the inverse-transpose of the model matrix: computed when the draw was
+        // placed (common::setDrawModel), not once per vertex in the shader as the book does.
+        const glm::mat3& normalMatrix = draw.normalMatrix;
         DrawConstants constants{draw.model,
                                 {glm::vec4(normalMatrix[0], 0.0f), glm::vec4(normalMatrix[1], 0.0f),
                                  glm::vec4(normalMatrix[2], 0.0f)}};

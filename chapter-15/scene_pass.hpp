@@ -60,6 +60,8 @@ struct ScenePass {
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialTextureSets;
     ScenePipelines pipelines;
+    std::vector<uint32_t> order;  // the draws' indices in the order they are recorded
+    glm::vec3 orderedFrom{0.0f};  // the camera position `order` was made for
 };
 
 // The G-buffer of `layout` and the pipelines that fill it (none for a layout of depth alone).
@@ -71,7 +73,7 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.
-void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
+void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame, glm::vec3 cameraPosition);
 void destroyScenePass(const common::Device& device, ScenePass& pass);
 
@@ -79,6 +81,6 @@ void destroyScenePass(const common::Device& device, ScenePass& pass);
 // the scene's draws recorded with them (sets 0 and 1, and any more, bound by the caller).
 ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCache cache,
                                     const ScenePass& pass, const ScenePipelineTarget& target);
-void recordSceneDraws(VkCommandBuffer cmd, const ScenePass& pass, const ScenePipelines& pipelines,
+void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines& pipelines,
                       const common::GpuScene& scene, glm::vec3 cameraPosition);
 void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines);

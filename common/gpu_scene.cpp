@@ -227,6 +227,13 @@ struct PendingMaterial {
 
 }  // namespace
 
+void setDrawModel(const GpuScene& scene, Draw& draw, const glm::mat4& model) {
+    const GpuMesh& mesh = scene.meshes[draw.mesh];
+    draw.model = model;
+    draw.normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
+    draw.center = glm::vec3(model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
+}
+
 GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted) {
     GpuScene gpu;
     StagingBatch batch = beginStaging(device);
@@ -326,8 +333,10 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
 
         glm::mat4 matrix = instance.transform.matrix();
         for (size_t i = 0; i < model.meshes.size(); ++i) {
-            gpu.draws.push_back(Draw{firstMesh[instance.file] + uint32_t(i),
-                                     materialBase + model.meshes[i].material, matrix, instanceIndex});
+            gpu.draws.push_back(Draw{.mesh = firstMesh[instance.file] + uint32_t(i),
+                                     .material = materialBase + model.meshes[i].material,
+                                     .instance = instanceIndex});
+            setDrawModel(gpu, gpu.draws.back(), matrix);
             gpu.triangles += model.meshes[i].indices.size() / 3;
         }
         for (int corner = 0; corner < 8; ++corner) {

@@ -56,7 +56,16 @@ struct Draw {
     uint32_t material = 0;
     glm::mat4 model{1.0f};
     uint32_t instance = 0;  // index of the scene's ModelInstance it draws (to move it later)
+    // Derived from `model` once, by setDrawModel, not per frame: the inverse-transpose that
+    // takes normals to world space, and the world-space centre of the mesh's bounds (draws are
+    // ordered by its distance).
+    glm::mat3 normalMatrix{1.0f};
+    glm::vec3 center{0.0f};
 };
+
+struct GpuScene;
+// Places a draw (at load time, or when its model moves, like a light's marker).
+void setDrawModel(const GpuScene& scene, Draw& draw, const glm::mat4& model);
 
 struct GpuScene {
     std::vector<GpuMesh> meshes;

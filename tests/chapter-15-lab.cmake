@@ -58,3 +58,21 @@ chapter_test(chapter-15-lab.gui-switch-light-pass
     COMMAND ${LAB} --device llvmpipe --validation --headless --width 640 --height 360 --gui
             --frames 10 --frames-in-flight 3 --gui-click 80,287@2+45,328@5 --check-output
     EXPECT_STDOUT "switched to the book G-buffer, compute light pass.*0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+
+# --acquire late: the off-screen passes submitted before the image is acquired; the same image as
+# the book's order, over frames and a resize, with synchronization validation quiet.
+chapter_test(chapter-15-lab.acquire-late
+    COMMAND ${LAB_RUN} --headless ${LAB_SIZE} --acquire late --frames 6 --resize 500x300 --gui
+    QUIET_STDERR)
+chapter_test(chapter-15-lab.acquire-late-final
+    COMMAND ${LAB_RUN} --headless ${LAB_SIZE} --acquire late --frames 3
+            --screenshot ${TEST_OUT}/chapter-15-lab-acquire-late.png QUIET_STDERR)
+set_tests_properties(chapter-15-lab.acquire-late-final PROPERTIES FIXTURES_SETUP lab-acquire-late)
+add_test(NAME chapter-15-lab.acquire-late-image COMMAND image_compare ${TEST_OUT}/chapter-15-lab-acquire-late.png
+    --size 640 360 --golden ${GOLDEN}/chapter-15-final.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-15-lab.acquire-late-image PROPERTIES FIXTURES_REQUIRED lab-acquire-late)
+if(XVFB_RUN)
+    chapter_test(chapter-15-lab.acquire-late-window
+        COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${LAB_RUN} ${LAB_SIZE} --acquire late --frames 30
+                --resize 500x300 --gui QUIET_STDERR)
+endif()
