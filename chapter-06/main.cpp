@@ -101,8 +101,9 @@ void destroyFramebuffers(VkDevice device, std::vector<VkFramebuffer>& framebuffe
 //> record
 // Re-recorded every frame, as the book does from this chapter on.
 void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebuffer framebuffer,
-                         VkExtent2D extent, VkFormat format, const Pipeline& pipeline, const std::vector<Mesh>& meshes,
-                         common::RunControl& run, uint32_t slot, uint32_t frame) {
+                         VkExtent2D extent, VkFormat format, const Pipeline& pipeline,
+                         const std::vector<Mesh>& meshes, common::RunControl& run, uint32_t slot,
+                         uint32_t frame) {
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
@@ -191,7 +192,8 @@ void setUp(Chapter& c, const common::Options& options) {
     c.renderPass = createRenderPass(c.device, c.target.format, c.target.presentLayout);
     c.framebuffers = createFramebuffers(c.device, c.renderPass, c.target);
     c.pipelineCache = createPipelineCache(c.device);
-    c.pipeline = createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
+    c.pipeline =
+        createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
     c.run = common::createRunControl(options, c.device, {"triangle"});
 }
 //< setup

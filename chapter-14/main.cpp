@@ -39,7 +39,9 @@ const common::ChapterInfo kChapter{
     "chapter-14",
     "deferred rendering with dynamic rendering and synchronization2 (the book's chapter 14)",
     {"final", "albedo", "depth"},
-    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"}, common::kGuiSwitch, common::kGuiStillSwitch},
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
+     common::kGuiSwitch,
+     common::kGuiStillSwitch},
     {common::kGuiClickChoice, common::kGuiScaleChoice},
 };
 
@@ -110,8 +112,8 @@ void setUp(Chapter& c, const common::Options& options) {
         common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
     c.gui = common::createGui(options, c.target);
     if (c.gui.enabled)
-        c.guiPass =
-            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, options.framesInFlight);
+        c.guiPass = common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat,
+                                          options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -198,8 +200,12 @@ void frameLoop(Chapter& c, const common::Options& options) {
         recordFrame(c, sync, slot, frame, imageIndex, overlay);
 
         // synchronization2's submit: each semaphore carries its own stage mask. The image is
-        // waited for where it is first written (colour output, the post pass); renderFinished
-        // is signalled when everything in the batch is done.
+        // waited for at colour output, the stage that writes it -- but a wait holds that stage for
+        // every command of the batch, so the scene pass's G-buffer writes and the light pass's
+        // output wait for the image too; only the work before colour output (vertex and fragment
+        // shading) may start earlier. This is the book's frame; chapter-15-lab's --acquire late
+        // submits the off-screen passes before acquiring. renderFinished is signalled when
+        // everything in the batch is done.
         VkSemaphoreSubmitInfo wait{
             .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
             .semaphore = sync.imageAvailable,
@@ -243,8 +249,9 @@ void report(Chapter& c, const common::Options& options) {
         std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
                     c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
                     c.camera.pitch);
-    common::reportRun(c.run, c.device, common::benchmarkInfo(kChapter, options, c.device, c.target,
-                                                             c.scenePass.gbuffer.depth.format));
+    common::reportRun(
+        c.run, c.device,
+        common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.gbuffer.depth.format));
     if (c.gui.enabled)
         std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
                     c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);

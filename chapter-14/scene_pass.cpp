@@ -1,10 +1,10 @@
 // chapter-14: the scene pass.
 #include "scene_pass.hpp"
 
-#include "common/formats.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/pipeline.hpp"
 #include "common/texture.hpp"
 

@@ -79,7 +79,8 @@ const common::ChapterInfo kChapter{
       "early: acquire the image, then record and submit the frame, waiting for the image at colour "
       "output (the book's); late: submit the scene and light passes first, then acquire and submit "
       "the post and GUI passes, which alone wait for the image"},
-     common::kGuiClickChoice, common::kGuiScaleChoice},
+     common::kGuiClickChoice,
+     common::kGuiScaleChoice},
 };
 
 // chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
@@ -240,9 +241,9 @@ void run(const common::Options& options) {
                                                        common::targetInstanceExtensions(target));
     common::createTargetSurface(target, instance);
     // chapter-15's features.
-    common::Device device = common::createDevice(
-        instance, target.surface, options.device,
-        {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+    common::Device device =
+        common::createDevice(instance, target.surface, options.device,
+                             {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
     // --acquire late: a second command buffer per frame (from the frame's pool) for the passes that
@@ -314,7 +315,8 @@ void run(const common::Options& options) {
     common::Gui gui = common::createGui(options, target);
     common::GuiPass guiPass;
     if (gui.enabled)
-        guiPass = common::createGuiPass(device, pipelineCache.handle, target.encodedFormat, options.framesInFlight);
+        guiPass =
+            common::createGuiPass(device, pipelineCache.handle, target.encodedFormat, options.framesInFlight);
 
     std::vector<std::string> passes{"scene", "light", "post"};
     if (tiled) passes.insert(passes.begin() + 1, "cull");
@@ -508,8 +510,7 @@ void run(const common::Options& options) {
     std::vector<std::pair<std::string, std::string>> info =
         common::benchmarkInfo(kChapter, options, device, target, scenePass.formats.depth);
     // What the scene pass allocated: the G-buffer's attachments, depth alone for forward shading.
-    info.push_back(
-        {"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.formats))});
+    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.formats))});
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -27,8 +27,8 @@ void dumpFrame(const common::Device& device, const LightPass& lightPass, const S
                                             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL),
                      3);
     std::vector<float> distance =
-        common::readFloatImage(device, scenePass.gbuffer.depth.handle, scenePass.formats.depth,
-                               extent, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        common::readFloatImage(device, scenePass.gbuffer.depth.handle, scenePass.formats.depth, extent,
+                               VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     for (size_t i = 0; i < distance.size();
          i += 4) {  // depth.glsl's eyeDistance(), planes swapped when reversed
         bool reversed = scenePass.layout->reversedZ;

@@ -215,8 +215,8 @@ void setUp(Chapter& c, const common::Options& options) {
         common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
     c.gui = common::createGui(options, c.target);
     if (c.gui.enabled)
-        c.guiPass =
-            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, options.framesInFlight);
+        c.guiPass = common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat,
+                                          options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);

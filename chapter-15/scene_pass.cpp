@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "common/formats.hpp"
 #include "common/check.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
+#include "common/formats.hpp"
 #include "common/pipeline.hpp"
 #include "common/texture.hpp"
 #include "gpu_types.hpp"
@@ -197,8 +197,8 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 }
 
 //> record-scene
-void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene,
-                     uint32_t frame, glm::vec3 cameraPosition) {
+void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene, uint32_t frame,
+                     glm::vec3 cameraPosition) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
     common::beginGBufferRendering(cmd, pass.gbuffer, pass.layout->reversedZ ? 0.0f : 1.0f);
     VkExtent2D extent = pass.gbuffer.depth.extent;
@@ -227,7 +227,8 @@ void orderSceneDraws(ScenePass& pass, const common::GpuScene& scene, glm::vec3 c
     }
     pass.order.resize(scene.draws.size());
     for (uint32_t i = 0; i < pass.order.size(); ++i) pass.order[i] = i;
-    std::sort(pass.order.begin(), pass.order.end(), [&](uint32_t a, uint32_t b) { return distance[a] < distance[b]; });
+    std::sort(pass.order.begin(), pass.order.end(),
+              [&](uint32_t a, uint32_t b) { return distance[a] < distance[b]; });
     pass.orderedFrom = cameraPosition;
 }
 

@@ -73,8 +73,8 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.
-void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene,
-                     uint32_t frame, glm::vec3 cameraPosition);
+void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene, uint32_t frame,
+                     glm::vec3 cameraPosition);
 void destroyScenePass(const common::Device& device, ScenePass& pass);
 
 // The scene pass's pipelines for a target and shaders (createScenePass makes the G-buffer's), and

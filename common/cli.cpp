@@ -173,7 +173,8 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     }));
     app.add_option("--target-format", targetFormat)->check(check([](const std::string& name) {
         if (!presentFormatByName(name))
-            throw InputError("--target-format must be one of " + presentFormatNames() + ", got '" + name + "'");
+            throw InputError("--target-format must be one of " + presentFormatNames() + ", got '" + name +
+                             "'");
     }));
     // The scene chapters' options; a chapter without a scene refuses them by name (below).
     app.add_option("--scene", scene)->check(nonEmpty("--scene needs a file name"));

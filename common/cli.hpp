@@ -29,7 +29,8 @@ struct Options {
     std::string device;                // substring of the device name; empty: best device
     bool validation = false;
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
-    std::optional<VkFormat> targetFormat;  // --target-format: the presented images' format (common/formats.hpp)
+    std::optional<VkFormat>
+        targetFormat;  // --target-format: the presented images' format (common/formats.hpp)
     bool help = false;
     // --benchmark: render --warmup frames, then --frames measured ones (default 100), no vsync.
     bool benchmark = false;

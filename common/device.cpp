@@ -44,7 +44,8 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
 }
 
 std::string versionText(uint32_t version) {
-    return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version));
+    return std::to_string(VK_API_VERSION_MAJOR(version)) + "." +
+           std::to_string(VK_API_VERSION_MINOR(version));
 }
 
 bool needsVulkan13Commands(const DeviceFeatures& wanted) {
@@ -104,19 +105,25 @@ std::vector<const char*> featureExtensions(uint32_t api, const DeviceFeatures& w
 std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const DeviceFeatures& wanted) {
     uint32_t needed = needsVulkan13Commands(wanted) ? VK_API_VERSION_1_2 : wanted.minApiVersion;
     if (wanted.scalarBlockLayout) needed = std::max(needed, uint32_t(VK_API_VERSION_1_2));
-    if (api < needed) return "it supports Vulkan " + versionText(api) + "; this chapter needs " + requirement(wanted);
+    if (api < needed)
+        return "it supports Vulkan " + versionText(api) + "; this chapter needs " + requirement(wanted);
     std::string lacking;
     for (const char* extension : featureExtensions(api, wanted))
-        if (!hasDeviceExtension(physical, extension)) lacking += (lacking.empty() ? "" : " and ") + std::string(extension);
+        if (!hasDeviceExtension(physical, extension))
+            lacking += (lacking.empty() ? "" : " and ") + std::string(extension);
     if (!lacking.empty())
         return "it supports Vulkan " + versionText(api) + " without " + lacking + "; this chapter needs " +
                requirement(wanted);
     FeatureChain chain(api, wanted);
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = chain.head};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                       .pNext = chain.head};
     vkGetPhysicalDeviceFeatures2(physical, &features);
-    if (wanted.dynamicRendering && !chain.hasDynamicRendering(api)) return "it lacks the dynamicRendering feature";
-    if (wanted.synchronization2 && !chain.hasSynchronization2(api)) return "it lacks the synchronization2 feature";
-    if (wanted.scalarBlockLayout && !chain.v12.scalarBlockLayout) return "it lacks the scalarBlockLayout feature";
+    if (wanted.dynamicRendering && !chain.hasDynamicRendering(api))
+        return "it lacks the dynamicRendering feature";
+    if (wanted.synchronization2 && !chain.hasSynchronization2(api))
+        return "it lacks the synchronization2 feature";
+    if (wanted.scalarBlockLayout && !chain.v12.scalarBlockLayout)
+        return "it lacks the scalarBlockLayout feature";
     return {};
 }
 
@@ -226,11 +233,23 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         // builds on VK_KHR_image_format_list, core since 1.2.
         bool formatList = device.apiVersion >= VK_API_VERSION_1_2 ||
                           hasDeviceExtension(device.physical, VK_KHR_IMAGE_FORMAT_LIST_EXTENSION_NAME);
-        if (formatList && hasDeviceExtension(device.physical, VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME)) {
+        if (formatList &&
+            hasDeviceExtension(device.physical, VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME)) {
             extensions.push_back(VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME);
-            if (device.apiVersion < VK_API_VERSION_1_2) extensions.push_back(VK_KHR_IMAGE_FORMAT_LIST_EXTENSION_NAME);
+            if (device.apiVersion < VK_API_VERSION_1_2)
+                extensions.push_back(VK_KHR_IMAGE_FORMAT_LIST_EXTENSION_NAME);
             device.swapchainMutableFormat = true;
         }
+    }
+    // Present fences, where the instance and the device have them (common/target.cpp).
+    VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT maintenance1{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT};
+    if (surface != VK_NULL_HANDLE && instance.surfaceMaintenance1 &&
+        hasDeviceExtension(device.physical, VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)) {
+        VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &maintenance1};
+        vkGetPhysicalDeviceFeatures2(device.physical, &query);
+        device.swapchainMaintenance1 = maintenance1.swapchainMaintenance1;
+        if (device.swapchainMaintenance1) extensions.push_back(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME);
     }
     // A portability implementation (MoltenVK) must have this extension enabled when it lists it.
     if (hasDeviceExtension(device.physical, "VK_KHR_portability_subset"))
@@ -248,9 +267,12 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     enabled.v12.scalarBlockLayout = features.scalarBlockLayout;
     enabled.v13.dynamicRendering = enabled.dynamicRendering.dynamicRendering = features.dynamicRendering;
     enabled.v13.synchronization2 = enabled.synchronization2.synchronization2 = features.synchronization2;
+    maintenance1 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT,
+                    .pNext = enabled.head,
+                    .swapchainMaintenance1 = VK_TRUE};
     VkDeviceCreateInfo createInfo{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-        .pNext = enabled.head,
+        .pNext = device.swapchainMaintenance1 ? static_cast<void*>(&maintenance1) : enabled.head,
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queueInfo,
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
@@ -264,15 +286,16 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         bool core = device.apiVersion >= VK_API_VERSION_1_3;
         auto load = [&](const char* coreName, const char* extensionName) {
             PFN_vkVoidFunction function = vkGetDeviceProcAddr(device.handle, core ? coreName : extensionName);
-            if (!function) throw Failure(std::string("the driver has no ") + (core ? coreName : extensionName));
+            if (!function)
+                throw Failure(std::string("the driver has no ") + (core ? coreName : extensionName));
             return function;
         };
         vk13.CmdBeginRendering =
             reinterpret_cast<PFN_vkCmdBeginRendering>(load("vkCmdBeginRendering", "vkCmdBeginRenderingKHR"));
         vk13.CmdEndRendering =
             reinterpret_cast<PFN_vkCmdEndRendering>(load("vkCmdEndRendering", "vkCmdEndRenderingKHR"));
-        vk13.CmdPipelineBarrier2 =
-            reinterpret_cast<PFN_vkCmdPipelineBarrier2>(load("vkCmdPipelineBarrier2", "vkCmdPipelineBarrier2KHR"));
+        vk13.CmdPipelineBarrier2 = reinterpret_cast<PFN_vkCmdPipelineBarrier2>(
+            load("vkCmdPipelineBarrier2", "vkCmdPipelineBarrier2KHR"));
         vk13.QueueSubmit2 = reinterpret_cast<PFN_vkQueueSubmit2>(load("vkQueueSubmit2", "vkQueueSubmit2KHR"));
     }
 

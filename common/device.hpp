@@ -26,6 +26,9 @@ struct Device {
     // VK_KHR_swapchain_mutable_format is enabled: a swapchain's _SRGB images can also be viewed
     // as _UNORM (the GUI pass draws through such views).
     bool swapchainMutableFormat = false;
+    // VK_EXT_swapchain_maintenance1 is enabled: a present can signal a fence when the
+    // presentation engine is done with what it used (common/target.cpp retires old swapchains so).
+    bool swapchainMaintenance1 = false;
 };
 
 // Optional features a chapter needs; a device without one of them is not chosen.

@@ -19,9 +19,12 @@ namespace common {
 // The formats a presented image may have that we can draw to and write as a PNG, in the order a
 // window takes them when it offers several: 8-bit sRGB (the hardware encodes), 8-bit UNORM and
 // 10-bit UNORM (our shaders encode). Their names are --target-format's values.
-inline constexpr std::array<VkFormat, 6> kPresentFormats = {
-    VK_FORMAT_B8G8R8A8_SRGB,  VK_FORMAT_R8G8B8A8_SRGB,           VK_FORMAT_B8G8R8A8_UNORM,
-    VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_A2R10G10B10_UNORM_PACK32, VK_FORMAT_A2B10G10R10_UNORM_PACK32};
+inline constexpr std::array<VkFormat, 6> kPresentFormats = {VK_FORMAT_B8G8R8A8_SRGB,
+                                                            VK_FORMAT_R8G8B8A8_SRGB,
+                                                            VK_FORMAT_B8G8R8A8_UNORM,
+                                                            VK_FORMAT_R8G8B8A8_UNORM,
+                                                            VK_FORMAT_A2R10G10B10_UNORM_PACK32,
+                                                            VK_FORMAT_A2B10G10R10_UNORM_PACK32};
 
 // "B8G8R8A8_SRGB", "A2R10G10B10_UNORM_PACK32", ... (a number for a format we do not name).
 std::string formatName(VkFormat format);

@@ -21,7 +21,8 @@ struct GBufferFormats {
     VkFormat albedo = VK_FORMAT_UNDEFINED;
     VkFormat normal = VK_FORMAT_UNDEFINED;
     VkFormat pbr = VK_FORMAT_UNDEFINED;  // ambient occlusion, roughness, metallic
-    VkFormat depth = VK_FORMAT_D32_SFLOAT;  // a device without it gets X8_D24_UNORM_PACK32 (chooseDepthFormat)
+    VkFormat depth =
+        VK_FORMAT_D32_SFLOAT;  // a device without it gets X8_D24_UNORM_PACK32 (chooseDepthFormat)
 };
 
 // The colour formats that exist, in attachment order: position, albedo, normal, pbr. That order

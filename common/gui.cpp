@@ -4,8 +4,8 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "common/check.hpp"
@@ -58,7 +58,8 @@ Gui createGui(const Options& options, const Target& target) {
     if (clicks != options.values.end()) gui.clicks = parseClicks(clicks->second);
     auto scale = options.values.find("gui-scale");
     if (scale != options.values.end()) {
-        if (target.window) throw InputError("--gui-scale is for headless runs; a window has its display's scale");
+        if (target.window)
+            throw InputError("--gui-scale is for headless runs; a window has its display's scale");
         gui.scale = parseScale(scale->second);
     }
     gui.enabled = options.switches.count("gui") != 0;
@@ -99,7 +100,8 @@ void beginGui(Gui& gui, const Target& target, uint32_t frame) {
     } else {
         // Headless: the image's pixels, `scale` of them a point (ImGui's GLFW backend sets the
         // same two from the window).
-        io.DisplaySize = ImVec2(float(target.extent.width) / gui.scale, float(target.extent.height) / gui.scale);
+        io.DisplaySize =
+            ImVec2(float(target.extent.width) / gui.scale, float(target.extent.height) / gui.scale);
         io.DisplayFramebufferScale = ImVec2(gui.scale, gui.scale);
         io.DeltaTime = 1.0f / 60.0f;
         io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);

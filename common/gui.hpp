@@ -1,8 +1,8 @@
 // Dear ImGui for chapters 14 and 15: the overlay's widgets and input (--gui). The book draws a GUI
 // with Dear ImGui in every chapter from its GUI chapter on, its GuiRender turning ImGui's draw
-// lists into Vulkan draws; that pass is common/gui_pass.cpp. This module is the ImGui side: the context, GLFW input
-// (Dear ImGui's own GLFW backend, for input only), F1, the timings window both chapters show, and
-// a headless mode that draws the same overlay deterministically (for golden images).
+// lists into Vulkan draws; that pass is common/gui_pass.cpp. This module is the ImGui side: the context, GLFW
+// input (Dear ImGui's own GLFW backend, for input only), F1, the timings window both chapters show, and a
+// headless mode that draws the same overlay deterministically (for golden images).
 #pragma once
 
 #include <imgui.h>

@@ -203,8 +203,10 @@ void recordGuiPass(VkCommandBuffer cmd, const GuiPass& pass, uint32_t frame, con
             for (const ImDrawCmd& command : list->CmdBuffer) {
                 float x0 = std::max((command.ClipRect.x - draw->DisplayPos.x) * scale.x, 0.0f);
                 float y0 = std::max((command.ClipRect.y - draw->DisplayPos.y) * scale.y, 0.0f);
-                float x1 = std::min((command.ClipRect.z - draw->DisplayPos.x) * scale.x, float(target.extent.width));
-                float y1 = std::min((command.ClipRect.w - draw->DisplayPos.y) * scale.y, float(target.extent.height));
+                float x1 =
+                    std::min((command.ClipRect.z - draw->DisplayPos.x) * scale.x, float(target.extent.width));
+                float y1 = std::min((command.ClipRect.w - draw->DisplayPos.y) * scale.y,
+                                    float(target.extent.height));
                 if (x1 <= x0 || y1 <= y0) continue;
                 VkRect2D scissor{{int32_t(x0), int32_t(y0)}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
                 vkCmdSetScissor(cmd, 0, 1, &scissor);

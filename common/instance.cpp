@@ -63,6 +63,8 @@ bool hasLayer(const char* name) {
     return false;
 }
 
+}  // namespace
+
 bool hasInstanceExtension(const char* name) {
     uint32_t count = 0;
     VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
@@ -73,8 +75,6 @@ bool hasInstanceExtension(const char* name) {
     return false;
 }
 
-}  // namespace
-
 uint32_t validationMessageCount() {
     return gValidationMessages.load();
 }
@@ -82,9 +82,11 @@ uint32_t validationMessageCount() {
 Instance createInstance(const char* applicationName, bool validation, std::vector<const char*> extensions) {
     uint32_t apiVersion = 0;
     VK_CHECK(vkEnumerateInstanceVersion(&apiVersion));
-    if (apiVersion < VK_API_VERSION_1_3)
+    // The loader, not the device: any 1.1 loader takes an application of a later version and
+    // hands each device its own (common/device.cpp asks each device for what its chapter needs).
+    if (apiVersion < VK_API_VERSION_1_1)
         throw Failure("the Vulkan loader supports API " + std::to_string(VK_API_VERSION_MAJOR(apiVersion)) +
-                      "." + std::to_string(VK_API_VERSION_MINOR(apiVersion)) + "; these chapters need 1.3");
+                      "." + std::to_string(VK_API_VERSION_MINOR(apiVersion)) + "; these chapters need 1.1");
 
     VkApplicationInfo appInfo{
         .sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
@@ -140,6 +142,9 @@ Instance createInstance(const char* applicationName, bool validation, std::vecto
     };
     Instance instance;
     VK_CHECK(vkCreateInstance(&createInfo, nullptr, &instance.handle));
+    for (const char* extension : extensions)
+        if (std::strcmp(extension, VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) == 0)
+            instance.surfaceMaintenance1 = true;
 
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(

@@ -13,9 +13,12 @@ namespace common {
 struct Instance {
     VkInstance handle = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;  // only with validation
+    bool surfaceMaintenance1 = false;  // VK_EXT_surface_maintenance1 enabled (a window, where offered)
 };
 
 // `extensions`: what the presentation target needs (the window system's surface extensions).
+// Instance extensions the loader and drivers offer.
+bool hasInstanceExtension(const char* name);
 Instance createInstance(const char* applicationName, bool validation, std::vector<const char*> extensions);
 void destroyInstance(Instance& instance);
 

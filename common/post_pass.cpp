@@ -5,8 +5,8 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
-#include "common/formats.hpp"
 #include "common/descriptors.hpp"
+#include "common/formats.hpp"
 
 namespace common {
 PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,

@@ -45,7 +45,8 @@ VkSurfaceFormatKHR chooseSurfaceFormat(const Target& target, const Device& devic
     if (target.wantedFormat) {
         if (!offered(*target.wantedFormat))
             throw InputError("--target-format " + formatName(*target.wantedFormat) +
-                             ": the window surface does not offer it (it offers " + offeredFormats(formats) + ")");
+                             ": the window surface does not offer it (it offers " + offeredFormats(formats) +
+                             ")");
         return {*target.wantedFormat, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
     }
     for (VkFormat format : kPresentFormats)
@@ -58,7 +59,8 @@ VkFormat chooseOffscreenFormat(const Target& target, const Device& device) {
     auto renderable = [&](VkFormat format) {
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
-        VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+        VkFormatFeatureFlags needed =
+            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
         return (properties.optimalTilingFeatures & needed) == needed;
     };
     if (target.wantedFormat) {
@@ -179,7 +181,8 @@ void createOffscreen(Target& target, const Device& device) {
     for (uint32_t i = 0; i < kOffscreenImages; ++i) {
         target.offscreen.push_back(createImage(
             device, target.extent, target.format,
-            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1,
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+            1,
             mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0}));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
@@ -190,10 +193,29 @@ void createOffscreen(Target& target, const Device& device) {
 
 void destroyRetired(Target& target, const Device& device) {
     for (Target::Retired& retired : target.retired) {
-        for (VkSemaphore semaphore : retired.semaphores) vkDestroySemaphore(device.handle, semaphore, nullptr);
+        for (VkSemaphore semaphore : retired.semaphores)
+            vkDestroySemaphore(device.handle, semaphore, nullptr);
         vkDestroySwapchainKHR(device.handle, retired.swapchain, nullptr);
     }
     target.retired.clear();
+}
+
+// VK_EXT_swapchain_maintenance1: the presentations seen done give their fences back, and a retired
+// swapchain none of whose presentations is pending goes, with its semaphores.
+void collectPresentFences(Target& target, const Device& device) {
+    std::erase_if(target.presentFences, [&](const Target::PresentFence& present) {
+        if (vkGetFenceStatus(device.handle, present.fence) != VK_SUCCESS) return false;
+        VK_CHECK(vkResetFences(device.handle, 1, &present.fence));
+        target.spareFences.push_back(present.fence);
+        return true;
+    });
+    std::erase_if(target.retired, [&](const Target::Retired& retired) {
+        for (const Target::PresentFence& present : target.presentFences)
+            if (present.swapchain == retired.swapchain) return false;
+        for (VkSemaphore semaphore : retired.semaphores) vkDestroySemaphore(device.handle, semaphore, nullptr);
+        vkDestroySwapchainKHR(device.handle, retired.swapchain, nullptr);
+        return true;
+    });
 }
 
 // Destroys what depends on the images. A swapchain survives to become oldSwapchain, and its
@@ -206,7 +228,8 @@ void releaseImages(Target& target, const Device& device) {
         target.retired.push_back({VK_NULL_HANDLE, std::move(target.renderFinished)});
         for (VkImageView view : target.views) vkDestroyImageView(device.handle, view, nullptr);
     } else {
-        for (VkSemaphore semaphore : target.renderFinished) vkDestroySemaphore(device.handle, semaphore, nullptr);
+        for (VkSemaphore semaphore : target.renderFinished)
+            vkDestroySemaphore(device.handle, semaphore, nullptr);
         for (Image& image : target.offscreen) destroyImage(device, image);
         target.offscreen.clear();
     }
@@ -245,7 +268,14 @@ std::vector<const char*> targetInstanceExtensions(const Target& target) {
     if (!target.window) return {};
     uint32_t count = 0;
     const char** names = glfwGetRequiredInstanceExtensions(&count);
-    return std::vector<const char*>(names, names + count);
+    std::vector<const char*> extensions(names, names + count);
+    // What a device's VK_EXT_swapchain_maintenance1 (present fences) builds on, where offered.
+    if (hasInstanceExtension(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) &&
+        hasInstanceExtension(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME)) {
+        extensions.push_back(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME);
+        extensions.push_back(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME);
+    }
+    return extensions;
 }
 
 void createTargetSurface(Target& target, const Instance& instance) {
@@ -301,9 +331,11 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
         if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
         // Suboptimal still signals the semaphore: draw, then recreate.
         if (result != VK_SUBOPTIMAL_KHR) VK_CHECK_RESULT(result, "vkAcquireNextImageKHR");
-        // This image was presented since the last swapchain was retired, and the presentation
-        // engine has handed it back: every presentation queued before that one is done.
-        if (!target.retired.empty() && target.presentedSinceRetiring[*imageIndex]) {
+        if (device.swapchainMaintenance1) {
+            collectPresentFences(target, device);
+        } else if (!target.retired.empty() && target.presentedSinceRetiring[*imageIndex]) {
+            // This image was presented since the last swapchain was retired, and the presentation
+            // engine has handed it back: every presentation queued before that one is done.
             destroyRetired(target, device);
             target.presentedSinceRetiring.assign(target.images.size(), false);
         }
@@ -324,8 +356,23 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
 
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex) {
     if (target.window) {
+        // VK_EXT_swapchain_maintenance1: a fence that says when this presentation is done.
+        VkSwapchainPresentFenceInfoEXT fenceInfo{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT,
+                                                 .swapchainCount = 1};
+        if (device.swapchainMaintenance1) {
+            VkFence fence = VK_NULL_HANDLE;
+            if (target.spareFences.empty()) {
+                fence = createFence(device, false);
+            } else {
+                fence = target.spareFences.back();
+                target.spareFences.pop_back();
+            }
+            target.presentFences.push_back({fence, target.swapchain});
+            fenceInfo.pFences = &target.presentFences.back().fence;
+        }
         VkPresentInfoKHR info{
             .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+            .pNext = device.swapchainMaintenance1 ? &fenceInfo : nullptr,
             .waitSemaphoreCount = 1,
             .pWaitSemaphores = &target.renderFinished[imageIndex],
             .swapchainCount = 1,
@@ -375,6 +422,16 @@ void destroyTargetImages(Target& target, const Device& device) {
     // At the end of a run, after the device is idle: the queue has processed every presentation
     // request (the wait covers the queue), and nothing will be presented any more.
     releaseImages(target, device);
+    if (!target.presentFences.empty()) {  // maintenance1: the last presentations, done
+        std::vector<VkFence> fences;
+        for (const Target::PresentFence& present : target.presentFences) fences.push_back(present.fence);
+        // Not VK_CHECK: after a lost device this returns VK_ERROR_DEVICE_LOST, and teardown goes on.
+        vkWaitForFences(device.handle, uint32_t(fences.size()), fences.data(), VK_TRUE, UINT64_MAX);
+        for (VkFence fence : fences) target.spareFences.push_back(fence);
+        target.presentFences.clear();
+    }
+    for (VkFence fence : target.spareFences) vkDestroyFence(device.handle, fence, nullptr);
+    target.spareFences.clear();
     destroyRetired(target, device);
     if (target.swapchain != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, target.swapchain, nullptr);
     target.swapchain = VK_NULL_HANDLE;

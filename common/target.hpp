@@ -59,16 +59,24 @@ struct Target {
     bool vsync = true;  // false with --benchmark: MAILBOX or IMMEDIATE when the surface offers one
 
     // A swapchain replaced by a new one, and its renderFinished semaphores: the presentation
-    // engine may still be presenting its images and waiting on those semaphores, which no fence
-    // or device wait tells. They are destroyed once an image of the new swapchain comes back
-    // from the presentation engine after being presented: presentation requests on one queue
-    // complete in order, so every earlier one, the old swapchain's included, is done by then.
+    // engine may still be presenting its images and waiting on those semaphores, which no
+    // command-buffer fence or device wait tells. With VK_EXT_swapchain_maintenance1 each
+    // presentation signals a fence of its own, and a retired swapchain goes once the fences of
+    // all its presentations have signalled. Without it, once an image of the new swapchain comes
+    // back from the presentation engine after being presented: presentation requests on one
+    // queue complete in order, so every earlier one, the old swapchain's included, is done then.
     struct Retired {
         VkSwapchainKHR swapchain = VK_NULL_HANDLE;
         std::vector<VkSemaphore> semaphores;
     };
     std::vector<Retired> retired;
     std::vector<bool> presentedSinceRetiring;  // per image of the current swapchain
+    struct PresentFence {
+        VkFence fence = VK_NULL_HANDLE;
+        VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+    };
+    std::vector<PresentFence> presentFences;  // presentations not yet seen done (maintenance1)
+    std::vector<VkFence> spareFences;
 };
 
 // Opens the window (or nothing, headless) described by the command line.

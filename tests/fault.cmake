@@ -23,6 +23,8 @@ file(GENERATE OUTPUT ${FAULT_LAYER_DIR}/vulkan/implicit_layer.d/VkLayer_vkbook_f
         "api_version": "1.3.0",
         "implementation_version": "1",
         "description": "vulkan-book-cpp tests: fails one chosen call (VKBOOK_FAULT=<call>:<n>)",
+        "instance_extensions": [{"name": "VK_EXT_surface_maintenance1", "spec_version": "1"}],
+        "device_extensions": [{"name": "VK_EXT_swapchain_maintenance1", "spec_version": "1", "entrypoints": []}],
         "enable_environment": {"VKBOOK_FAULT_LAYER": "1"},
         "disable_environment": {"VKBOOK_FAULT_LAYER_DISABLE": "1"}
     }

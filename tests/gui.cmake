@@ -41,7 +41,7 @@ chapter_test(chapter-15.gui-click-bad COMMAND $<TARGET_FILE:chapter-15> --headle
 if(XVFB_RUN)
     find_program(XDOTOOL xdotool)
     if(XDOTOOL)
-        set(window_options --device llvmpipe --validation --width 640 --height 360 --gui --frames 120)
+        set(window_options --device llvmpipe --validation --width 640 --height 360 --gui)
         chapter_test(chapter-14.window-gui-click
             COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${CMAKE_CURRENT_SOURCE_DIR}/window_gui.sh click
                     $<TARGET_FILE:chapter-14> ${TEST_OUT}/chapter-14-window-gui-click.png ${window_options}

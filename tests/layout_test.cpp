@@ -88,8 +88,8 @@ void run(const common::Options& options) {
                      float(cull.extent.y), float(cull.capacity), float(cull.unboundedLights)});
 
     common::Instance instance = common::createInstance("layout_test", options.validation, {});
-    common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
-                                                 {.scalarBlockLayout = true});
+    common::Device device =
+        common::createDevice(instance, VK_NULL_HANDLE, options.device, {.scalarBlockLayout = true});
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     common::Buffer buffers[7] = {
         common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),

@@ -18,7 +18,10 @@
 #                                                    at 300 degrees. Every key but the digits is one
 #                                                    that only reaches the overlay through the key
 #                                                    callback Dear ImGui chains to ours.
-# The chapter runs with --validation: any validation message fails it (exit 3).
+# The chapter runs with --validation: any validation message fails it (exit 3). It runs until the
+# script closes the window (Escape) when it is done: no frame count to outrun on a slow machine
+# (the sanitizer build under load draws a frame in a second or more), and the screenshot is of
+# the last frame, after everything the script did.
 set -u
 mode=$1
 chapter=$2
@@ -34,7 +37,7 @@ out=${TMPDIR:-/tmp}/window_gui.$$.out
 pid=$!
 window=$(timeout 60 xdotool search --sync --name "chapter-1") || { echo "no window appeared"; kill $pid; exit 1; }
 window=${window%%$'\n'*}
-sleep 1.5  # a few frames: the overlay is up
+sleep 4  # set-up done and a few frames drawn: the overlay is up, also in the sanitizer build
 case $mode in
 click)
     xdotool mousemove --window "$window" 27 241 click 1
@@ -70,8 +73,6 @@ type-after-resize)
     hold BackSpace
     xdotool type 300
     hold Return
-    sleep 0.3
-    xdotool mousemove --window "$window" 400 400 key Escape
     ;;
 f1)
     xdotool mousemove --window "$window" 500 300  # keyboard focus follows the pointer without a window manager
@@ -80,6 +81,8 @@ f1)
     xdotool keyup F1
     ;;
 esac
+sleep 0.5
+xdotool mousemove --window "$window" 500 300 key Escape  # away from the overlay; Escape ends the run
 wait $pid
 rc=$?
 cat "$out"

@@ -20,6 +20,13 @@
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...) and
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
 //                                   among a surface's formats).
+//   VKBOOK_EMULATE=swapchain_maintenance1  offers VK_EXT_swapchain_maintenance1 (lavapipe 22.3 has
+//                                   none) and carries out its present fences: the fence of a
+//                                   presentation is signalled by an empty submission right after
+//                                   it (queue order: after the work it waited for), so the code
+//                                   that retires swapchains by present fences runs here too.
+//                                   VK_EXT_surface_maintenance1, which it builds on, is offered by
+//                                   this layer's manifest and taken out before the driver sees it.
 // Only what the application asks of the physical device changes: the layers below still see the
 // real device, so validation checks what the application then does against what it enables.
 // Otherwise the layer prints nothing. It is an implicit layer that is only enabled when
@@ -33,9 +40,9 @@
 #include <vulkan/vk_layer.h>
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -146,6 +153,7 @@ VkResult deviceLoss(DeviceData& device, const char* call) {
 // ---- The device as the application is to see it -------------------------------------------------
 
 struct Profile {
+    bool maintenance1 = false;  // emulate VK_EXT_swapchain_maintenance1
     uint32_t apiVersion = 0;  // 0: the device's own
     std::vector<std::string> hidden;
 };
@@ -166,10 +174,18 @@ const std::unordered_map<std::string, VkFormat>& formatNames() {
 
 Profile parseProfile() {
     Profile p;
+    if (const char* emulate = std::getenv("VKBOOK_EMULATE"); emulate && *emulate) {
+        if (std::strcmp(emulate, "swapchain_maintenance1") == 0) p.maintenance1 = true;
+        else std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_EMULATE='%s' is not swapchain_maintenance1\n", emulate);
+    }
     if (const char* api = std::getenv("VKBOOK_DEVICE_API"); api && *api) {
-        if (std::strcmp(api, "1.1") == 0) p.apiVersion = VK_API_VERSION_1_1;
-        else if (std::strcmp(api, "1.2") == 0) p.apiVersion = VK_API_VERSION_1_2;
-        else std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
+        if (std::strcmp(api, "1.1") == 0)
+            p.apiVersion = VK_API_VERSION_1_1;
+        else if (std::strcmp(api, "1.2") == 0)
+            p.apiVersion = VK_API_VERSION_1_2;
+        else
+            std::fprintf(stderr,
+                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
     }
     if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
         std::string list = hide;
@@ -178,7 +194,10 @@ Profile parseProfile() {
             if (comma == std::string::npos) comma = list.size();
             std::string name = list.substr(start, comma - start);
             if (!name.starts_with("VK_") && !formatNames().count(name))
-                std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension nor a format it knows\n", name.c_str());
+                std::fprintf(stderr,
+                             "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
+                             "nor a format it knows\n",
+                             name.c_str());
             if (!name.empty()) p.hidden.push_back(name);
             start = comma + 1;
         }
@@ -205,6 +224,38 @@ bool hidden(VkFormat format) {
     return false;
 }
 
+// The extensions this layer answers for itself: never passed down.
+bool ours(const char* extension) {
+    return std::strcmp(extension, VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) == 0 ||
+           std::strcmp(extension, VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME) == 0;
+}
+
+std::vector<const char*> withoutOurs(const char* const* names, uint32_t count) {
+    std::vector<const char*> kept;
+    for (uint32_t i = 0; i < count; ++i)
+        if (!ours(names[i])) kept.push_back(names[i]);
+    return kept;
+}
+
+// Unlinks the structure of `type` from a pNext chain (the chain is the application's; it is
+// linked back by the caller's Relink when the call returns). Returns it, or nullptr.
+struct Unlinked {
+    VkBaseOutStructure* previous = nullptr;
+    VkBaseOutStructure* found = nullptr;
+    ~Unlinked() {
+        if (previous && found) previous->pNext = found;
+    }
+};
+void unlink(void* head, VkStructureType type, Unlinked& out) {
+    for (auto* s = static_cast<VkBaseOutStructure*>(head); s && s->pNext; s = s->pNext)
+        if (s->pNext->sType == type) {
+            out.previous = s;
+            out.found = s->pNext;
+            s->pNext = s->pNext->pNext;
+            return;
+        }
+}
+
 // ---- Instance and device creation: linking into the chain ---------------------------------------
 
 template <typename CreateInfo>
@@ -223,7 +274,11 @@ VKAPI_ATTR VkResult VKAPI_CALL createInstance(const VkInstanceCreateInfo* create
     PFN_vkGetInstanceProcAddr next = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
     link->u.pLayerInfo = link->u.pLayerInfo->pNext;  // the next layer finds its own link
     auto create = reinterpret_cast<PFN_vkCreateInstance>(next(VK_NULL_HANDLE, "vkCreateInstance"));
-    VkResult result = create(createInfo, allocator, instance);
+    VkInstanceCreateInfo info = *createInfo;
+    std::vector<const char*> extensions = withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkResult result = create(&info, allocator, instance);
     if (result != VK_SUCCESS) return result;
     std::lock_guard lock(gLock);
     gInstances[dispatchKey(*instance)] = {*instance, next};
@@ -255,7 +310,20 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     link->u.pLayerInfo = link->u.pLayerInfo->pNext;
     VkInstance instance = instanceData(physical).handle;  // a physical device shares its instance's key
     auto create = reinterpret_cast<PFN_vkCreateDevice>(nextInstance(instance, "vkCreateDevice"));
-    VkResult result = create(physical, createInfo, allocator, device);
+    VkDeviceCreateInfo info = *createInfo;
+    std::vector<const char*> extensions = withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkResult result;
+    {
+        VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                                .pNext = static_cast<VkBaseOutStructure*>(const_cast<void*>(info.pNext))};
+        Unlinked feature;
+        unlink(&head, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT, feature);
+        info.pNext = head.pNext;
+        result = create(physical, &info, allocator, device);
+        if (feature.previous == &head) feature.previous = nullptr;  // the head is ours: nothing to relink
+    }
     if (result != VK_SUCCESS) return result;
 
     DeviceData data;
@@ -367,7 +435,27 @@ VKAPI_ATTR VkResult VKAPI_CALL acquireNextImage(VkDevice device, VkSwapchainKHR 
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKHR* info) {
-    LOSE_OR_PASS_DOWN(queue, "vkQueuePresentKHR", queuePresent, queue, info);
+    DeviceData& data = deviceData(queue);
+    if (VkResult lost = deviceLoss(data, "vkQueuePresentKHR"); lost != VK_SUCCESS) return lost;
+    // VK_EXT_swapchain_maintenance1's present fences, emulated: taken out of the chain, then
+    // signalled by an empty submission after the presentation.
+    VkPresentInfoKHR present = *info;
+    VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                            .pNext = static_cast<VkBaseOutStructure*>(const_cast<void*>(present.pNext))};
+    Unlinked fences;
+    unlink(&head, VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT, fences);
+    present.pNext = head.pNext;
+    if (fences.previous == &head) fences.previous = nullptr;
+    VkResult result = data.next.queuePresent(queue, &present);
+    if (fences.found && (result == VK_SUCCESS || result == VK_SUBOPTIMAL_KHR || result == VK_ERROR_OUT_OF_DATE_KHR)) {
+        const auto* fenceInfo = reinterpret_cast<const VkSwapchainPresentFenceInfoEXT*>(fences.found);
+        for (uint32_t i = 0; i < fenceInfo->swapchainCount; ++i)
+            if (fenceInfo->pFences[i] != VK_NULL_HANDLE)
+                if (VkResult signalled = data.next.queueSubmit(queue, 0, nullptr, fenceInfo->pFences[i]);
+                    signalled != VK_SUCCESS)
+                    return signalled;
+    }
+    return result;
 }
 
 #undef LOSE_OR_PASS_DOWN
@@ -388,16 +476,27 @@ void lowerVersion(VkPhysicalDeviceProperties& properties) {
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties(VkPhysicalDevice physical,
                                                        VkPhysicalDeviceProperties* properties) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties>(physical, "vkGetPhysicalDeviceProperties")(physical,
-                                                                                                   properties);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties>(physical, "vkGetPhysicalDeviceProperties")(
+        physical, properties);
     lowerVersion(*properties);
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties2(VkPhysicalDevice physical,
                                                         VkPhysicalDeviceProperties2* properties) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties2>(physical, "vkGetPhysicalDeviceProperties2")(physical,
-                                                                                                     properties);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceProperties2>(physical, "vkGetPhysicalDeviceProperties2")(
+        physical, properties);
     lowerVersion(properties->properties);
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical, VkPhysicalDeviceFeatures2* features) {
+    VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                            .pNext = reinterpret_cast<VkBaseOutStructure*>(features)};
+    Unlinked maintenance1;
+    unlink(&head, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT, maintenance1);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFeatures2>(physical, "vkGetPhysicalDeviceFeatures2")(physical, features);
+    if (maintenance1.found)
+        reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)->swapchainMaintenance1 =
+            profile().maintenance1 ? VK_TRUE : VK_FALSE;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevice physical,
@@ -413,6 +512,10 @@ VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevi
     result = next(physical, nullptr, &all, extensions.data());
     if (result != VK_SUCCESS) return result;
     std::erase_if(extensions, [](const VkExtensionProperties& e) { return hidden(e.extensionName); });
+    if (profile().maintenance1) {
+        VkExtensionProperties maintenance1{VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME, 1};
+        extensions.push_back(maintenance1);
+    }
     if (properties == nullptr) {
         *count = uint32_t(extensions.size());
         return VK_SUCCESS;
@@ -425,20 +528,21 @@ VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevi
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFormatProperties(VkPhysicalDevice physical, VkFormat format,
                                                              VkFormatProperties* properties) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties>(physical, "vkGetPhysicalDeviceFormatProperties")(
-        physical, format, properties);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties>(
+        physical, "vkGetPhysicalDeviceFormatProperties")(physical, format, properties);
     if (hidden(format)) *properties = {};
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFormatProperties2(VkPhysicalDevice physical, VkFormat format,
                                                               VkFormatProperties2* properties) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties2>(physical, "vkGetPhysicalDeviceFormatProperties2")(
-        physical, format, properties);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFormatProperties2>(
+        physical, "vkGetPhysicalDeviceFormatProperties2")(physical, format, properties);
     if (hidden(format)) properties->formatProperties = {};
 }
 
-VKAPI_ATTR VkResult VKAPI_CALL getPhysicalDeviceSurfaceFormats(VkPhysicalDevice physical, VkSurfaceKHR surface,
-                                                               uint32_t* count, VkSurfaceFormatKHR* formats) {
+VKAPI_ATTR VkResult VKAPI_CALL getPhysicalDeviceSurfaceFormats(VkPhysicalDevice physical,
+                                                               VkSurfaceKHR surface, uint32_t* count,
+                                                               VkSurfaceFormatKHR* formats) {
     auto next = nextInstanceCall<PFN_vkGetPhysicalDeviceSurfaceFormatsKHR>(
         physical, "vkGetPhysicalDeviceSurfaceFormatsKHR");
     uint32_t all = 0;
@@ -502,8 +606,10 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
     if (std::strcmp(name, "vkCreateDevice") == 0) return reinterpret_cast<PFN_vkVoidFunction>(createDevice);
     static const std::unordered_map<std::string, PFN_vkVoidFunction> physicalDeviceCalls = {
         {"vkGetPhysicalDeviceProperties", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties)},
-        {"vkGetPhysicalDeviceProperties2", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
-        {"vkGetPhysicalDeviceProperties2KHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
+        {"vkGetPhysicalDeviceProperties2",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
+        {"vkGetPhysicalDeviceProperties2KHR",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceProperties2)},
         {"vkEnumerateDeviceExtensionProperties",
          reinterpret_cast<PFN_vkVoidFunction>(enumerateDeviceExtensionProperties)},
         {"vkGetPhysicalDeviceFormatProperties",
@@ -512,7 +618,10 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties2)},
         {"vkGetPhysicalDeviceFormatProperties2KHR",
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties2)},
-        {"vkGetPhysicalDeviceSurfaceFormatsKHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceSurfaceFormats)},
+        {"vkGetPhysicalDeviceSurfaceFormatsKHR",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceSurfaceFormats)},
+        {"vkGetPhysicalDeviceFeatures2", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
+        {"vkGetPhysicalDeviceFeatures2KHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
     };
     if (auto found = physicalDeviceCalls.find(name); found != physicalDeviceCalls.end()) return found->second;
     if (PFN_vkVoidFunction ours = interceptedDeviceCall(name)) return ours;

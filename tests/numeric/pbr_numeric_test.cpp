@@ -337,8 +337,7 @@ void run(const common::Options& options) {
     }
 
     common::Instance instance = common::createInstance("pbr_numeric_test", options.validation, {});
-    common::Device device =
-        common::createDevice(instance, VK_NULL_HANDLE, options.device);
+    common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device);
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     common::Buffer input =
         common::createBuffer(device, cases.size() * sizeof(Sample), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host);

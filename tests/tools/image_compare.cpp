@@ -67,7 +67,8 @@ std::vector<bool> overlayMask(const Png& gui, const Png& base, int block, int wi
                 for (int bx = 0; bx < block; ++bx) {
                     size_t i = (size_t(y * block + by) * gui.width + size_t(x * block + bx)) * 3;
                     bool differs = false;
-                    for (int c = 0; c < 3; ++c) differs = differs || std::abs(gui.rgb[i + c] - base.rgb[i + c]) > 16;
+                    for (int c = 0; c < 3; ++c)
+                        differs = differs || std::abs(gui.rgb[i + c] - base.rgb[i + c]) > 16;
                     covered += differs;
                 }
             mask[size_t(y) * width + x] = covered * 2 > block * block;
@@ -208,7 +209,8 @@ int main(int argc, char** argv) {
     }
     if (overlayBase) {
         Png base, other, otherBase;
-        if (!load(overlayBase, base) || !load(overlayOther, other) || !load(overlayOtherBase, otherBase)) return 1;
+        if (!load(overlayBase, base) || !load(overlayOther, other) || !load(overlayOtherBase, otherBase))
+            return 1;
         const Png& small = other.width < image.width ? other : image;
         const Png& large = other.width < image.width ? image : other;
         const Png& smallBase = other.width < image.width ? otherBase : base;
@@ -221,7 +223,8 @@ int main(int argc, char** argv) {
             return 1;
         }
         int w = small.width, h = small.height;
-        std::vector<bool> a = overlayMask(small, smallBase, 1, w, h), b = overlayMask(large, largeBase, block, w, h);
+        std::vector<bool> a = overlayMask(small, smallBase, 1, w, h),
+                          b = overlayMask(large, largeBase, block, w, h);
         size_t both = 0, either = 0;
         int box[2][4] = {{w, h, -1, -1}, {w, h, -1, -1}};  // x0, y0, x1, y1
         for (int y = 0; y < h; ++y)
@@ -239,10 +242,11 @@ int main(int argc, char** argv) {
         int worstEdge = 0;
         for (int e = 0; e < 4; ++e) worstEdge = std::max(worstEdge, std::abs(box[0][e] - box[1][e]));
         bool ok = either > 0 && iou >= 0.95 && worstEdge <= std::max(w, h) / 100;
-        std::printf("%s overlay: %zu pixels at %dx%d, intersection over union %.4f (at least 0.95), bounding boxes "
-                    "(%d,%d)-(%d,%d) and (%d,%d)-(%d,%d), edges %d pixels apart (at most %d)\n",
-                    ok ? "ok  " : "FAIL", either, w, h, iou, box[0][0], box[0][1], box[0][2], box[0][3], box[1][0],
-                    box[1][1], box[1][2], box[1][3], worstEdge, std::max(w, h) / 100);
+        std::printf(
+            "%s overlay: %zu pixels at %dx%d, intersection over union %.4f (at least 0.95), bounding boxes "
+            "(%d,%d)-(%d,%d) and (%d,%d)-(%d,%d), edges %d pixels apart (at most %d)\n",
+            ok ? "ok  " : "FAIL", either, w, h, iou, box[0][0], box[0][1], box[0][2], box[0][3], box[1][0],
+            box[1][1], box[1][2], box[1][3], worstEdge, std::max(w, h) / 100);
         failures += !ok;
     }
     if (scaledReference) {
