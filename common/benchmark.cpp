@@ -155,9 +155,11 @@ std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo
         {"driver", device.driver},
         {"resolution", std::to_string(target.extent.width) + "x" + std::to_string(target.extent.height)},
         {"frames_in_flight", std::to_string(options.framesInFlight)},
-        {"present", !target.window ? "headless"
-                    : std::string(target.vsync ? "window, vsync" : "window, no vsync") +
-                          (device.swapchainMaintenance1 ? ", present fences (VK_EXT_swapchain_maintenance1)" : "")},
+        {"present",
+         !target.window
+             ? "headless"
+             : std::string(target.vsync ? "window, vsync" : "window, no vsync") +
+                   (device.swapchainMaintenance1 ? ", present fences (VK_EXT_swapchain_maintenance1)" : "")},
         {"target_format", formatName(target.format) + ", " + colorSpaceName(target.colorSpace)},
         {"vulkan", device.features},
     };

@@ -246,7 +246,8 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT};
     if (surface != VK_NULL_HANDLE && instance.surfaceMaintenance1 &&
         hasDeviceExtension(device.physical, VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)) {
-        VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &maintenance1};
+        VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                        .pNext = &maintenance1};
         vkGetPhysicalDeviceFeatures2(device.physical, &query);
         device.swapchainMaintenance1 = maintenance1.swapchainMaintenance1;
         if (device.swapchainMaintenance1) extensions.push_back(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME);

@@ -212,7 +212,8 @@ void collectPresentFences(Target& target, const Device& device) {
     std::erase_if(target.retired, [&](const Target::Retired& retired) {
         for (const Target::PresentFence& present : target.presentFences)
             if (present.swapchain == retired.swapchain) return false;
-        for (VkSemaphore semaphore : retired.semaphores) vkDestroySemaphore(device.handle, semaphore, nullptr);
+        for (VkSemaphore semaphore : retired.semaphores)
+            vkDestroySemaphore(device.handle, semaphore, nullptr);
         vkDestroySwapchainKHR(device.handle, retired.swapchain, nullptr);
         return true;
     });

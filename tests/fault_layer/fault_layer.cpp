@@ -154,7 +154,7 @@ VkResult deviceLoss(DeviceData& device, const char* call) {
 
 struct Profile {
     bool maintenance1 = false;  // emulate VK_EXT_swapchain_maintenance1
-    uint32_t apiVersion = 0;  // 0: the device's own
+    uint32_t apiVersion = 0;    // 0: the device's own
     std::vector<std::string> hidden;
 };
 
@@ -175,8 +175,13 @@ const std::unordered_map<std::string, VkFormat>& formatNames() {
 Profile parseProfile() {
     Profile p;
     if (const char* emulate = std::getenv("VKBOOK_EMULATE"); emulate && *emulate) {
-        if (std::strcmp(emulate, "swapchain_maintenance1") == 0) p.maintenance1 = true;
-        else std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: VKBOOK_EMULATE='%s' is not swapchain_maintenance1\n", emulate);
+        if (std::strcmp(emulate, "swapchain_maintenance1") == 0)
+            p.maintenance1 = true;
+        else
+            std::fprintf(
+                stderr,
+                "VK_LAYER_VKBOOK_fault_injection: VKBOOK_EMULATE='%s' is not swapchain_maintenance1\n",
+                emulate);
     }
     if (const char* api = std::getenv("VKBOOK_DEVICE_API"); api && *api) {
         if (std::strcmp(api, "1.1") == 0)
@@ -275,7 +280,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createInstance(const VkInstanceCreateInfo* create
     link->u.pLayerInfo = link->u.pLayerInfo->pNext;  // the next layer finds its own link
     auto create = reinterpret_cast<PFN_vkCreateInstance>(next(VK_NULL_HANDLE, "vkCreateInstance"));
     VkInstanceCreateInfo info = *createInfo;
-    std::vector<const char*> extensions = withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
+    std::vector<const char*> extensions =
+        withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
     info.enabledExtensionCount = uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     VkResult result = create(&info, allocator, instance);
@@ -311,7 +317,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     VkInstance instance = instanceData(physical).handle;  // a physical device shares its instance's key
     auto create = reinterpret_cast<PFN_vkCreateDevice>(nextInstance(instance, "vkCreateDevice"));
     VkDeviceCreateInfo info = *createInfo;
-    std::vector<const char*> extensions = withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
+    std::vector<const char*> extensions =
+        withoutOurs(info.ppEnabledExtensionNames, info.enabledExtensionCount);
     info.enabledExtensionCount = uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     VkResult result;
@@ -447,7 +454,8 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
     present.pNext = head.pNext;
     if (fences.previous == &head) fences.previous = nullptr;
     VkResult result = data.next.queuePresent(queue, &present);
-    if (fences.found && (result == VK_SUCCESS || result == VK_SUBOPTIMAL_KHR || result == VK_ERROR_OUT_OF_DATE_KHR)) {
+    if (fences.found &&
+        (result == VK_SUCCESS || result == VK_SUBOPTIMAL_KHR || result == VK_ERROR_OUT_OF_DATE_KHR)) {
         const auto* fenceInfo = reinterpret_cast<const VkSwapchainPresentFenceInfoEXT*>(fences.found);
         for (uint32_t i = 0; i < fenceInfo->swapchainCount; ++i)
             if (fenceInfo->pFences[i] != VK_NULL_HANDLE)
@@ -488,15 +496,17 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties2(VkPhysicalDevice physica
     lowerVersion(properties->properties);
 }
 
-VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical, VkPhysicalDeviceFeatures2* features) {
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
+                                                      VkPhysicalDeviceFeatures2* features) {
     VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
                             .pNext = reinterpret_cast<VkBaseOutStructure*>(features)};
     Unlinked maintenance1;
     unlink(&head, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT, maintenance1);
-    nextInstanceCall<PFN_vkGetPhysicalDeviceFeatures2>(physical, "vkGetPhysicalDeviceFeatures2")(physical, features);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFeatures2>(physical, "vkGetPhysicalDeviceFeatures2")(physical,
+                                                                                                 features);
     if (maintenance1.found)
-        reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)->swapchainMaintenance1 =
-            profile().maintenance1 ? VK_TRUE : VK_FALSE;
+        reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)
+            ->swapchainMaintenance1 = profile().maintenance1 ? VK_TRUE : VK_FALSE;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevice physical,
