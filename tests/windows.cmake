@@ -167,3 +167,28 @@ else()
         COMMAND $<TARGET_FILE:validation_selftest> --validation --device llvmpipe
         EXPECT_EXIT 3 EXPECT_STDOUT "core validation reported the misuse: yes.*synchronization validation reported the hazard: yes.*object tracking reported the leaked sampler: yes")
 endif()
+
+# Readers' desktops (tests/desktops.cmake has the Linux set): a 10-bit and an 8-bit UNORM present
+# format headless, encoded by our passes, against the sRGB golden images; the overlay in 10 bits;
+# the overlay at HiDPI scale 2 drawn through the same pass.
+foreach(spec "06;A2R10G10B10_UNORM_PACK32;chapter-06" "15;A2B10G10R10_UNORM_PACK32;chapter-15-final"
+             "14;B8G8R8A8_UNORM;chapter-14-final")
+    list(POP_FRONT spec number format golden)
+    set(size ${SIZE})
+    if(number STREQUAL "06")
+        set(size)
+    endif()
+    windows_test(windows.format-${format}.chapter-${number}
+        COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --headless ${size}
+                --target-format ${format} --screenshot ${WIN_OUT}/format-${format}.chapter-${number}.png QUIET_STDERR)
+    windows_image(windows.format-${format}.chapter-${number} ${WIN_OUT}/format-${format}.chapter-${number}.png
+        --golden ${GOLDEN}/${golden}.png ${GOLDEN_MATCH})
+endforeach()
+windows_test(windows.format-A2R10G10B10_UNORM_PACK32.chapter-15-gui
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE} --gui
+            --target-format A2R10G10B10_UNORM_PACK32 --screenshot ${WIN_OUT}/format-10bit-gui.png QUIET_STDERR)
+windows_image(windows.format-A2R10G10B10_UNORM_PACK32.chapter-15-gui ${WIN_OUT}/format-10bit-gui.png
+    --golden ${GOLDEN}/chapter-15-gui.png ${GOLDEN_MATCH})
+windows_test(windows.gui-scale-2
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 1280
+            --height 720 --gui --gui-scale 2 QUIET_STDERR)
