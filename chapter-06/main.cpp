@@ -155,7 +155,8 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
 
 //> chapter-state
 // Everything the chapter makes, in the order setUp() makes it; tearDown() destroys it in reverse.
-// Made in place, never moved: the window keeps a pointer to its target.
+// Made in place, never moved: the pipeline's vertex input description points into itself
+// (VertexInput, mesh.hpp).
 struct Chapter {
     common::Target target;
     common::Instance instance;

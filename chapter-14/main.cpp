@@ -58,8 +58,7 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 
 //> chapter-state
 // Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
-// reverse), and what the frames change. Made in place, never moved: the window keeps a pointer
-// to its target.
+// reverse), and what the frames change.
 struct Chapter {
     common::Scene scene;
     common::Target target;
@@ -203,7 +202,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         // waited for at colour output, the stage that writes it -- but a wait holds that stage for
         // every command of the batch, so the scene pass's G-buffer writes and the light pass's
         // output wait for the image too; only the work before colour output (vertex and fragment
-        // shading) may start earlier. This is the book's frame; chapter-15-lab's --acquire late
+        // shading, the depth tests) may start earlier. This is the book's frame; chapter-15-lab's --acquire late
         // submits the off-screen passes before acquiring. renderFinished is signalled when
         // everything in the batch is done.
         VkSemaphoreSubmitInfo wait{

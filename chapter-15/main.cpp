@@ -158,8 +158,7 @@ std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
 
 //> chapter-state
 // Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
-// reverse), and what the frames change. Made in place, never moved: the window keeps a pointer
-// to its target.
+// reverse), and what the frames change.
 struct Chapter {
     common::Scene scene;
     common::Target target;

@@ -46,7 +46,8 @@ VkFormat withoutSrgb(VkFormat format);
 float encodeSrgb(float linear);
 
 // The depth format a chapter renders with: D32_SFLOAT where the device can render to it and sample
-// it, else X8_D24_UNORM_PACK32 (the specification guarantees one of the two for both uses).
+// it, else X8_D24_UNORM_PACK32 (the specification guarantees depth attachments of one of the two;
+// we also need to sample it).
 // `needFloat`: only D32_SFLOAT will do (reversed-Z); a device without it is refused in one line
 // that names `why`.
 VkFormat chooseDepthFormat(const Device& device, bool needFloat = false, const char* why = nullptr);

@@ -31,7 +31,7 @@ struct Gui {
     bool visible = true;         // F1 hides and shows the overlay
     bool deterministic = false;  // headless or --gui-still: timings as placeholders
     bool glfwBackend = false;    // Dear ImGui's GLFW backend feeds input (a window)
-    // Pixels per window point: 2 on a HiDPI display (Retina, a desktop at scale 2), --gui-scale
+    // Pixels per window point: 2 on a HiDPI display (macOS Retina, Wayland at scale 2), --gui-scale
     // headless. ImGui lays out in points; the font is rasterised at this many pixels a point.
     float scale = 1.0f;
     KeyPress toggleKey{GLFW_KEY_F1};

@@ -18,7 +18,7 @@
 namespace common {
 namespace {
 
-// The push constants of gui.vert: pixels to clip space.
+// The push constants of gui.vert: window points to clip space.
 struct GuiTransform {
     float scale[2];
     float translate[2];

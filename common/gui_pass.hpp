@@ -38,7 +38,9 @@ struct GuiPass {
     size_t largestVertices = 0, largestIndices = 0;  // the most one frame drew
 };
 
-// After ImGui's context exists (its font atlas is uploaded here). `format`: the presented image's.
+// After ImGui's context exists (its font atlas is uploaded here). `format`: that of the view the
+// pass draws through, Target::encodedFormat (the _UNORM twin of an _SRGB image where the image can
+// be viewed so, else the image's own).
 GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFormat format,
                       uint32_t framesInFlight);
 // Copies this frame's draw data (nullptr: none) into its buffers, growing them if needed. After
