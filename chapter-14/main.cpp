@@ -202,9 +202,9 @@ void frameLoop(Chapter& c, const common::Options& options) {
         // waited for at colour output, the stage that writes it -- but a wait holds that stage for
         // every command of the batch, so the scene pass's G-buffer writes and the light pass's
         // output wait for the image too; only the work before colour output (vertex and fragment
-        // shading, the depth tests) may start earlier. This is the book's frame; chapter-15-lab's --acquire late
-        // submits the off-screen passes before acquiring. renderFinished is signalled when
-        // everything in the batch is done.
+        // shading, the depth tests) may start earlier. This is the book's frame; chapter-15-lab's
+        // --acquire late submits the off-screen passes before acquiring. renderFinished is
+        // signalled when everything in the batch is done.
         VkSemaphoreSubmitInfo wait{
             .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
             .semaphore = sync.imageAvailable,
