@@ -25,13 +25,14 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 }
 
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, uint32_t mipLevels, VkImageCreateFlags flags) {
+                  VkImageAspectFlags aspect, uint32_t mipLevels, VkImageCreateFlags flags, const void* next) {
     Image image;
     image.mipLevels = mipLevels;
     image.format = format;
     image.extent = extent;
     VkImageCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .pNext = next,
         .flags = flags,
         .imageType = VK_IMAGE_TYPE_2D,
         .format = format,

@@ -177,13 +177,20 @@ void createOffscreen(Target& target, const Device& device) {
     target.format = chooseOffscreenFormat(target, device);
     target.extent = target.requestedExtent;
     target.presentLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    // _SRGB images also viewed as _UNORM (Target::encodedViews). The list of the two formats
+    // (core in 1.2) lets a driver keep what it can, such as colour compression, for both.
     bool mutableImages = withoutSrgb(target.format) != target.format;
+    VkFormat viewFormats[] = {target.format, withoutSrgb(target.format)};
+    VkImageFormatListCreateInfo formatList{.sType = VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO,
+                                           .viewFormatCount = 2,
+                                           .pViewFormats = viewFormats};
+    bool listFormats = mutableImages && device.apiVersion >= VK_API_VERSION_1_2;
     for (uint32_t i = 0; i < kOffscreenImages; ++i) {
         target.offscreen.push_back(createImage(
             device, target.extent, target.format,
             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-            1,
-            mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0}));
+            1, mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0},
+            listFormats ? &formatList : nullptr));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
     }
