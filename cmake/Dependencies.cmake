@@ -172,3 +172,53 @@ if(NOT TARGET CLI11::CLI11)
         GIT_TAG v2.1.2)
     FetchContent_MakeAvailable(cli11)
 endif()
+
+# Runtime shader compilation (common/shader_compiler.cpp, chapter-06/shader_compiler.cpp): shaderc
+# compiles GLSL while a chapter runs, as the book's ShaderCompiler does, and SPIRV-Cross reflects a
+# recompiled shader's interface so that a reload never gives a pipeline a shader its layout does
+# not fit. Debian: libshaderc-dev and libspirv-cross-c-shared-dev; Windows and macOS: both are in
+# the Vulkan SDK. Without them the chapters build as before and use the build's SPIR-V only
+# (--help says so). Target: vkbook::runtime_shaders, with VKBOOK_RUNTIME_SHADERS=1 defined.
+option(VKBOOK_RUNTIME_SHADERS "Compile shaders at run time with shaderc when found (live reload)" ON)
+add_library(vkbook_runtime_shaders INTERFACE)
+if(VKBOOK_RUNTIME_SHADERS)
+    # Debian's libshaderc.so leaves glslang's symbols to the program (and crashes when they come
+    # from elsewhere): its libshaderc_combined.a is linked with glslang's static libraries
+    # (glslang-dev's CMake package) instead. The Vulkan SDK's shaderc_combined has them inside.
+    find_library(VKBOOK_SHADERC_COMBINED NAMES shaderc_combined)
+    find_package(Threads REQUIRED)  # glslang's package names Threads::Threads without finding it
+    find_package(glslang CONFIG QUIET)
+    if(PKG_CONFIG_FOUND)
+        pkg_check_modules(spirv_cross_c QUIET IMPORTED_TARGET spirv-cross-c-shared)
+    endif()
+    if(NOT (VKBOOK_SHADERC_COMBINED AND TARGET glslang::SPIRV) AND CMAKE_VERSION VERSION_GREATER_EQUAL 3.24)
+        find_package(Vulkan QUIET COMPONENTS shaderc_combined)  # the Vulkan SDK's
+    endif()
+    if(NOT TARGET PkgConfig::spirv_cross_c)
+        find_package(spirv_cross_c_shared CONFIG QUIET)  # the Vulkan SDK's
+    endif()
+    set(vkbook_shaderc_target)
+    if(VKBOOK_SHADERC_COMBINED AND TARGET glslang::SPIRV)
+        set(vkbook_shaderc_target ${VKBOOK_SHADERC_COMBINED} glslang::SPIRV glslang::glslang)
+        if(TARGET glslang::HLSL)
+            list(APPEND vkbook_shaderc_target glslang::HLSL)
+        endif()
+    elseif(TARGET Vulkan::shaderc_combined)
+        set(vkbook_shaderc_target Vulkan::shaderc_combined)
+    endif()
+    set(vkbook_spirv_cross_target)
+    if(TARGET PkgConfig::spirv_cross_c)
+        set(vkbook_spirv_cross_target PkgConfig::spirv_cross_c)
+    elseif(TARGET spirv-cross-c-shared)
+        set(vkbook_spirv_cross_target spirv-cross-c-shared)
+    endif()
+    if(vkbook_shaderc_target AND vkbook_spirv_cross_target)
+        target_link_libraries(vkbook_runtime_shaders INTERFACE ${vkbook_shaderc_target} ${vkbook_spirv_cross_target})
+        target_compile_definitions(vkbook_runtime_shaders INTERFACE VKBOOK_RUNTIME_SHADERS=1)
+        set(VKBOOK_HAVE_RUNTIME_SHADERS ON)
+    else()
+        message(STATUS "shaderc or SPIRV-Cross not found: the chapters use the build's SPIR-V only "
+                       "(Debian: apt-get install libshaderc-dev libspirv-cross-c-shared-dev)")
+    endif()
+endif()
+add_library(vkbook::runtime_shaders ALIAS vkbook_runtime_shaders)

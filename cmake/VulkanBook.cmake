@@ -24,6 +24,18 @@ set(VKBOOK_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/bin/shaders)
 
 option(VKBOOK_WERROR "Treat compiler warnings as errors" ON)
 
+# Source-level shader debugging (RenderDoc and other graphics debuggers show the GLSL and step
+# through it): every shader built with glslang's -gVS (non-semantic debug information with the
+# source text), and shaders compiled at run time with shaderc's debug information. On by default
+# in Debug builds.
+if(CMAKE_BUILD_TYPE STREQUAL "Debug")
+    set(vkbook_shader_debug_default ON)
+else()
+    set(vkbook_shader_debug_default OFF)
+endif()
+option(VKBOOK_SHADER_DEBUG_INFO "Build shaders with debug information for source-level debugging"
+       ${vkbook_shader_debug_default})
+
 include(${CMAKE_CURRENT_LIST_DIR}/Dependencies.cmake)
 
 # -DVKBOOK_SANITIZE=ON: AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer on
@@ -74,6 +86,10 @@ endfunction()
 # compiled into this chapter's directory under its own name.
 function(vkbook_shaders target chapter)
     set(outputs)
+    set(debug_info)
+    if(VKBOOK_SHADER_DEBUG_INFO)
+        set(debug_info -gVS)
+    endif()
     foreach(spec IN LISTS ARGN)
         string(REPLACE ":" ";" parts "${spec}")
         list(GET parts 0 src)
@@ -95,10 +111,18 @@ function(vkbook_shaders target chapter)
             get_filename_component(name ${name} NAME)
         endif()
         set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${name}.spv)
+        # What the build compiled it from, for runtime compilation (common/shader_compiler.cpp):
+        # the source relative to shaders/, then one macro definition a line.
+        file(RELATIVE_PATH relative ${VKBOOK_ROOT}/shaders ${in})
+        string(REPLACE "-D" "" define_lines "${defines}")
+        string(REPLACE ";" "\n" define_lines "${define_lines}")
+        file(GENERATE OUTPUT ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${name}.source
+             CONTENT "${relative}\n${define_lines}")
         add_custom_command(
             OUTPUT ${out}
             COMMAND ${CMAKE_COMMAND} -E make_directory ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}
             COMMAND Vulkan::glslangValidator --target-env vulkan1.1 -I${VKBOOK_ROOT}/shaders/include ${defines}
+                    ${debug_info}
                     --depfile ${out}.d -o ${out} ${in}
             MAIN_DEPENDENCY ${in}
             DEPFILE ${out}.d
@@ -109,6 +133,10 @@ function(vkbook_shaders target chapter)
     add_custom_target(${target}-shaders DEPENDS ${outputs})
     add_dependencies(${target} ${target}-shaders)
 endfunction()
+
+# Where the shader sources are, for runtime compilation: the build's shaders/, written next to
+# the compiled shaders (a copied bin/ whose tree is gone falls back to the build's SPIR-V).
+file(GENERATE OUTPUT ${VKBOOK_SHADER_OUTPUT_DIR}/source-dir.txt CONTENT "${VKBOOK_ROOT}/shaders\n")
 
 # The common library, added once whichever CMakeLists comes first.
 if(NOT TARGET common)

@@ -19,6 +19,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/instance.hpp"
+#include "common/shader_compiler.hpp"
 
 namespace common {
 namespace {
@@ -26,7 +27,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: %s [--headless] [--width W] [--height H] [--frames N] [--screenshot FILE.png]\n"
     "          [--device NAME] [--validation] [--frames-in-flight N] [--resize WxH]\n"
-    "          [--target-format FORMAT] [--help]\n"
+    "          [--target-format FORMAT] [--shader-dir DIR] [--help]\n"
     "          [--benchmark [--warmup N] [--json FILE]]%s\n"
     "\n"
     "  --headless         render offscreen, no window or display needed\n"
@@ -45,6 +46,8 @@ constexpr const char* kUsage =
     "                     first the window offers of B8G8R8A8_SRGB, R8G8B8A8_SRGB, B8G8R8A8_UNORM,\n"
     "                     R8G8B8A8_UNORM, A2R10G10B10_UNORM_PACK32, A2B10G10R10_UNORM_PACK32\n"
     "                     (headless: B8G8R8A8_SRGB)\n"
+    "  --shader-dir DIR   compile the shaders from DIR (a copy of the sources' shaders/) instead of\n"
+    "                     the build's sources, and reload them when edited\n"
     "  --benchmark        render --warmup frames (default 10), then --frames (default 100) measured\n"
     "                     ones without vsync; print CPU and GPU frame and pass times\n"
     "  --json FILE        with --benchmark: also write the report as JSON\n"
@@ -158,7 +161,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     app.add_option("--frames-in-flight", options.framesInFlight)->check(number("--frames-in-flight", 1, 3));
     app.add_flag("--benchmark", options.benchmark);
     app.add_option("--warmup", options.warmup)->check(number("--warmup", 0, 100000));
-    std::string json, screenshot, resize, scene, model, bookScene, view, targetFormat;
+    std::string json, screenshot, resize, scene, model, bookScene, view, targetFormat, shaderDir;
     app.add_option("--json", json)->check(check([](const std::string& file) {
         if (file.empty()) throw InputError("--json needs a file name");
         checkOutputPath(file, "benchmark report");
@@ -176,6 +179,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
             throw InputError("--target-format must be one of " + presentFormatNames() + ", got '" + name +
                              "'");
     }));
+    app.add_option("--shader-dir", shaderDir)->check(nonEmpty("--shader-dir needs a directory"));
     // The scene chapters' options; a chapter without a scene refuses them by name (below).
     app.add_option("--scene", scene)->check(nonEmpty("--scene needs a file name"));
     app.add_option("--model", model)->check(nonEmpty("--model needs a file name"));
@@ -217,6 +221,7 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
         if (chapter.views.empty() && app.count(flag))
             throw InputError(std::string(chapter.name) + " draws no scene and takes no " + flag);
     options.json = json;
+    options.shaderDir = std::filesystem::u8path(shaderDir);
     options.screenshot = screenshot;
     if (app.count("--resize")) options.resizeTo = parseExtent("--resize", resize);
     if (app.count("--target-format")) options.targetFormat = presentFormatByName(targetFormat);
@@ -271,6 +276,7 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
 #endif
     try {
         Options options = parseCommandLine(argc, argv, info);
+        configureShaderSources(options.shaderDir);
         if (options.help) {
             std::printf("%s: %s\n\n", name, info.summary);
             std::printf(kUsage, name,
@@ -294,9 +300,11 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
             }
             for (const auto& [switchName, help] : info.switches)
                 std::printf("  --%-17s%s\n", switchName.c_str(), help.c_str());
+            std::printf("\n%s\n", shaderSourcesSummary().c_str());
             std::printf("%s", kExitCodes);
             return 0;
         }
+        if (!options.shaderDir.empty()) std::printf("%s\n", shaderSourcesSummary().c_str());
         chapter(options);
     } catch (const InputError& error) {
         std::fprintf(stderr, "%s: error: %s\n", name, oneLine(error.what()).c_str());

@@ -17,6 +17,7 @@
 #endif
 
 #include "common/check.hpp"
+#include "common/shader_compiler.hpp"
 
 namespace common {
 
@@ -118,11 +119,11 @@ std::vector<char> readSpirv(std::string_view name) {
 }
 
 VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
-    std::vector<char> code = readSpirv(name);
+    std::vector<uint32_t> code = shaderCode(name);  // the build's, or compiled from a newer source
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
-        .codeSize = code.size(),
-        .pCode = reinterpret_cast<const uint32_t*>(code.data()),  // vector storage is suitably aligned
+        .codeSize = code.size() * sizeof(uint32_t),
+        .pCode = code.data(),
     };
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));

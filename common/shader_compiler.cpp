@@ -1,0 +1,477 @@
+// Runtime shader compilation and live reload (shader_compiler.hpp). The shaderc calls are the
+// ones chapter-06/shader_compiler.cpp writes out for the book's chapter 6.
+#include "common/shader_compiler.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <system_error>
+#include <tuple>
+
+#include "common/check.hpp"
+#include "common/files.hpp"
+
+#if defined(VKBOOK_RUNTIME_SHADERS)
+#include <shaderc/shaderc.h>
+#include <spirv_cross/spirv_cross_c.h>
+#endif
+
+namespace common {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A shader a chapter loaded: where its code came from, and the files to watch.
+struct Entry {
+    ShaderSource source;
+    std::vector<uint32_t> spirv;               // what shaderCode returns now
+    std::vector<uint32_t> reference;           // the build's: the interface its pipeline was made for
+    std::map<fs::path, fs::file_time_type> files;  // each file it came from, and its time when read
+    std::optional<std::vector<uint32_t>> pending;  // compiled, waiting for the other changed ones
+    std::string error;                         // why the last compile of it failed
+};
+
+struct State {
+    fs::path sourceDir;  // empty: no sources this run
+    std::string why;     // why there are none, for shaderSourcesSummary
+    bool explicitDir = false;
+    std::map<std::string, Entry, std::less<>> shaders;
+    std::chrono::steady_clock::time_point lastPoll{};
+    std::string reloadError;
+};
+State gState;
+
+std::optional<fs::file_time_type> modified(const fs::path& path) {
+    std::error_code error;
+    fs::file_time_type time = fs::last_write_time(path, error);
+    if (error) return std::nullopt;
+    return time;
+}
+
+std::vector<uint32_t> readWords(const fs::path& path) {
+    std::vector<char> bytes = readFile(path);
+    if (bytes.empty() || bytes.size() % 4 != 0) throw Failure("'" + utf8(path) + "' is not SPIR-V");
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    return words;
+}
+
+// The first line of a compiler message, and how many more errors it has.
+std::string firstLine(const std::string& message) {
+    size_t end = message.find('\n');
+    std::string line = message.substr(0, end);
+    size_t more = 0;
+    for (size_t at = message.find(": error:", end); at != std::string::npos; at = message.find(": error:", at + 1))
+        ++more;
+    if (more > 0) line += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
+    return line;
+}
+
+#if defined(VKBOOK_RUNTIME_SHADERS)
+
+//> include-callback
+// #include "file" is looked up next to the including file, then in shaders/include;
+// #include <file> in shaders/include only: glslangValidator's rules with -I shaders/include.
+struct IncludeContext {
+    fs::path includeDir;
+    std::vector<fs::path>* files;
+};
+struct IncludeResult {
+    shaderc_include_result result{};
+    std::string name, content;
+};
+
+shaderc_include_result* resolveInclude(void* userData, const char* requested, int type,
+                                       const char* requesting, size_t /*depth*/) {
+    auto* context = static_cast<IncludeContext*>(userData);
+    auto* include = new IncludeResult;
+    std::vector<fs::path> candidates;
+    if (type == shaderc_include_type_relative)
+        candidates.push_back(fs::path(requesting).parent_path() / fs::u8path(requested));
+    candidates.push_back(context->includeDir / fs::u8path(requested));
+    for (const fs::path& candidate : candidates) {
+        std::ifstream file(candidate, std::ios::binary);
+        if (!file) continue;
+        std::ostringstream text;
+        text << file.rdbuf();
+        include->name = utf8(candidate);
+        include->content = text.str();
+        context->files->push_back(candidate);
+        break;
+    }
+    if (include->name.empty()) include->content = std::string("cannot find include file '") + requested + "'";
+    include->result = {include->name.c_str(), include->name.size(), include->content.c_str(),
+                       include->content.size(), include};
+    return &include->result;
+}
+
+void releaseInclude(void* /*userData*/, shaderc_include_result* result) {
+    delete static_cast<IncludeResult*>(result->user_data);
+}
+//< include-callback
+
+shaderc_shader_kind shaderKind(const fs::path& glsl) {
+    std::string extension = glsl.extension().string();
+    if (extension == ".vert") return shaderc_glsl_vertex_shader;
+    if (extension == ".frag") return shaderc_glsl_fragment_shader;
+    if (extension == ".comp") return shaderc_glsl_compute_shader;
+    throw Failure("'" + utf8(glsl) + "': unknown shader stage (expected .vert, .frag or .comp)");
+}
+
+// The interface of a SPIR-V module that its pipeline depends on: the descriptors and push
+// constants the code uses (SPIRV-Cross's reflection of the active ones), the inputs it reads and
+// the outputs it writes, by location. A reloaded shader must fit the old one's pipeline layout
+// and its neighbouring stages: uses no descriptor the layout lacks, no more push constant bytes,
+// reads no input the old one did not, writes every output the old one wrote.
+struct Interface {
+    std::map<std::pair<unsigned, unsigned>, std::string> descriptors;  // (set, binding) -> kind
+    size_t pushConstantBytes = 0;
+    std::map<unsigned, std::string> inputs, outputs;  // location -> type
+};
+
+std::string typeName(spvc_compiler compiler, spvc_type_id id) {
+    spvc_type type = spvc_compiler_get_type_handle(compiler, id);
+    static const char* kBase[] = {"unknown", "void", "bool", "int8", "uint8", "int16", "uint16",
+                                  "int", "uint", "int64", "uint64", "atomic", "float16", "float",
+                                  "double", "struct", "image", "sampled image", "sampler", "accel"};
+    unsigned base = unsigned(spvc_type_get_basetype(type));
+    std::string name = base < std::size(kBase) ? kBase[base] : "other";
+    unsigned columns = spvc_type_get_columns(type), size = spvc_type_get_vector_size(type);
+    if (columns > 1) return name + " mat" + std::to_string(columns) + "x" + std::to_string(size);
+    if (size > 1) return name + " vec" + std::to_string(size);
+    return name;
+}
+
+Interface reflect(const std::vector<uint32_t>& spirv) {
+    Interface result;
+    spvc_context context = nullptr;
+    if (spvc_context_create(&context) != SPVC_SUCCESS) throw Failure("SPIRV-Cross: no context");
+    struct Guard {
+        spvc_context context;
+        ~Guard() { spvc_context_destroy(context); }
+    } guard{context};
+    spvc_parsed_ir ir = nullptr;
+    spvc_compiler compiler = nullptr;
+    if (spvc_context_parse_spirv(context, spirv.data(), spirv.size(), &ir) != SPVC_SUCCESS ||
+        spvc_context_create_compiler(context, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP,
+                                     &compiler) != SPVC_SUCCESS)
+        throw Failure(std::string("SPIRV-Cross: ") + spvc_context_get_last_error_string(context));
+    spvc_set active = nullptr;
+    spvc_resources used = nullptr, declared = nullptr;
+    spvc_compiler_get_active_interface_variables(compiler, &active);
+    spvc_compiler_create_shader_resources_for_active_variables(compiler, &used, active);
+    spvc_compiler_create_shader_resources(compiler, &declared);
+    auto each = [](spvc_resources resources, spvc_resource_type type, auto&& body) {
+        const spvc_reflected_resource* list = nullptr;
+        size_t count = 0;
+        spvc_resources_get_resource_list_for_type(resources, type, &list, &count);
+        for (size_t i = 0; i < count; ++i) body(list[i]);
+    };
+    const std::pair<spvc_resource_type, const char*> kinds[] = {
+        {SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, "uniform buffer"},
+        {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, "storage buffer"},
+        {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, "combined image sampler"},
+        {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, "sampled image"},
+        {SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, "sampler"},
+        {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, "storage image"},
+        {SPVC_RESOURCE_TYPE_SUBPASS_INPUT, "input attachment"},
+    };
+    for (const auto& [type, kind] : kinds)
+        each(used, type, [&](const spvc_reflected_resource& resource) {
+            unsigned set = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationDescriptorSet);
+            unsigned binding = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationBinding);
+            result.descriptors[{set, binding}] = kind;
+        });
+    each(used, SPVC_RESOURCE_TYPE_PUSH_CONSTANT, [&](const spvc_reflected_resource& resource) {
+        size_t size = 0;
+        spvc_compiler_get_declared_struct_size(compiler, spvc_compiler_get_type_handle(compiler, resource.base_type_id),
+                                               &size);
+        result.pushConstantBytes = std::max(result.pushConstantBytes, size);
+    });
+    each(declared, SPVC_RESOURCE_TYPE_STAGE_INPUT, [&](const spvc_reflected_resource& resource) {
+        unsigned location = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationLocation);
+        result.inputs[location] = typeName(compiler, resource.type_id);
+    });
+    each(declared, SPVC_RESOURCE_TYPE_STAGE_OUTPUT, [&](const spvc_reflected_resource& resource) {
+        unsigned location = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationLocation);
+        result.outputs[location] = typeName(compiler, resource.type_id);
+    });
+    return result;
+}
+
+// Empty when `now` fits the pipeline made for `before`; else what does not, in one phrase.
+std::string interfaceChange(const Interface& before, const Interface& now) {
+    for (const auto& [slot, kind] : now.descriptors) {
+        auto old = before.descriptors.find(slot);
+        std::string where = "set " + std::to_string(slot.first) + " binding " + std::to_string(slot.second);
+        if (old == before.descriptors.end())
+            return "it uses " + where + " (" + kind + "), which its pipeline layout does not have";
+        if (old->second != kind) return where + " is now a " + kind + ", the layout has a " + old->second;
+    }
+    if (now.pushConstantBytes > before.pushConstantBytes)
+        return "its push constants grew from " + std::to_string(before.pushConstantBytes) + " to " +
+               std::to_string(now.pushConstantBytes) + " bytes";
+    for (const auto& [location, type] : now.inputs) {
+        auto old = before.inputs.find(location);
+        if (old == before.inputs.end() || old->second != type)
+            return "it reads input location " + std::to_string(location) + " (" + type +
+                   "), which the stage before does not give it";
+    }
+    for (const auto& [location, type] : before.outputs) {
+        auto old = now.outputs.find(location);
+        if (old == now.outputs.end() || old->second != type)
+            return "it no longer writes output location " + std::to_string(location) + " (" + type + ")";
+    }
+    return {};
+}
+
+#endif  // VKBOOK_RUNTIME_SHADERS
+
+// Checks compiled code against the build's; returns the error message, or empty.
+std::string checkInterface(const Entry& entry, const std::vector<uint32_t>& spirv) {
+#if defined(VKBOOK_RUNTIME_SHADERS)
+    if (entry.reference.empty()) return {};
+    std::string change = interfaceChange(reflect(entry.reference), reflect(spirv));
+    if (change.empty()) return {};
+    return utf8(entry.source.glsl) + ": interface changed: " + change +
+           " (a reload changes shader code only; a new interface needs the C++ that makes the pipeline)";
+#else
+    (void)entry;
+    (void)spirv;
+    return {};
+#endif
+}
+
+void remember(Entry& entry, const std::vector<fs::path>& files) {
+    entry.files.clear();
+    for (const fs::path& file : files)
+        if (std::optional<fs::file_time_type> time = modified(file)) entry.files[file] = *time;
+}
+
+}  // namespace
+
+bool runtimeShaderCompilation() {
+#if defined(VKBOOK_RUNTIME_SHADERS)
+    return true;
+#else
+    return false;
+#endif
+}
+
+void configureShaderSources(const fs::path& shaderDir) {
+    gState = {};
+    if (!shaderDir.empty()) {
+        if (!runtimeShaderCompilation())
+            throw InputError("--shader-dir: this build has no runtime shader compilation (built without shaderc)");
+        if (!fs::is_directory(shaderDir))
+            throw InputError("--shader-dir '" + utf8(shaderDir) + "' is not a directory");
+        gState.sourceDir = fs::absolute(shaderDir);
+        gState.explicitDir = true;
+        return;
+    }
+    if (!runtimeShaderCompilation()) {
+        gState.why = "this build has no runtime compilation (built without shaderc)";
+        return;
+    }
+    fs::path recorded = executableDir() / "shaders" / "source-dir.txt";
+    std::ifstream file(recorded);
+    std::string line;
+    if (!file || !std::getline(file, line) || line.empty()) {
+        gState.why = "no " + utf8(recorded);
+        return;
+    }
+    fs::path dir = fs::u8path(line);
+    if (!fs::is_directory(dir)) {
+        gState.why = "the build's sources (" + line + ") are not there";
+        return;
+    }
+    gState.sourceDir = dir;
+}
+
+std::string shaderSourcesSummary() {
+    if (!gState.sourceDir.empty())
+        return "shaders: compiled at run time from " + utf8(gState.sourceDir) +
+               " when newer than the build's SPIR-V, reloaded when edited";
+    return "shaders: the build's SPIR-V (" + gState.why + ")";
+}
+
+ShaderSource findShaderSource(std::string_view name) {
+    ShaderSource source;
+    fs::path compiled = executableDir() / "shaders" / fs::u8path(std::string(name));
+    source.spv = fs::path(compiled).concat(".spv");
+    if (gState.sourceDir.empty()) return source;
+    std::ifstream manifest(fs::path(compiled).concat(".source"));
+    std::string relative, define;
+    if (!manifest || !std::getline(manifest, relative) || relative.empty()) return source;
+    while (std::getline(manifest, define))
+        if (!define.empty()) source.defines.push_back(define);
+    source.glsl = gState.sourceDir / fs::u8path(relative);
+    source.includeDir = gState.sourceDir / "include";
+    source.found = fs::is_regular_file(source.glsl);
+    return source;
+}
+
+namespace {
+
+// shaderc on one source: SPIR-V, or only the preprocessor's work (which is what finds the files
+// it includes, at a fraction of a compile's time).
+ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
+    ShaderCompilation compilation;
+#if defined(VKBOOK_RUNTIME_SHADERS)
+    std::string text = readInputFile(source.glsl);
+    compilation.files.push_back(source.glsl);
+    shaderc_compiler_t compiler = shaderc_compiler_initialize();
+    shaderc_compile_options_t options = shaderc_compile_options_initialize();
+    for (const std::string& define : source.defines) {
+        size_t equals = define.find('=');
+        std::string name = define.substr(0, equals);
+        std::string value = equals == std::string::npos ? "" : define.substr(equals + 1);
+        shaderc_compile_options_add_macro_definition(options, name.data(), name.size(), value.data(), value.size());
+    }
+    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan, shaderc_env_version_vulkan_1_1);
+    shaderc_compile_options_set_target_spirv(options, shaderc_spirv_version_1_3);
+#if defined(VKBOOK_SHADER_DEBUG_INFO)
+    shaderc_compile_options_set_generate_debug_info(options);
+#endif
+    IncludeContext includes{source.includeDir, &compilation.files};
+    shaderc_compile_options_set_include_callbacks(options, resolveInclude, releaseInclude, &includes);
+    std::string fileName = utf8(source.glsl);
+    shaderc_compilation_result_t result =
+        preprocessOnly ? shaderc_compile_into_preprocessed_text(compiler, text.data(), text.size(),
+                                                                shaderKind(source.glsl), fileName.c_str(), "main",
+                                                                options)
+                       : shaderc_compile_into_spv(compiler, text.data(), text.size(), shaderKind(source.glsl),
+                                                  fileName.c_str(), "main", options);
+    if (shaderc_result_get_compilation_status(result) != shaderc_compilation_status_success) {
+        compilation.error = shaderc_result_get_error_message(result);
+        if (compilation.error.empty()) compilation.error = fileName + ": shaderc failed";
+    } else if (!preprocessOnly) {
+        const char* bytes = shaderc_result_get_bytes(result);
+        compilation.spirv.resize(shaderc_result_get_length(result) / 4);
+        std::memcpy(compilation.spirv.data(), bytes, compilation.spirv.size() * 4);
+    }
+    shaderc_result_release(result);
+    shaderc_compile_options_release(options);
+    shaderc_compiler_release(compiler);
+#else
+    (void)preprocessOnly;
+    compilation.error = utf8(source.glsl) + ": this build has no runtime shader compilation";
+#endif
+    return compilation;
+}
+
+}  // namespace
+
+ShaderCompilation compileShader(const ShaderSource& source) {
+    return runShaderc(source, false);
+}
+
+std::vector<uint32_t> shaderCode(std::string_view name) {
+    if (auto known = gState.shaders.find(name); known != gState.shaders.end() && !known->second.spirv.empty())
+        return known->second.spirv;
+    Entry entry;
+    entry.source = findShaderSource(name);
+    bool built = fs::exists(entry.source.spv);
+    if (built) entry.reference = readWords(entry.source.spv);
+    if (!entry.source.found) {
+        if (!built) throw Failure("missing shader '" + utf8(entry.source.spv) + "' (is the build complete?)");
+        entry.spirv = entry.reference;
+        return gState.shaders.emplace(std::string(name), std::move(entry)).first->second.spirv;
+    }
+    // The book's rule, followed through the included files: compile when a file is newer than
+    // the build's SPIR-V. The preprocessor tells which files those are.
+    ShaderCompilation preprocessed = runShaderc(entry.source, true);
+    if (!preprocessed.error.empty()) throw InputError(firstLine(preprocessed.error));
+    remember(entry, preprocessed.files);
+    bool newer = !built;
+    if (built) {
+        std::optional<fs::file_time_type> spvTime = modified(entry.source.spv);
+        for (const auto& [file, time] : entry.files) newer = newer || !spvTime || time > *spvTime;
+    }
+    if (newer) {
+        ShaderCompilation compilation = compileShader(entry.source);
+        if (!compilation.error.empty()) throw InputError(firstLine(compilation.error));
+        if (std::string change = checkInterface(entry, compilation.spirv); !change.empty()) throw InputError(change);
+        std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
+                    std::string(name).c_str());
+        entry.spirv = std::move(compilation.spirv);
+    } else {
+        entry.spirv = entry.reference;
+    }
+    return gState.shaders.emplace(std::string(name), std::move(entry)).first->second.spirv;
+}
+
+void watchShader(std::string_view name) {
+    if (gState.sourceDir.empty() || gState.shaders.count(name)) return;
+    Entry entry;
+    entry.source = findShaderSource(name);
+    if (!entry.source.found) return;
+    if (fs::exists(entry.source.spv)) entry.reference = readWords(entry.source.spv);
+    ShaderCompilation preprocessed = runShaderc(entry.source, true);
+    remember(entry, preprocessed.files.empty() ? std::vector<fs::path>{entry.source.glsl} : preprocessed.files);
+    gState.shaders.emplace(std::string(name), std::move(entry));
+}
+
+bool shaderSourcesChanged() {
+    if (gState.sourceDir.empty()) return false;
+    auto now = std::chrono::steady_clock::now();
+    if (now - gState.lastPoll < std::chrono::milliseconds(250)) return false;
+    gState.lastPoll = now;
+
+    // Which shaders' files changed since they were read. A file that cannot be read just now (an
+    // editor replacing it) is looked at again on the next poll.
+    std::vector<std::pair<const std::string*, Entry*>> changed;
+    for (auto& [name, entry] : gState.shaders) {
+        bool edited = false;
+        for (const auto& [file, time] : entry.files) {
+            std::optional<fs::file_time_type> current = modified(file);
+            if (!current) {
+                edited = false;
+                break;
+            }
+            edited = edited || *current != time;
+        }
+        if (edited) changed.emplace_back(&name, &entry);
+    }
+    if (changed.empty()) return false;
+
+    auto started = std::chrono::steady_clock::now();
+    for (auto& [name, entry] : changed) {
+        ShaderCompilation compilation = compileShader(entry->source);
+        remember(*entry, compilation.files.empty() ? std::vector<fs::path>{entry->source.glsl} : compilation.files);
+        entry->error = compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
+        if (entry->error.empty())
+            entry->pending = std::move(compilation.spirv);
+        else
+            std::fprintf(stderr, "shaders: %s did not reload: %s", name->c_str(),
+                         (entry->error + (entry->error.ends_with('\n') ? "" : "\n")).c_str());
+    }
+    // Every shader must be good before any pipeline changes.
+    gState.reloadError.clear();
+    for (const auto& [name, entry] : gState.shaders)
+        if (!entry.error.empty()) gState.reloadError += entry.error + (entry.error.ends_with('\n') ? "" : "\n");
+    if (!gState.reloadError.empty()) return false;
+    std::string names;
+    for (auto& [name, entry] : gState.shaders)
+        if (entry.pending) {
+            entry.spirv = std::move(*entry.pending);
+            entry.pending.reset();
+            names += (names.empty() ? "" : ", ") + name;
+        }
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    std::printf("shaders: reloaded %s (compiled in %.0f ms)\n", names.c_str(), ms);
+    std::fflush(stdout);
+    return true;
+}
+
+const std::string& shaderReloadError() {
+    return gState.reloadError;
+}
+
+}  // namespace common
