@@ -11,6 +11,7 @@
 #endif
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 namespace {
@@ -127,8 +128,11 @@ Instance createInstance(const char* applicationName, bool validation, std::vecto
                 " is not installed (Debian/Ubuntu: apt-get install vulkan-validationlayers; Windows "
                 "and macOS: the Vulkan SDK)");
         }
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     }
+    // VK_EXT_debug_utils: the messenger above, and the names and labels a debugger shows
+    // (common/debug_names.hpp), wherever the instance offers it; the validation layer always does.
+    bool debugUtils = validation || hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
     VkInstanceCreateInfo createInfo{
         .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
@@ -146,6 +150,7 @@ Instance createInstance(const char* applicationName, bool validation, std::vecto
         if (std::strcmp(extension, VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) == 0)
             instance.surfaceMaintenance1 = true;
 
+    loadDebugNames(instance.handle, debugUtils);
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance.handle, "vkCreateDebugUtilsMessengerEXT"));

@@ -1,12 +1,31 @@
 // Run control and per-frame bookkeeping.
 #include "common/run_control.hpp"
 
+#include <csignal>
+
+#include "common/debug_names.hpp"
+
 #include "common/screenshot.hpp"
 
 namespace common {
 
+namespace {
+
+// Ctrl+C or a TERM signal ends the run at the next frame like closing the window does, so a
+// headless run of many frames still writes its --screenshot (and a live-reload test can end one).
+volatile std::sig_atomic_t gInterrupted = 0;
+extern "C" void interrupt(int) {
+    gInterrupted = 1;
+}
+
+}  // namespace
+
 RunControl createRunControl(const Options& options, const Device& device, std::vector<std::string> passes) {
     RunControl run;
+    gInterrupted = 0;
+    std::signal(SIGINT, interrupt);
+    std::signal(SIGTERM, interrupt);
+    run.passNames = passes;
     run.frameLimit = frameCount(options);
     run.scriptedResize = options.resizeTo;
     run.benchmark = options.benchmark;
@@ -28,7 +47,7 @@ bool beginFrame(RunControl& run, Target& target, uint32_t frame) {
         requestTargetSize(target, *run.scriptedResize);
         run.scriptedResize.reset();
     }
-    bool closing = pollTarget(target);
+    bool closing = pollTarget(target) || gInterrupted != 0;
     return closing || (run.frameLimit != 0 && frame + 1 >= run.frameLimit);
 }
 
@@ -38,10 +57,13 @@ void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot) {
 
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame) {
     if (run.timed) beginGpuTimer(run.gpuTimer, cmd, slot, frame);
+    if (!run.passNames.empty()) beginLabel(cmd, run.passNames[0]);
 }
 
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
     if (run.timed) markGpuPass(run.gpuTimer, cmd, slot, pass);
+    if (pass < run.passNames.size()) endLabel(cmd);
+    if (pass + 1 < run.passNames.size()) beginLabel(cmd, run.passNames[pass + 1]);
 }
 
 void screenshotLastFrame(const RunControl& run, const Device& device, const Target& target,

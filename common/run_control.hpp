@@ -31,6 +31,7 @@ struct RunControl {
     FrameStats stats;
     std::chrono::steady_clock::time_point frameStart;
     double lastCpuMs = 0.0;  // the last frame's CPU time (the GUI shows it)
+    std::vector<std::string> passNames;  // the benchmark rows, also each pass's debug label
 };
 
 // `passes` names the passes whose GPU time --benchmark reports, in recording order.
@@ -38,12 +39,14 @@ RunControl createRunControl(const Options& options, const Device& device, std::v
 void destroyRunControl(const Device& device, RunControl& run);
 
 // Starts frame `frame`: the scripted resize when it is due, the window's events. Returns true
-// when this is the last frame (--frames reached, or the window asked to close).
+// when this is the last frame (--frames reached, the window asked to close, or Ctrl+C / SIGTERM).
 bool beginFrame(RunControl& run, Target& target, uint32_t frame);
 // After the fence of frame-in-flight `slot`: the GPU times of the frame it last ran (--benchmark,
 // --gui); run.gpuTimer.latest holds them.
 void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot);
-// While recording (--benchmark, --gui): the frame's first timestamp, and one after pass `pass`.
+// While recording: the frame's first timestamp and one after pass `pass` (--benchmark, --gui);
+// and each pass's debug label (common/debug_names.hpp), named like its benchmark row: the first
+// begins at timeFrameStart, each ends at its timePassEnd, where the next begins.
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame);
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass);
 // After the last frame's submission, before it is presented: the --screenshot of that image.
