@@ -20,6 +20,7 @@
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/run_control.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/target.hpp"
 #include "mesh.hpp"
 #include "pipeline.hpp"
@@ -210,10 +211,22 @@ bool recreateTarget(Chapter& c) {
 }
 //< resize
 
+//> reload
+// Live reload: a shader was edited and compiles (common/shader_compiler.hpp). Between two frames,
+// once the GPU is done with every frame in flight, the pipeline is made again from the new code.
+void reloadShaders(Chapter& c) {
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
+    destroyPipeline(c.device, c.pipeline);
+    c.pipeline =
+        createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
+}
+//< reload
+
 //> frame-loop
 void frameLoop(Chapter& c, const common::Options& options) {
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
+        if (common::shaderSourcesChanged()) reloadShaders(c);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
 

@@ -8,20 +8,23 @@
 #include "common/check.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
+#include "common/debug_names.hpp"
+#include "shader_compiler.hpp"
 
 //> shader-module
-// The book compiles GLSL when the program starts; we compile it when the program is built
-// (glslangValidator, cmake/VulkanBook.cmake), so a shader error is a build error, and load the
-// SPIR-V from <executable's directory>/shaders/<name>.spv.
+// The SPIR-V comes from the book's ShaderCompiler (shader_compiler.cpp): compiled now when the
+// GLSL is newer than what the build compiled (glslangValidator, cmake/VulkanBook.cmake, so a
+// shader error is still a build error), else the build's <executable's directory>/shaders/<name>.spv.
 VkShaderModule createShaderModule(const common::Device& device, std::string_view name) {
-    std::vector<char> code = common::readSpirv(name);
+    std::vector<uint32_t> code = compileShaderIfChanged(name);
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
-        .codeSize = code.size(),                                  // in bytes, a multiple of 4
-        .pCode = reinterpret_cast<const uint32_t*>(code.data()),  // vector storage is suitably aligned
+        .codeSize = code.size() * sizeof(uint32_t),  // in bytes
+        .pCode = code.data(),
     };
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
+    common::nameObject(device.handle, module, std::string(name));  // what a debugger calls it
     return module;
 }
 //< shader-module

@@ -372,6 +372,12 @@ ShaderCompilation compileShader(const ShaderSource& source) {
     return runShaderc(source, false);
 }
 
+std::vector<fs::path> shaderFiles(const ShaderSource& source) {
+    ShaderCompilation preprocessed = runShaderc(source, true);
+    if (!preprocessed.error.empty()) throw InputError(firstLine(preprocessed.error));
+    return preprocessed.files;
+}
+
 std::vector<uint32_t> shaderCode(std::string_view name) {
     if (auto known = gState.shaders.find(name); known != gState.shaders.end() && !known->second.spirv.empty())
         return known->second.spirv;

@@ -53,6 +53,10 @@ struct ShaderCompilation {
 };
 ShaderCompilation compileShader(const ShaderSource& source);
 
+// The source and every file it includes (shaderc's preprocessor follows the #includes); throws
+// InputError when the preprocessor fails.
+std::vector<std::filesystem::path> shaderFiles(const ShaderSource& source);
+
 // The SPIR-V for a shader name: compiled from its source when the source or a file it includes is
 // newer than the build's .spv (the book's rule), else the build's .spv. A compile error, or a
 // compiled shader whose interface no longer fits the pipeline the code makes for it, throws
