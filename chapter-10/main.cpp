@@ -23,6 +23,7 @@
 #include "common/pipeline.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/target.hpp"
 #include "geometry_pass.hpp"
 #include "lighting_pass.hpp"
@@ -101,6 +102,33 @@ struct Chapter {
 };
 //< chapter-state
 
+//> passes
+// The two passes: made at start-up, and again when an edited shader is reloaded (reloadShaders),
+// so that both pipelines are rebuilt from the new code. The lighting pass's command buffers are
+// recorded once here, the geometry pass's every frame.
+void createPasses(Chapter& c, uint32_t framesInFlight) {
+    c.geometryPass =
+        createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
+    c.lightingPass = createLightingPass(c.device, c.pipelineCache.handle, c.target, c.geometryPass.gbuffer);
+    recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
+    setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
+                                                           c.scene.camera.near, c.scene.camera.far));
+}
+
+void destroyPasses(Chapter& c) {
+    destroyLightingPass(c.device, c.lightingPass);
+    destroyGeometryPass(c.device, c.geometryPass);
+}
+
+// Live reload: a shader was edited and compiled (common/shader_compiler.hpp). Between two frames,
+// once the GPU is done with every frame in flight, the passes are made again with the new code.
+void reloadShaders(Chapter& c, const common::Options& options) {
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
+    destroyPasses(c);
+    createPasses(c, options.framesInFlight);
+}
+//< passes
+
 //> setup
 void setUp(Chapter& c, const common::Options& options) {
     // The scene is read before any Vulkan object exists: a bad file fails fast with exit code 2.
@@ -121,15 +149,9 @@ void setUp(Chapter& c, const common::Options& options) {
                 c.gpuScene.textures.size(), c.gpuScene.materials.size());
 
     c.pipelineCache = common::loadPipelineCache(c.device, "chapter-10");
-    c.geometryPass = createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
-                                        options.framesInFlight);
-    c.lightingPass = createLightingPass(c.device, c.pipelineCache.handle, c.target, c.geometryPass.gbuffer);
     c.lightingView = {int(options.view), c.scene.camera.near, c.scene.camera.far};
-    recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
-
+    createPasses(c, options.framesInFlight);
     c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
-    setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
-                                                           c.scene.camera.near, c.scene.camera.far));
     c.run = common::createRunControl(options, c.device, {"geometry", "lighting"});
     c.imageInFlight.assign(c.target.images.size(), VK_NULL_HANDLE);
 }
@@ -157,6 +179,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
+        if (common::shaderSourcesChanged()) reloadShaders(c, options);
         uint32_t slot = frame % options.framesInFlight;
         Frame& inFlight = c.frames[slot];
         common::FrameSync& sync = inFlight.sync;
@@ -248,8 +271,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
 void tearDown(Chapter& c) {
     common::destroyRunControl(c.device, c.run);
     common::savePipelineCache(c.device, c.pipelineCache);
-    destroyLightingPass(c.device, c.lightingPass);
-    destroyGeometryPass(c.device, c.geometryPass);
+    destroyPasses(c);
     common::destroyPipelineCache(c.device, c.pipelineCache);
     common::destroyGpuScene(c.device, c.gpuScene);
     destroyFrames(c.device, c.frames);

@@ -29,6 +29,7 @@
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/target.hpp"
 #include "light_pass.hpp"
 #include "scene_pass.hpp"
@@ -81,6 +82,36 @@ struct Chapter {
 };
 //< chapter-state
 
+//> passes
+// The passes, in the order a frame records them: made at start-up, and again when an edited
+// shader is reloaded (reloadShaders), so that every pipeline is rebuilt from the new code.
+void createPasses(Chapter& c, uint32_t framesInFlight) {
+    c.scenePass =
+        createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
+    c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer);
+    c.postPass =
+        common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
+    if (c.gui.enabled)
+        c.guiPass =
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, framesInFlight);
+}
+
+void destroyPasses(Chapter& c) {
+    if (c.gui.enabled) common::destroyGuiPass(c.device, c.guiPass);
+    common::destroyPostPass(c.device, c.postPass);
+    destroyLightPass(c.device, c.lightPass);
+    destroyScenePass(c.device, c.scenePass);
+}
+
+// Live reload: a shader was edited and compiled (common/shader_compiler.hpp). Between two frames,
+// once the GPU is done with every frame in flight, the passes are made again with the new code.
+void reloadShaders(Chapter& c, const common::Options& options) {
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
+    destroyPasses(c);
+    createPasses(c, options.framesInFlight);
+}
+//< passes
+
 //> setup
 void setUp(Chapter& c, const common::Options& options) {
     common::ModelCache models;
@@ -104,15 +135,8 @@ void setUp(Chapter& c, const common::Options& options) {
                 c.gpuScene.textures.size(), c.gpuScene.materials.size());
 
     c.pipelineCache = common::loadPipelineCache(c.device, "chapter-14");
-    c.scenePass = createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
-                                  options.framesInFlight);
-    c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer);
-    c.postPass =
-        common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
     c.gui = common::createGui(options, c.target);
-    if (c.gui.enabled)
-        c.guiPass = common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat,
-                                          options.framesInFlight);
+    createPasses(c, options.framesInFlight);
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -180,6 +204,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
+        if (common::shaderSourcesChanged()) reloadShaders(c, options);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
         ImDrawData* overlay = common::drawGui(
@@ -259,12 +284,9 @@ void report(Chapter& c, const common::Options& options) {
 //> teardown
 void tearDown(Chapter& c) {
     common::destroyRunControl(c.device, c.run);
-    if (c.gui.enabled) common::destroyGuiPass(c.device, c.guiPass);
+    destroyPasses(c);
     common::destroyGui(c.gui);
     common::savePipelineCache(c.device, c.pipelineCache);
-    common::destroyPostPass(c.device, c.postPass);
-    destroyLightPass(c.device, c.lightPass);
-    destroyScenePass(c.device, c.scenePass);
     common::destroyPipelineCache(c.device, c.pipelineCache);
     common::destroyGpuScene(c.device, c.gpuScene);
     common::destroyFrameSync(c.device, c.frames);

@@ -31,6 +31,7 @@
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/target.hpp"
 #include "compute_light_pass.hpp"
 #include "forward_shading.hpp"
@@ -359,6 +360,20 @@ void run(const common::Options& options) {
         std::printf("chapter-15-lab: switched to the %s G-buffer, %s light pass\n", layout->layout.name,
                     lightKind == LightPassKind::Compute ? "compute" : "fragment");
     };
+
+    // Live reload (common/shader_compiler.hpp): an edited shader compiled; every pass is made again
+    // with the new code, the GUI pass too.
+    auto reloadShaders = [&] {
+        VK_CHECK(vkDeviceWaitIdle(device.handle));
+        if (gui.enabled) common::destroyGuiPass(device, guiPass);
+        common::destroyPostPass(device, postPass);
+        destroyPasses();
+        createPasses();
+        postPass = common::createPostPass(device, pipelineCache.handle, target.format, light.pass.output);
+        if (gui.enabled)
+            guiPass = common::createGuiPass(device, pipelineCache.handle, target.encodedFormat,
+                                            options.framesInFlight);
+    };
     //< switch-renderer
 
     //> frame-loop
@@ -367,6 +382,7 @@ void run(const common::Options& options) {
     float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(run, target, frame);
+        if (common::shaderSourcesChanged()) reloadShaders();
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 

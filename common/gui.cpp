@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/check.hpp"
+#include "common/shader_compiler.hpp"
 
 namespace common {
 namespace {
@@ -119,6 +120,26 @@ void beginGui(Gui& gui, const Target& target, uint32_t frame) {
 
 }  // namespace
 
+namespace {
+
+// A shader that failed to reload: its compiler message, in red, until the file is fixed.
+void shaderErrorWindow() {
+    const std::string& error = shaderReloadError();
+    if (error.empty()) return;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + 10.0f, viewport->WorkPos.y + viewport->WorkSize.y - 10.0f),
+                            ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x - 20.0f, 0.0f), ImGuiCond_Always);
+    ImGui::Begin("Shader error (the running shaders are unchanged)", nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
+    ImGui::End();
+}
+
+}  // namespace
+
 ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::function<void()>& widgets) {
     if (!gui.enabled) return nullptr;
     if (frame == 0) {  // the windows' first, invisible frame: they measure themselves
@@ -128,6 +149,7 @@ ImDrawData* drawGui(Gui& gui, const Target& target, uint32_t frame, const std::f
     }
     beginGui(gui, target, frame);
     widgets();
+    shaderErrorWindow();
     ImGui::Render();
     return gui.visible ? ImGui::GetDrawData() : nullptr;
 }
