@@ -111,6 +111,7 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
     };
     VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
     common::timeFrameStart(run, cmd, slot, frame);  // --benchmark only
+    common::beginPass(run, cmd, 0);                 // a debugger's label: "triangle"
 
     // A linear colour, as the shader's; encoded here where the target's format does not.
     VkClearValue clear{.color = {{0.5f, 0.7f, 0.9f, 1.0f}}};
@@ -149,7 +150,7 @@ void recordCommandBuffer(VkCommandBuffer cmd, VkRenderPass renderPass, VkFramebu
     }
 
     vkCmdEndRenderPass(cmd);
-    common::timePassEnd(run, cmd, slot, 0);
+    common::endPass(run, cmd, slot, 0);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
 //< record

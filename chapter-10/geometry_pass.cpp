@@ -19,10 +19,10 @@ GBuffer createGBuffer(const common::Device& device, VkExtent2D extent, VkFormat 
     return {
         .albedo = common::createImage(device, extent, kAlbedoFormat,
                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                      VK_IMAGE_ASPECT_COLOR_BIT),
+                                      VK_IMAGE_ASPECT_COLOR_BIT, "G-buffer albedo"),
         .depth = common::createImage(device, extent, depthFormat,
                                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     VK_IMAGE_ASPECT_DEPTH_BIT),
+                                     VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"),
     };
 }
 
@@ -125,13 +125,13 @@ VkFramebuffer createGeometryFramebuffer(const common::Device& device, VkRenderPa
 void createDescriptors(const common::Device& device, GeometryPass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
     pass.matrixLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)}, "geometry: matrix");
     pass.textureLayout = common::createDescriptorSetLayout(
         device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "geometry: texture");
     pass.materialLayout = common::createDescriptorSetLayout(
         device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)}, "geometry: material");
 
     //> descriptor-pool
     // Sized from what the scene holds: a set per material, a view matrix per frame in flight.
@@ -146,7 +146,7 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     VkMemoryPropertyFlags hostVisible =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     pass.projection =
-        common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+        common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: projection");
     pass.projectionSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
     common::writeBufferDescriptor(device, pass.projectionSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                   pass.projection.handle, sizeof(glm::mat4));
@@ -155,7 +155,7 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     pass.views.resize(framesInFlight);
     for (ViewFrame& view : pass.views) {
         view.buffer =
-            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: view");
         view.set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
         common::writeBufferDescriptor(device, view.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       view.buffer.handle, sizeof(glm::mat4));
@@ -176,7 +176,7 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     VkDeviceSize alignment = device.properties.limits.minUniformBufferOffsetAlignment;
     pass.materialStride = (sizeof(GeometryMaterial) + alignment - 1) / alignment * alignment;
     pass.materials = common::createBuffer(device, pass.materialStride * scene.materials.size(),
-                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: materials");
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const common::GpuMaterial& m = scene.materials[i];
         GeometryMaterial material{m.diffuse, m.alphaTested ? m.alphaCutoff : 0.0f, {}};

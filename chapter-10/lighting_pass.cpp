@@ -2,6 +2,7 @@
 #include "lighting_pass.hpp"
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
@@ -77,7 +78,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     pass.attachmentsLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "lighting: G-buffer attachments");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
@@ -156,6 +157,8 @@ void recordLightingPass(const common::Device& device, LightingPass& pass, const 
         VkCommandBuffer cmd = pass.commandBuffers[i];
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
+        // Recorded once, so labelled here rather than by the frame loop's common::beginPass.
+        common::beginLabel(cmd, "lighting");
         VkRenderPassBeginInfo begin{
             .sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
             .renderPass = pass.renderPass,
@@ -175,6 +178,7 @@ void recordLightingPass(const common::Device& device, LightingPass& pass, const 
                            &view);
         vkCmdDraw(cmd, 3, 1, 0, 0);  // three vertices, no vertex buffer
         vkCmdEndRenderPass(cmd);
+        common::endLabel(cmd);
         VK_CHECK(vkEndCommandBuffer(cmd));
     }
 }

@@ -218,8 +218,9 @@ void frameLoop(Chapter& c, const common::Options& options) {
                                            .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
         VK_CHECK(vkBeginCommandBuffer(inFlight.geometryCommands, &beginInfo));
         common::timeFrameStart(c.run, inFlight.geometryCommands, slot, frame);
+        common::beginPass(c.run, inFlight.geometryCommands, 0);
         recordGeometryPass(inFlight.geometryCommands, c.geometryPass, c.gpuScene, slot);
-        common::timePassEnd(c.run, inFlight.geometryCommands, slot, 0);
+        common::endPass(c.run, inFlight.geometryCommands, slot, 0);
         VK_CHECK(vkEndCommandBuffer(inFlight.geometryCommands));
         VkSubmitInfo geometrySubmit{
             .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,

@@ -11,7 +11,7 @@ namespace {
 common::Image createOutput(const common::Device& device, VkExtent2D extent) {
     return common::createImage(device, extent, kLightOutputFormat,
                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                               VK_IMAGE_ASPECT_COLOR_BIT);
+                               VK_IMAGE_ASPECT_COLOR_BIT, "light output");
 }
 
 // The G-buffer, as light.frag samples it: binding 0 albedo, binding 1 depth.
@@ -31,7 +31,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     pass.attachmentsLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "light: G-buffer attachments");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);

@@ -17,10 +17,10 @@ GBuffer createGBuffer(const common::Device& device, VkExtent2D extent, VkFormat 
     return {
         .albedo = common::createImage(device, extent, kAlbedoFormat,
                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                      VK_IMAGE_ASPECT_COLOR_BIT),
+                                      VK_IMAGE_ASPECT_COLOR_BIT, "G-buffer albedo"),
         .depth = common::createImage(device, extent, depthFormat,
                                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     VK_IMAGE_ASPECT_DEPTH_BIT),
+                                     VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"),
     };
 }
 //< create-gbuffer
@@ -34,10 +34,10 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: materials");
     pass.textureLayout = common::createDescriptorSetLayout(
         device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: texture");
     uint32_t materials = uint32_t(scene.materials.size());
     pass.descriptorPool =
         common::createDescriptorPool(device, framesInFlight + 1 + materials,
@@ -54,7 +54,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials =
         common::uploadStaged(device, batch, materialData.data(), materialData.size() * sizeof(SceneMaterial),
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
     common::endStaging(device, batch);
     pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,

@@ -37,7 +37,7 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
     ComputeLightPass pass;
     pass.tiled = tileLists != VK_NULL_HANDLE;
     pass.outputLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)}, "compute light: output");
     pass.descriptorPool = common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}});
     pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
     writeComputeOutput(device, pass, lightPass);

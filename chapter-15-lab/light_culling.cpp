@@ -99,13 +99,13 @@ void createTileBuffers(const common::Device& device, LightCullingPass& c, VkExte
     c.capacity = uint32_t(std::clamp<uint64_t>(wanted, 1, limit));
     VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     c.tileBounds = common::createBuffer(device, tiles * 2 * sizeof(glm::vec4), storage,
-                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile bounds");
     c.tileCounts =
-        common::createBuffer(device, tiles * sizeof(uint32_t), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        common::createBuffer(device, tiles * sizeof(uint32_t), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile counts");
     c.tileLists = common::createBuffer(device, tiles * sizeof(glm::uvec2), storage,
-                                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile lists");
     c.indices = common::createBuffer(device, uint64_t(c.capacity) * sizeof(uint32_t), storage,
-                                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: light indices");
     for (LightCullingFrame& frame : c.frames) {
         const common::Buffer* buffers[] = {&c.tileBounds, &c.tileCounts, &c.tileLists,
                                            &c.indices,    &c.stats,      &c.large};
@@ -171,7 +171,7 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                  common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                  common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)});
+                 common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)}, "cull: lists");
     c.descriptorPool =
         common::createDescriptorPool(device, framesInFlight,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
@@ -180,16 +180,16 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     c.stats = common::createBuffer(device, 4 * sizeof(uint32_t),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   hostVisible);
+                                   hostVisible, "cull: stats");
     // A VkDispatchIndirectCommand (16 bytes with the std430 padding), then one index per light.
     c.large = common::createBuffer(device, 16 + uint64_t(std::max(boundedLights, 1u)) * sizeof(uint32_t),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                   VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: large lights");
     c.frames.resize(framesInFlight);
     for (LightCullingFrame& frame : c.frames) {
         frame.view =
-            common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+            common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "cull: view");
         frame.set = common::allocateDescriptorSet(device, c.descriptorPool, c.setLayout);
         common::writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       frame.view.handle, sizeof(CullView));

@@ -443,17 +443,21 @@ void run(const common::Options& options) {
         common::timeFrameStart(run, sync.commandBuffer, slot, frame);
         uint32_t pass = 0;
         if (forward) {  // --shading forward: no G-buffer
+            common::beginPass(run, sync.commandBuffer, pass);
             recordForwardPass(sync.commandBuffer, forwardPass, scenePass, light.pass, gpuScene, slot,
                               camera.position);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            common::endPass(run, sync.commandBuffer, slot, pass++);
         } else {
+            common::beginPass(run, sync.commandBuffer, pass);
             recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            common::endPass(run, sync.commandBuffer, slot, pass++);
             VkDescriptorSet tileLists = tiled ? culling.frames[slot].set : VK_NULL_HANDLE;
             if (tiled) {  // this frame's tile lists, from this frame's G-buffer
+                common::beginPass(run, sync.commandBuffer, pass);
                 recordLightCulling(sync.commandBuffer, culling, light.pass, slot, lightView);
-                common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+                common::endPass(run, sync.commandBuffer, slot, pass++);
             }
+            common::beginPass(run, sync.commandBuffer, pass);
             if (light.compute.pipeline)
                 recordComputeLightPass(sync.commandBuffer, light.compute, light.pass, slot, lightView,
                                        tileLists);
@@ -461,7 +465,7 @@ void run(const common::Options& options) {
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView, {&tileLists, 1});
             else
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView);
-            common::timePassEnd(run, sync.commandBuffer, slot, pass++);
+            common::endPass(run, sync.commandBuffer, slot, pass++);
         }
         // --acquire late: the off-screen passes go to the GPU now, with nothing to wait for; the
         // image is acquired only for the passes that write it, recorded into a second command
@@ -483,11 +487,13 @@ void run(const common::Options& options) {
             presentCommands = lateCommands[slot];
             VK_CHECK(vkBeginCommandBuffer(presentCommands, &beginInfo));
         }
+        common::beginPass(run, presentCommands, pass);
         common::recordPostPass(presentCommands, postPass, target, imageIndex, fxaa, gui.enabled);
-        common::timePassEnd(run, presentCommands, slot, pass++);
+        common::endPass(run, presentCommands, slot, pass++);
         if (gui.enabled) {
+            common::beginPass(run, presentCommands, pass);
             common::recordGuiPass(presentCommands, guiPass, slot, target, imageIndex, overlay);
-            common::timePassEnd(run, presentCommands, slot, pass++);
+            common::endPass(run, presentCommands, slot, pass++);
         }
         VK_CHECK(vkEndCommandBuffer(presentCommands));
 

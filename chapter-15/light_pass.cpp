@@ -19,7 +19,7 @@ common::Image createOutput(const common::Device& device, VkExtent2D extent, VkIm
     // Sampled by the post pass; TRANSFER_SRC: --check-output copies it back to the CPU.
     return common::createImage(device, extent, kLightOutputFormat,
                                written | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                               VK_IMAGE_ASPECT_COLOR_BIT);
+                               VK_IMAGE_ASPECT_COLOR_BIT, "light output");
 }
 
 //> attachments-set
@@ -55,9 +55,9 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         .pBindings = attachmentBindings.data()};
     VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &attachmentsInfo, nullptr, &pass.attachmentsLayout));
     pass.lightsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, stage)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, stage)}, "light: lights");
     pass.sceneLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stage)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stage)}, "light: scene info");
     pass.descriptorPool = common::createDescriptorPool(
         device, 2 + 2 * framesInFlight,
         {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(attachmentBindings.size())},
@@ -80,9 +80,9 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     pass.frames.resize(framesInFlight);
     for (LightFrame& frame : pass.frames) {
         frame.lights = common::createBuffer(device, std::max(lightCapacity, 1u) * sizeof(ShaderLight),
-                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hostVisible);
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hostVisible, "lights");
         frame.scene = common::createBuffer(device, sizeof(ShaderSceneInfo),
-                                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible);
+                                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "scene info");
         frame.lightsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.lightsLayout);
         frame.sceneSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.sceneLayout);
         common::writeBufferDescriptor(device, frame.lightsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,

@@ -302,15 +302,19 @@ void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t fr
                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
     common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
+    common::beginPass(c.run, sync.commandBuffer, 0);
     recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
-    common::timePassEnd(c.run, sync.commandBuffer, slot, 0);
+    common::endPass(c.run, sync.commandBuffer, slot, 0);
+    common::beginPass(c.run, sync.commandBuffer, 1);
     recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView);
-    common::timePassEnd(c.run, sync.commandBuffer, slot, 1);
+    common::endPass(c.run, sync.commandBuffer, slot, 1);
+    common::beginPass(c.run, sync.commandBuffer, 2);
     common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
-    common::timePassEnd(c.run, sync.commandBuffer, slot, 2);
+    common::endPass(c.run, sync.commandBuffer, slot, 2);
     if (c.gui.enabled) {
+        common::beginPass(c.run, sync.commandBuffer, 3);
         common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
-        common::timePassEnd(c.run, sync.commandBuffer, slot, 3);
+        common::endPass(c.run, sync.commandBuffer, slot, 3);
     }
     VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 }

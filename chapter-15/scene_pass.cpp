@@ -19,13 +19,13 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: materials");
     pass.texturesLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: textures");
 
     //> material-sets
     // Sized from the scene: a camera set per frame in flight, the materials buffer, and one set
@@ -67,7 +67,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
                                           shaderMaterials.size() * sizeof(ShaderMaterial),
-                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
     common::endStaging(device, batch);
     pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
 
@@ -28,6 +29,7 @@ GpuTimer createGpuTimer(const Device& device, uint32_t framesInFlight, std::vect
         .queryCount = timer.queriesPerFrame * framesInFlight,
     };
     VK_CHECK(vkCreateQueryPool(device.handle, &info, nullptr, &timer.pool));
+    nameObject(device.handle, timer.pool, "pass timestamps");
     return timer;
 }
 

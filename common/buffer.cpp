@@ -5,6 +5,7 @@
 
 #include "common/check.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 
@@ -16,7 +17,7 @@ uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropert
 }
 
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
-                    VkMemoryPropertyFlags memoryFlags) {
+                    VkMemoryPropertyFlags memoryFlags, const std::string& name) {
     Buffer buffer;
     buffer.size = size;
     VkBufferCreateInfo info{
@@ -26,6 +27,7 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
         .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
     };
     VK_CHECK(vkCreateBuffer(device.handle, &info, nullptr, &buffer.handle));
+    nameObject(device.handle, buffer.handle, name);
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device.handle, buffer.handle, &requirements);
@@ -37,6 +39,7 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
         .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, memoryFlags),
     };
     VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &buffer.memory));
+    nameObject(device.handle, buffer.memory, name);
     VK_CHECK(vkBindBufferMemory(device.handle, buffer.handle, buffer.memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device.handle, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped));
@@ -54,16 +57,17 @@ StagingBatch beginStaging(const Device& device) {
 }
 
 Buffer uploadStaged(const Device& device, StagingBatch& batch, const void* data, VkDeviceSize size,
-                    VkBufferUsageFlags usage) {
+                    VkBufferUsageFlags usage, const std::string& name) {
     // HOST_COHERENT: the memcpy is visible to the device without vkFlushMappedMemoryRanges, and
     // vkQueueSubmit makes host writes made before it available to the copy.
     Buffer staging = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                  "staging: " + name);
     std::memcpy(staging.mapped, data, size);
     batch.stagingBuffers.push_back(staging);
 
     Buffer target = createBuffer(device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     VkBufferCopy region{.srcOffset = 0, .dstOffset = 0, .size = size};
     vkCmdCopyBuffer(batch.commandBuffer, staging.handle, target.handle, 1, &region);
     return target;

@@ -5,6 +5,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <vector>
 
 #include "common/device.hpp"
@@ -21,8 +22,9 @@ struct Buffer {
 // The first memory type allowed by `typeBits` that has all of `required`; throws if none.
 uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropertyFlags required);
 
+// `name`: what graphics debuggers and validation messages call it (common/debug_names.hpp).
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
-                    VkMemoryPropertyFlags memoryFlags);
+                    VkMemoryPropertyFlags memoryFlags, const std::string& name);
 void destroyBuffer(const Device& device, Buffer& buffer);
 
 // A batch of uploads to device-local buffers through host-visible staging buffers.
@@ -35,7 +37,7 @@ StagingBatch beginStaging(const Device& device);
 // Copies `size` bytes into a new staging buffer and records its copy into a new device-local
 // buffer of the given usage (TRANSFER_DST is added). The returned buffer is usable after endStaging.
 Buffer uploadStaged(const Device& device, StagingBatch& batch, const void* data, VkDeviceSize size,
-                    VkBufferUsageFlags usage);
+                    VkBufferUsageFlags usage, const std::string& name);
 // Submits the batch, waits for it, and frees the staging buffers.
 void endStaging(const Device& device, StagingBatch& batch);
 

@@ -63,16 +63,18 @@ bool pressedOnce(GLFWwindow* window, KeyPress& press) {
 
 VkDescriptorSetLayout createCameraSetLayout(const Device& device) {
     return createDescriptorSetLayout(
-        device, {binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)});
+        device, {binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)}, "camera");
 }
 
 std::vector<CameraFrame> createCameraFrames(const Device& device, VkDescriptorPool pool,
                                             VkDescriptorSetLayout layout, uint32_t framesInFlight) {
     std::vector<CameraFrame> frames(framesInFlight);
-    for (CameraFrame& frame : frames) {
+    for (size_t i = 0; i < frames.size(); ++i) {
+        CameraFrame& frame = frames[i];
         frame.buffer =
             createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+                         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                         "camera, frame " + std::to_string(i));
         frame.set = allocateDescriptorSet(device, pool, layout);
         writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.buffer.handle,
                               sizeof(CameraUniform));

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 
@@ -26,7 +27,8 @@ VkFence createFence(const Device& device, bool signalled) {
 
 std::vector<FrameSync> createFrameSync(const Device& device, uint32_t framesInFlight) {
     std::vector<FrameSync> frames(framesInFlight);
-    for (FrameSync& frame : frames) {
+    for (size_t i = 0; i < frames.size(); ++i) {
+        FrameSync& frame = frames[i];
         VkCommandPoolCreateInfo poolInfo{
             .sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
             .flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT,
@@ -42,6 +44,11 @@ std::vector<FrameSync> createFrameSync(const Device& device, uint32_t framesInFl
         VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &frame.commandBuffer));
         frame.inFlight = createFence(device, true);
         frame.imageAvailable = createSemaphore(device);
+        std::string name = "frame " + std::to_string(i);
+        nameObject(device.handle, frame.commandPool, name + " commands");
+        nameObject(device.handle, frame.commandBuffer, name + " commands");
+        nameObject(device.handle, frame.inFlight, name + " in flight");
+        nameObject(device.handle, frame.imageAvailable, name + " image available");
     }
     return frames;
 }

@@ -2,6 +2,7 @@
 #include "common/descriptors.hpp"
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 
@@ -11,7 +12,7 @@ VkDescriptorSetLayoutBinding binding(uint32_t index, VkDescriptorType type, VkSh
 }
 
 VkDescriptorSetLayout createDescriptorSetLayout(
-    const Device& device, std::initializer_list<VkDescriptorSetLayoutBinding> bindings) {
+    const Device& device, std::initializer_list<VkDescriptorSetLayoutBinding> bindings, const std::string& name) {
     VkDescriptorSetLayoutCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
         .bindingCount = static_cast<uint32_t>(bindings.size()),
@@ -19,6 +20,7 @@ VkDescriptorSetLayout createDescriptorSetLayout(
     };
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &info, nullptr, &layout));
+    nameObject(device.handle, layout, name);
     return layout;
 }
 

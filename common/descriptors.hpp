@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <vector>
+#include <string>
 
 #include "common/device.hpp"
 
@@ -14,8 +15,10 @@ namespace common {
 // One binding of `count` descriptors of `type`, visible to `stages`.
 VkDescriptorSetLayoutBinding binding(uint32_t index, VkDescriptorType type, VkShaderStageFlags stages,
                                      uint32_t count = 1);
+// `name`: what graphics debuggers and validation messages call it (common/debug_names.hpp).
 VkDescriptorSetLayout createDescriptorSetLayout(const Device& device,
-                                                std::initializer_list<VkDescriptorSetLayoutBinding> bindings);
+                                                std::initializer_list<VkDescriptorSetLayoutBinding> bindings,
+                                                const std::string& name);
 // A pool for exactly `maxSets` sets holding the given descriptor counts (sized from what a scene
 // holds, never from fixed maxima). Zero-count types are left out.
 VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 namespace {
@@ -306,6 +307,8 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         .queueFamilyIndex = device.queueFamily,
     };
     VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &device.oneTimePool));
+    nameObject(device.handle, device.oneTimePool, "one-time commands");
+    nameObject(device.handle, device.queue, "graphics queue");
     return device;
 }
 

@@ -17,6 +17,7 @@
 #endif
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/shader_compiler.hpp"
 
 namespace common {
@@ -127,6 +128,7 @@ VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
     };
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
+    nameObject(device.handle, module, std::string(name));
     return module;
 }
 

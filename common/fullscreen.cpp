@@ -2,6 +2,7 @@
 #include "common/fullscreen.hpp"
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
 
@@ -23,6 +24,7 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
         .pPushConstantRanges = &range,
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &result.layout));
+    nameObject(device.handle, result.layout, fragment);
 
     VkPipelineRenderingCreateInfo rendering{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,

@@ -43,22 +43,22 @@ std::vector<const Image*> colorAttachments(const GBuffer& gbuffer) {
 }
 
 GBuffer createGBuffer(const Device& device, VkExtent2D extent, const GBufferFormats& formats) {
-    auto color = [&](VkFormat format) {
+    auto color = [&](VkFormat format, const char* name) {
         if (format == VK_FORMAT_UNDEFINED) return Image{};
         return createImage(device, extent, format,
                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                           VK_IMAGE_ASPECT_COLOR_BIT);
+                           VK_IMAGE_ASPECT_COLOR_BIT, std::string("G-buffer ") + name);
     };
     GBuffer gbuffer;
-    gbuffer.position = color(formats.position);
-    gbuffer.albedo = color(formats.albedo);
-    gbuffer.normal = color(formats.normal);
-    gbuffer.pbr = color(formats.pbr);
+    gbuffer.position = color(formats.position, "position");
+    gbuffer.albedo = color(formats.albedo, "albedo");
+    gbuffer.normal = color(formats.normal, "normal");
+    gbuffer.pbr = color(formats.pbr, "pbr");
     gbuffer.depth = createImage(device, extent, formats.depth,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                VK_IMAGE_ASPECT_DEPTH_BIT);
+                                VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth");
     return gbuffer;
 }
 

@@ -9,6 +9,7 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
@@ -84,14 +85,14 @@ void reserve(const common::Device& device, GuiPass& pass, GuiFrame& frame, const
         common::destroyBuffer(device, frame.vertices);
         frame.vertexCapacity = std::max(vertices, frame.vertexCapacity * 2);
         frame.vertices = common::createBuffer(device, frame.vertexCapacity * sizeof(ImDrawVert),
-                                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, hostVisible);
+                                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, hostVisible, "gui vertices");
         ++pass.growths;
     }
     if (indices > frame.indexCapacity) {
         common::destroyBuffer(device, frame.indices);
         frame.indexCapacity = std::max(indices, frame.indexCapacity * 2);
         frame.indices = common::createBuffer(device, frame.indexCapacity * sizeof(ImDrawIdx),
-                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, hostVisible);
+                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, hostVisible, "gui indices");
         ++pass.growths;
     }
 }
@@ -109,14 +110,14 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
     common::Pixels atlas{uint32_t(width), uint32_t(height),
                          std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4)};
     common::StagingBatch batch = common::beginStaging(device);
-    pass.fontAtlas = common::uploadTexture(device, batch, atlas, VK_FORMAT_R8G8B8A8_UNORM);
+    pass.fontAtlas = common::uploadTexture(device, batch, atlas, VK_FORMAT_R8G8B8A8_UNORM, "gui font");
     common::endStaging(device, batch);
     pass.sampler =
         common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     //< gui-font
     pass.setLayout = common::createDescriptorSetLayout(
         device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "gui font");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
     pass.fontSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout);
@@ -130,6 +131,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
                                           .pushConstantRangeCount = 1,
                                           .pPushConstantRanges = &push};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    nameObject(device.handle, pass.pipelineLayout, "gui");
     pass.pipeline = createGuiPipeline(device, cache, pass.pipelineLayout, format);
     pass.frames.resize(framesInFlight);
     return pass;

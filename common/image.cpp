@@ -3,6 +3,7 @@
 
 #include "common/buffer.hpp"
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 namespace common {
 
@@ -25,7 +26,8 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 }
 
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, uint32_t mipLevels, VkImageCreateFlags flags, const void* next) {
+                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels, VkImageCreateFlags flags,
+                  const void* next) {
     Image image;
     image.mipLevels = mipLevels;
     image.format = format;
@@ -46,6 +48,7 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
         .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
     };
     VK_CHECK(vkCreateImage(device.handle, &info, nullptr, &image.handle));
+    nameObject(device.handle, image.handle, name);
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
     VkMemoryAllocateInfo allocInfo{
@@ -55,8 +58,10 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
             findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
     };
     VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
+    nameObject(device.handle, image.memory, name);
     VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
     image.view = createImageView(device, image.handle, format, aspect, mipLevels);
+    nameObject(device.handle, image.view, name);
     return image;
 }
 

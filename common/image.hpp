@@ -23,8 +23,9 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 // A device-local 2D image, one layer, optimal tiling, with a view of `aspect` over all its mip levels.
 // `flags`: e.g. MUTABLE_FORMAT, for an image also viewed in another format of the same size;
 // `next`: what VkImageCreateInfo chains (the list of those formats).
+// `name`: what graphics debuggers and validation messages call it (common/debug_names.hpp).
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, uint32_t mipLevels = 1, VkImageCreateFlags flags = 0,
+                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels = 1, VkImageCreateFlags flags = 0,
                   const void* next = nullptr);
 void destroyImage(const Device& device, Image& image);
 

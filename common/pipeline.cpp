@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 
 namespace common {
@@ -83,6 +84,7 @@ PipelineCache loadPipelineCache(const Device& device, std::string_view name) {
         info.pInitialData = nullptr;
         VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));
     }
+    nameObject(device.handle, cache.handle, "pipeline cache " + std::string(name));
     return cache;
 }
 
@@ -209,6 +211,7 @@ VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
     };
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    nameObject(device.handle, pipeline, desc.name);
     return pipeline;
 }
 

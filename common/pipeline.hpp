@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string_view>
 #include <vector>
+#include <string>
 
 #include "common/device.hpp"
 
@@ -41,6 +42,7 @@ VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShade
 // sample, fill mode, no blending, and viewport + scissor set at record time (so a resize does
 // not need a new pipeline).
 struct GraphicsPipelineDesc {
+    std::string name;  // what graphics debuggers and validation messages call it
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     const VkPipelineVertexInputStateCreateInfo* vertexInput = nullptr;  // nullptr: no vertex input
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;

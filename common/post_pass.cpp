@@ -5,6 +5,7 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/formats.hpp"
 
@@ -13,7 +14,7 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
                         const Image& lightOutput) {
     PostPass pass;
     pass.inputLayout = createDescriptorSetLayout(
-        device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)});
+        device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "post input");
     pass.descriptorPool = createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
     pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
 
@@ -33,6 +34,7 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
         .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
     };
     VK_CHECK(vkCreateSampler(device.handle, &samplerInfo, nullptr, &pass.sampler));
+    nameObject(device.handle, pass.sampler, "post: input sampler");
     resizePostPass(device, pass, lightOutput);
 
     //> post-specialization

@@ -57,13 +57,19 @@ void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot) {
 
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame) {
     if (run.timed) beginGpuTimer(run.gpuTimer, cmd, slot, frame);
-    if (!run.passNames.empty()) beginLabel(cmd, run.passNames[0]);
 }
 
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
     if (run.timed) markGpuPass(run.gpuTimer, cmd, slot, pass);
-    if (pass < run.passNames.size()) endLabel(cmd);
-    if (pass + 1 < run.passNames.size()) beginLabel(cmd, run.passNames[pass + 1]);
+}
+
+void beginPass(const RunControl& run, VkCommandBuffer cmd, uint32_t pass) {
+    beginLabel(cmd, run.passNames.at(pass));
+}
+
+void endPass(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass) {
+    endLabel(cmd);
+    timePassEnd(run, cmd, slot, pass);
 }
 
 void screenshotLastFrame(const RunControl& run, const Device& device, const Target& target,

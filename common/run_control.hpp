@@ -44,11 +44,13 @@ bool beginFrame(RunControl& run, Target& target, uint32_t frame);
 // After the fence of frame-in-flight `slot`: the GPU times of the frame it last ran (--benchmark,
 // --gui); run.gpuTimer.latest holds them.
 void collectGpuTimes(RunControl& run, const Device& device, uint32_t slot);
-// While recording: the frame's first timestamp and one after pass `pass` (--benchmark, --gui);
-// and each pass's debug label (common/debug_names.hpp), named like its benchmark row: the first
-// begins at timeFrameStart, each ends at its timePassEnd, where the next begins.
+// While recording (--benchmark, --gui): the frame's first timestamp, and one after pass `pass`.
 void timeFrameStart(RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t frame);
 void timePassEnd(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass);
+// Around the commands of pass `pass`: a debug label named like its benchmark row, which graphics
+// debuggers show as the pass (common/debug_names.hpp); endPass also records timePassEnd.
+void beginPass(const RunControl& run, VkCommandBuffer cmd, uint32_t pass);
+void endPass(const RunControl& run, VkCommandBuffer cmd, uint32_t slot, uint32_t pass);
 // After the last frame's submission, before it is presented: the --screenshot of that image.
 void screenshotLastFrame(const RunControl& run, const Device& device, const Target& target,
                          uint32_t imageIndex);

@@ -74,7 +74,7 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
     VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * bytesPerTexel;
     Buffer readback =
         createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "readback");
 
     VkCommandBuffer cmd = beginOneTimeCommands(device);
     // Whatever wrote the image earlier on this queue (a render pass's colour or depth output, a

@@ -44,6 +44,10 @@ struct State {
     std::map<std::string, Entry, std::less<>> shaders;
     std::chrono::steady_clock::time_point lastPoll{};
     std::string reloadError;
+    // The reload just made, reported at the next frame: its shaders, the edit's time, the compile's.
+    std::string reloaded;
+    fs::file_time_type editTime{};
+    double compileMs = 0.0;
 };
 State gState;
 
@@ -426,6 +430,15 @@ void watchShader(std::string_view name) {
 
 bool shaderSourcesChanged() {
     if (gState.sourceDir.empty()) return false;
+    // The last reload's report, now that a frame has been recorded and submitted with it: how long
+    // from the edit (the newest changed file's modification time) to that frame.
+    if (!gState.reloaded.empty()) {
+        auto latency = std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
+        std::printf("shaders: reloaded %s (compiled in %.0f ms; first frame with it %.0f ms after the edit)\n",
+                    gState.reloaded.c_str(), gState.compileMs, latency.count());
+        std::fflush(stdout);
+        gState.reloaded.clear();
+    }
     auto now = std::chrono::steady_clock::now();
     if (now - gState.lastPoll < std::chrono::milliseconds(250)) return false;
     gState.lastPoll = now;
@@ -433,17 +446,15 @@ bool shaderSourcesChanged() {
     // Which shaders' files changed since they were read. A file that cannot be read just now (an
     // editor replacing it) is looked at again on the next poll.
     std::vector<std::pair<const std::string*, Entry*>> changed;
+    fs::file_time_type editTime = fs::file_time_type::min();
     for (auto& [name, entry] : gState.shaders) {
-        bool edited = false;
+        bool edited = false, readable = true;
         for (const auto& [file, time] : entry.files) {
             std::optional<fs::file_time_type> current = modified(file);
-            if (!current) {
-                edited = false;
-                break;
-            }
-            edited = edited || *current != time;
+            if (!current) readable = false;
+            else if (*current != time) edited = true, editTime = std::max(editTime, *current);
         }
-        if (edited) changed.emplace_back(&name, &entry);
+        if (edited && readable) changed.emplace_back(&name, &entry);
     }
     if (changed.empty()) return false;
 
@@ -462,7 +473,10 @@ bool shaderSourcesChanged() {
     gState.reloadError.clear();
     for (const auto& [name, entry] : gState.shaders)
         if (!entry.error.empty()) gState.reloadError += entry.error + (entry.error.ends_with('\n') ? "" : "\n");
-    if (!gState.reloadError.empty()) return false;
+    if (!gState.reloadError.empty()) {
+        std::fflush(stderr);
+        return false;
+    }
     std::string names;
     for (auto& [name, entry] : gState.shaders)
         if (entry.pending) {
@@ -470,9 +484,9 @@ bool shaderSourcesChanged() {
             entry.pending.reset();
             names += (names.empty() ? "" : ", ") + name;
         }
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    std::printf("shaders: reloaded %s (compiled in %.0f ms)\n", names.c_str(), ms);
-    std::fflush(stdout);
+    gState.reloaded = names;
+    gState.editTime = editTime;
+    gState.compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return true;
 }
 

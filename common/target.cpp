@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/commands.hpp"
 #include "common/formats.hpp"
 
@@ -149,6 +150,7 @@ void createSwapchain(Target& target, const Device& device) {
         .oldSwapchain = old,
     };
     VK_CHECK(vkCreateSwapchainKHR(device.handle, &info, nullptr, &target.swapchain));
+    nameObject(device.handle, target.swapchain, "swapchain");
     // The old swapchain is retired now (no new image can be acquired from it) but not destroyed:
     // its last images may still be on their way to the screen (Target::Retired).
     if (old != VK_NULL_HANDLE) target.retired.back().swapchain = old;
@@ -189,7 +191,7 @@ void createOffscreen(Target& target, const Device& device) {
         target.offscreen.push_back(createImage(
             device, target.extent, target.format,
             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-            1, mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0},
+            "offscreen target " + std::to_string(i), 1, mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0},
             listFormats ? &formatList : nullptr));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
@@ -472,6 +474,7 @@ std::vector<VkFramebuffer> createTargetFramebuffers(const Device& device, VkRend
             .layers = 1,
         };
         VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
+        nameObject(device.handle, framebuffers[i], "target image " + std::to_string(i));
     }
     return framebuffers;
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 
 namespace common {
@@ -190,14 +191,15 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
     return chain;
 }
 
-Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain) {
+Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain, const std::string& name) {
     const uint32_t mipLevels = uint32_t(chain.regions.size());
     Image image = createImage(device, chain.extent, chain.format,
                               VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT, mipLevels);
+                              VK_IMAGE_ASPECT_COLOR_BIT, name, mipLevels);
 
     Buffer staging = createBuffer(device, chain.bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                  "staging: " + name);
     std::memcpy(staging.mapped, chain.bytes.data(), chain.bytes.size());
     batch.stagingBuffers.push_back(staging);
 
@@ -217,9 +219,10 @@ Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& 
     return image;
 }
 
-Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format) {
+Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format,
+                    const std::string& name) {
     // A full mip chain when the format can be sampled with linear filtering (the usual case).
-    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)));
+    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)), name);
 }
 
 VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,
@@ -238,6 +241,7 @@ VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressM
     };
     VkSampler sampler = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSampler(device.handle, &info, nullptr, &sampler));
+    nameObject(device.handle, sampler, "sampler");
     return sampler;
 }
 
@@ -262,6 +266,7 @@ VkSampler createSampler(const Device& device, const SamplerDesc& desc) {
     };
     VkSampler sampler = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSampler(device.handle, &info, nullptr, &sampler));
+    nameObject(device.handle, sampler, "sampler");
     return sampler;
 }
 

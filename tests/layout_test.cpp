@@ -92,14 +92,14 @@ void run(const common::Options& options) {
         common::createDevice(instance, VK_NULL_HANDLE, options.device, {.scalarBlockLayout = true});
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     common::Buffer buffers[7] = {
-        common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
-        common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
-        common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
-        common::createBuffer(device, sizeof(camera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
-        common::createBuffer(device, sizeof(draw), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host),
+        common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "lights"),
+        common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host, "scene"),
+        common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "materials"),
+        common::createBuffer(device, sizeof(camera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host, "camera"),
+        common::createBuffer(device, sizeof(draw), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "draw"),
         common::createBuffer(device, expected.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                             host),
-        common::createBuffer(device, sizeof(cull), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host),
+                             host, "results"),
+        common::createBuffer(device, sizeof(cull), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host, "cull"),
     };
     std::memcpy(buffers[0].mapped, lights, sizeof(lights));
     std::memcpy(buffers[1].mapped, &scene, sizeof(scene));

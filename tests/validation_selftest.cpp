@@ -38,9 +38,9 @@ void makeMistakes(const common::Options& options) {
     std::fprintf(stderr, "--- expected: a synchronization hazard (WRITE_AFTER_WRITE) ---\n");
     before = common::validationMessageCount();
     common::Buffer source = common::createBuffer(device, 256, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT);
+                                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, "source");
     common::Buffer target = common::createBuffer(device, 256, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "target");
     VkCommandBuffer cmd = common::beginOneTimeCommands(device);
     VkBufferCopy region{0, 0, 256};
     vkCmdCopyBuffer(cmd, source.handle, target.handle, 1, &region);
