@@ -2,6 +2,7 @@
 #include "buffer.hpp"
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 
 //> find-memory-type
 // A device offers a few memory heaps (device-local video memory, system memory the GPU can
@@ -19,7 +20,7 @@ uint32_t findMemoryType(const common::Device& device, uint32_t typeBits, VkMemor
 
 //> create-buffer
 Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
-                    VkMemoryPropertyFlags memoryFlags) {
+                    VkMemoryPropertyFlags memoryFlags, const std::string& name) {
     Buffer buffer;
     buffer.size = size;
     // The buffer object itself: its size, what it will be used for (vertex data, index data, a
@@ -31,6 +32,9 @@ Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsa
         .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
     };
     VK_CHECK(vkCreateBuffer(device.handle, &info, nullptr, &buffer.handle));
+    // Its name, for graphics debuggers and validation messages (VK_EXT_debug_utils, where the
+    // instance has it: common/debug_names.hpp). Every object our code creates gets one.
+    common::nameObject(device.handle, buffer.handle, name);
 
     // It has no memory yet. The driver says how much it needs (maybe more than `size`, for
     // alignment) and in which memory types.
@@ -45,6 +49,7 @@ Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsa
         .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, memoryFlags),
     };
     VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &buffer.memory));
+    common::nameObject(device.handle, buffer.memory, name);
     VK_CHECK(vkBindBufferMemory(device.handle, buffer.handle, buffer.memory, 0));  // at offset 0
 
     // Memory the CPU can see is mapped once and stays mapped: the pointer is valid until the

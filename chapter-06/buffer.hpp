@@ -7,6 +7,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
+
 #include <cstdint>
 
 #include "common/device.hpp"
@@ -23,6 +25,7 @@ struct Buffer {
 // `required`; throws common::Failure when there is none.
 uint32_t findMemoryType(const common::Device& device, uint32_t typeBits, VkMemoryPropertyFlags required);
 
+// `name`: what a graphics debugger and validation messages call the buffer and its memory.
 Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
-                    VkMemoryPropertyFlags memoryFlags);
+                    VkMemoryPropertyFlags memoryFlags, const std::string& name);
 void destroyBuffer(const common::Device& device, Buffer& buffer);

@@ -15,6 +15,7 @@
 #include "common/check.hpp"
 #include "common/cli.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 #include "common/device.hpp"
 #include "common/formats.hpp"
 #include "common/instance.hpp"
@@ -70,6 +71,7 @@ VkRenderPass createRenderPass(const common::Device& device, VkFormat format, VkI
     };
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VK_CHECK(vkCreateRenderPass(device.handle, &info, nullptr, &renderPass));
+    common::nameObject(device.handle, renderPass, "triangle");
     return renderPass;
 }
 
@@ -89,6 +91,7 @@ std::vector<VkFramebuffer> createFramebuffers(const common::Device& device, VkRe
             .layers = 1,
         };
         VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
+        common::nameObject(device.handle, framebuffers[i], "target image " + std::to_string(i));
     }
     return framebuffers;
 }

@@ -37,14 +37,15 @@ namespace {
 // copy into a new device-local buffer is recorded. The staging buffer must live until the copy
 // has run, so it is handed back to be freed after the wait.
 Buffer stage(const common::Device& device, VkCommandBuffer cmd, const void* data, VkDeviceSize size,
-             VkBufferUsageFlags usage, std::vector<Buffer>& stagingBuffers) {
+             VkBufferUsageFlags usage, const std::string& name, std::vector<Buffer>& stagingBuffers) {
     Buffer staging = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                  "staging: " + name);
     std::memcpy(staging.mapped, data, size);
     stagingBuffers.push_back(staging);
 
     Buffer target = createBuffer(device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     VkBufferCopy region{.srcOffset = 0, .dstOffset = 0, .size = size};
     vkCmdCopyBuffer(cmd, staging.handle, target.handle, 1, &region);
     return target;
@@ -76,10 +77,11 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
     std::vector<Mesh> meshes;
     for (const MeshData& data : meshData) {
         Mesh mesh;
+        std::string name = "mesh " + std::to_string(meshes.size());
         mesh.vertices = stage(device, cmd, data.positions.data(), data.positions.size() * sizeof(float),
-                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, stagingBuffers);
+                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, name + " vertices", stagingBuffers);
         mesh.indices = stage(device, cmd, data.indices.data(), data.indices.size() * sizeof(uint32_t),
-                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, stagingBuffers);
+                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + " indices", stagingBuffers);
         mesh.indexCount = static_cast<uint32_t>(data.indices.size());
         meshes.push_back(mesh);
     }

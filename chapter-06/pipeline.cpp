@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
-#include "common/debug_names.hpp"
 #include "shader_compiler.hpp"
 
 //> shader-module
@@ -50,6 +50,7 @@ common::PipelineCache createPipelineCache(const common::Device& device) {
         info.pInitialData = nullptr;
         VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));
     }
+    common::nameObject(device.handle, cache.handle, "pipeline cache chapter-06");
     return cache;
 }
 //< pipeline-cache
@@ -134,6 +135,7 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
     Pipeline pipeline;
     VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipeline.layout));
+    common::nameObject(device.handle, pipeline.layout, "triangle");
 
     VkGraphicsPipelineCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
@@ -152,6 +154,7 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
         .subpass = 0,
     };
     VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline.handle));
+    common::nameObject(device.handle, pipeline.handle, "triangle");
 
     // The pipeline keeps what it needs; the modules can go.
     vkDestroyShaderModule(device.handle, fragment, nullptr);

@@ -42,8 +42,8 @@ shaderc_include_result* findInclude(void* includeDir, const char* requested, int
         include->text = text.str();
     }
     if (include->name.empty()) include->text = std::string("cannot find include file '") + requested + "'";
-    include->result = {include->name.c_str(), include->name.size(), include->text.c_str(), include->text.size(),
-                       include};
+    include->result = {include->name.c_str(), include->name.size(), include->text.c_str(),
+                       include->text.size(), include};
     return &include->result;
 }
 
@@ -55,7 +55,8 @@ void releaseInclude(void* /*includeDir*/, shaderc_include_result* result) {
 
 std::vector<uint32_t> buildSpirv(const common::ShaderSource& source) {
     std::vector<char> bytes = common::readFile(source.spv);
-    if (bytes.empty() || bytes.size() % 4 != 0) throw common::Failure("'" + common::utf8(source.spv) + "' is not SPIR-V");
+    if (bytes.empty() || bytes.size() % 4 != 0)
+        throw common::Failure("'" + common::utf8(source.spv) + "' is not SPIR-V");
     std::vector<uint32_t> words(bytes.size() / 4);
     std::memcpy(words.data(), bytes.data(), bytes.size());
     return words;
@@ -78,11 +79,13 @@ std::vector<uint32_t> compileShader(const common::ShaderSource& source) {
     for (const std::string& define : source.defines) {  // NAME or NAME=VALUE
         size_t equals = std::min(define.find('='), define.size());
         const char* value = equals < define.size() ? define.c_str() + equals + 1 : "";
-        shaderc_compile_options_add_macro_definition(options, define.c_str(), equals, value, std::strlen(value));
+        shaderc_compile_options_add_macro_definition(options, define.c_str(), equals, value,
+                                                     std::strlen(value));
     }
     std::filesystem::path includeDir = source.includeDir;
     shaderc_compile_options_set_include_callbacks(options, findInclude, releaseInclude, &includeDir);
-    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan, shaderc_env_version_vulkan_1_1);
+    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan,
+                                           shaderc_env_version_vulkan_1_1);
 #if defined(VKBOOK_SHADER_DEBUG_INFO)
     shaderc_compile_options_set_generate_debug_info(options);
 #endif
@@ -113,10 +116,12 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
     // includes (shaderc's preprocessor lists them).
     bool changed = !std::filesystem::exists(source.spv);
     for (const std::filesystem::path& file : common::shaderFiles(source))
-        changed = changed || std::filesystem::last_write_time(file) > std::filesystem::last_write_time(source.spv);
+        changed =
+            changed || std::filesystem::last_write_time(file) > std::filesystem::last_write_time(source.spv);
     common::watchShader(name);  // edits from now on reload the pipeline (main.cpp)
     if (!changed) return buildSpirv(source);
-    std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n", std::string(name).c_str());
+    std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
+                std::string(name).c_str());
     return ::compileShader(source);  // ours, not common::compileShader
 }
 //< compile-if-changed

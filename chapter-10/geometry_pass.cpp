@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
@@ -101,6 +102,7 @@ VkRenderPass createGeometryRenderPass(const common::Device& device, VkFormat dep
     };
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VK_CHECK(vkCreateRenderPass(device.handle, &info, nullptr, &renderPass));
+    common::nameObject(device.handle, renderPass, "geometry");
     return renderPass;
 }
 //< geometry-render-pass
@@ -119,19 +121,21 @@ VkFramebuffer createGeometryFramebuffer(const common::Device& device, VkRenderPa
     };
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffer));
+    common::nameObject(device.handle, framebuffer, "G-buffer");
     return framebuffer;
 }
 
 void createDescriptors(const common::Device& device, GeometryPass& pass, const common::GpuScene& scene,
                        uint32_t framesInFlight) {
     pass.matrixLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)}, "geometry: matrix");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)},
+        "geometry: matrix");
     pass.textureLayout = common::createDescriptorSetLayout(
-        device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "geometry: texture");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "geometry: texture");
     pass.materialLayout = common::createDescriptorSetLayout(
-        device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)}, "geometry: material");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "geometry: material");
 
     //> descriptor-pool
     // Sized from what the scene holds: a set per material, a view matrix per frame in flight.
@@ -145,8 +149,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
 
     VkMemoryPropertyFlags hostVisible =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    pass.projection =
-        common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: projection");
+    pass.projection = common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                           hostVisible, "geometry: projection");
     pass.projectionSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
     common::writeBufferDescriptor(device, pass.projectionSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                   pass.projection.handle, sizeof(glm::mat4));
@@ -154,8 +158,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     // read frame N's.
     pass.views.resize(framesInFlight);
     for (ViewFrame& view : pass.views) {
-        view.buffer =
-            common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: view");
+        view.buffer = common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                           hostVisible, "geometry: view");
         view.set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
         common::writeBufferDescriptor(device, view.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       view.buffer.handle, sizeof(glm::mat4));
@@ -175,8 +179,9 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     // must be a multiple of minUniformBufferOffsetAlignment.
     VkDeviceSize alignment = device.properties.limits.minUniformBufferOffsetAlignment;
     pass.materialStride = (sizeof(GeometryMaterial) + alignment - 1) / alignment * alignment;
-    pass.materials = common::createBuffer(device, pass.materialStride * scene.materials.size(),
-                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: materials");
+    pass.materials =
+        common::createBuffer(device, pass.materialStride * scene.materials.size(),
+                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "geometry: materials");
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const common::GpuMaterial& m = scene.materials[i];
         GeometryMaterial material{m.diffuse, m.alphaTested ? m.alphaCutoff : 0.0f, {}};
@@ -202,6 +207,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, Geometr
         .pPushConstantRanges = &modelMatrix,
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    common::nameObject(device.handle, pass.pipelineLayout, "geometry");
 
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/geometry.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/geometry.frag");
@@ -211,6 +217,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, Geometr
     pass.pipeline = common::createGraphicsPipeline(
         device, cache,
         {
+            .name = "geometry",
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
             .vertexInput = &vertexInput.state,

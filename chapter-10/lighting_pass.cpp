@@ -51,6 +51,7 @@ VkRenderPass createLightingRenderPass(const common::Device& device, const common
     };
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VK_CHECK(vkCreateRenderPass(device.handle, &info, nullptr, &renderPass));
+    common::nameObject(device.handle, renderPass, "lighting");
     return renderPass;
 }
 //< lighting-render-pass
@@ -78,7 +79,8 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     pass.attachmentsLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "lighting: G-buffer attachments");
+         common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "lighting: G-buffer attachments");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
@@ -98,6 +100,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
         .pPushConstantRanges = &show,
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    common::nameObject(device.handle, pass.pipelineLayout, "lighting");
     VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/lighting.vert");
     VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/lighting.frag");
     // The shader writes the target image: it sRGB-encodes its colour itself where the image's
@@ -110,6 +113,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     pass.pipeline = common::createGraphicsPipeline(
         device, cache,
         {
+            .name = "lighting",
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &fragmentConstants)},
             .vertexInput = nullptr,
@@ -123,6 +127,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
                                      .queueFamilyIndex = device.queueFamily};
     VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &pass.commandPool));
+    common::nameObject(device.handle, pass.commandPool, "lighting commands");
     return pass;
 }
 

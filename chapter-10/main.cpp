@@ -17,6 +17,7 @@
 #include "common/check.hpp"
 #include "common/cli.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/instance.hpp"
@@ -54,6 +55,7 @@ std::vector<Frame> createFrames(const common::Device& device, uint32_t framesInF
                                          .flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT,
                                          .queueFamilyIndex = device.queueFamily};
         VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &frame.geometryPool));
+        common::nameObject(device.handle, frame.geometryPool, "geometry commands");
         VkCommandBufferAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
                                               .commandPool = frame.geometryPool,
                                               .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,

@@ -2,6 +2,7 @@
 #include "scene_pass.hpp"
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
@@ -34,10 +35,11 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: materials");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "scene: materials");
     pass.textureLayout = common::createDescriptorSetLayout(
-        device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: texture");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "scene: texture");
     uint32_t materials = uint32_t(scene.materials.size());
     pass.descriptorPool =
         common::createDescriptorPool(device, framesInFlight + 1 + materials,
@@ -87,6 +89,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
         .pPushConstantRanges = pushConstants.data(),
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    common::nameObject(device.handle, pass.pipelineLayout, "scene");
 
     // Without a render pass, the pipeline is told the formats it will render to: one per colour
     // attachment (each gets its own blend state), plus depth.
@@ -103,6 +106,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     pass.pipeline = common::createGraphicsPipeline(
         device, cache,
         {
+            .name = "scene",
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
             .vertexInput = &vertexInput.state,

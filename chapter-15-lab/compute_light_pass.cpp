@@ -5,6 +5,7 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
@@ -37,7 +38,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
     ComputeLightPass pass;
     pass.tiled = tileLists != VK_NULL_HANDLE;
     pass.outputLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)}, "compute light: output");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)},
+        "compute light: output");
     pass.descriptorPool = common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}});
     pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
     writeComputeOutput(device, pass, lightPass);
@@ -51,6 +53,7 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
                                           .pushConstantRangeCount = 1,
                                           .pPushConstantRanges = &pushRange};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    common::nameObject(device.handle, pass.pipelineLayout, "compute light");
     VkShaderModule module = common::loadShaderModule(device, shader);
     VkComputePipelineCreateInfo pipelineInfo{
         .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
@@ -58,6 +61,7 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
         .layout = pass.pipelineLayout,
     };
     VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &pipelineInfo, nullptr, &pass.pipeline));
+    common::nameObject(device.handle, pass.pipeline, shader);
     vkDestroyShaderModule(device.handle, module, nullptr);
     return pass;
 }

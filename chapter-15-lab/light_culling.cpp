@@ -10,6 +10,7 @@
 #include <string>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
@@ -100,8 +101,8 @@ void createTileBuffers(const common::Device& device, LightCullingPass& c, VkExte
     VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     c.tileBounds = common::createBuffer(device, tiles * 2 * sizeof(glm::vec4), storage,
                                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile bounds");
-    c.tileCounts =
-        common::createBuffer(device, tiles * sizeof(uint32_t), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile counts");
+    c.tileCounts = common::createBuffer(device, tiles * sizeof(uint32_t), storage,
+                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile counts");
     c.tileLists = common::createBuffer(device, tiles * sizeof(glm::uvec2), storage,
                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: tile lists");
     c.indices = common::createBuffer(device, uint64_t(c.capacity) * sizeof(uint32_t), storage,
@@ -144,6 +145,7 @@ VkPipeline createComputePipeline(const common::Device& device, VkPipelineCache c
         .layout = layout};
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    common::nameObject(device.handle, pipeline, std::string(shader));
     vkDestroyShaderModule(device.handle, module, nullptr);
     return pipeline;
 }
@@ -164,14 +166,16 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
     float largest = std::max({reach.x, reach.y, reach.z});
     c.margin = layout.formats.position == VK_FORMAT_R16G16B16A16_SFLOAT ? largest * 1.7321f / 2048.0f : 0.0f;
 
-    c.setLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kStages),
-                 common::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
-                 common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)}, "cull: lists");
+    c.setLayout =
+        common::createDescriptorSetLayout(device,
+                                          {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kStages),
+                                           common::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                                           common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                                           common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                                           common::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                                           common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
+                                           common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)},
+                                          "cull: lists");
     c.descriptorPool =
         common::createDescriptorPool(device, framesInFlight,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
@@ -188,8 +192,8 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "cull: large lights");
     c.frames.resize(framesInFlight);
     for (LightCullingFrame& frame : c.frames) {
-        frame.view =
-            common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "cull: view");
+        frame.view = common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                          hostVisible, "cull: view");
         frame.set = common::allocateDescriptorSet(device, c.descriptorPool, c.setLayout);
         common::writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       frame.view.handle, sizeof(CullView));
@@ -209,6 +213,7 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
                                     .pushConstantRangeCount = 1,
                                     .pPushConstantRanges = &push};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &c.pipelineLayout));
+    common::nameObject(device.handle, c.pipelineLayout, "cull");
     c.bounds = createComputePipeline(device, cache, c.pipelineLayout, boundsShader);
     // light_cull.comp's FILL and LARGE.
     VkBool32 constants[2] = {VK_FALSE, VK_FALSE};

@@ -9,6 +9,7 @@
 
 #include "common/barriers.hpp"
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/screenshot.hpp"
 #include "common/texture.hpp"
@@ -54,6 +55,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         .bindingCount = uint32_t(attachmentBindings.size()),
         .pBindings = attachmentBindings.data()};
     VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &attachmentsInfo, nullptr, &pass.attachmentsLayout));
+    common::nameObject(device.handle, pass.attachmentsLayout, "light: G-buffer attachments");
     pass.lightsLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, stage)}, "light: lights");
     pass.sceneLayout = common::createDescriptorSetLayout(

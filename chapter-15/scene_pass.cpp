@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
@@ -19,13 +20,15 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                        uint32_t framesInFlight) {
     pass.cameraLayout = common::createCameraSetLayout(device);
     pass.materialsLayout = common::createDescriptorSetLayout(
-        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: materials");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "scene: materials");
     pass.texturesLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "scene: textures");
+         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "scene: textures");
 
     //> material-sets
     // Sized from the scene: a camera set per frame in flight, the materials buffer, and one set
@@ -95,6 +98,7 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
         .pPushConstantRanges = pushConstants.data(),
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelines.layout));
+    common::nameObject(device.handle, pipelines.layout, "scene");
 
     //> scene-pipeline
     // The G-buffer's four colour attachments: as many formats and blend states.
@@ -121,6 +125,8 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
             pipeline = common::createGraphicsPipeline(
                 device, cache,
                 {
+                    .name = std::string("scene ") + (alphaTest ? "cutout" : "opaque") +
+                            (doubleSided ? ", double-sided" : ""),
                     .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                                common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
                     .vertexInput = &vertexInput.state,

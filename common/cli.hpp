@@ -30,7 +30,7 @@ struct Options {
     bool validation = false;
     std::optional<VkExtent2D> resizeTo;  // testing aid: resize the target half-way through --frames
     std::optional<VkFormat>
-        targetFormat;  // --target-format: the presented images' format (common/formats.hpp)
+        targetFormat;                 // --target-format: the presented images' format (common/formats.hpp)
     std::filesystem::path shaderDir;  // --shader-dir: shader sources to compile and watch
     bool help = false;
     // --benchmark: render --warmup frames, then --frames measured ones (default 100), no vsync.

@@ -11,8 +11,9 @@ VkDescriptorSetLayoutBinding binding(uint32_t index, VkDescriptorType type, VkSh
     return {.binding = index, .descriptorType = type, .descriptorCount = count, .stageFlags = stages};
 }
 
-VkDescriptorSetLayout createDescriptorSetLayout(
-    const Device& device, std::initializer_list<VkDescriptorSetLayoutBinding> bindings, const std::string& name) {
+VkDescriptorSetLayout createDescriptorSetLayout(const Device& device,
+                                                std::initializer_list<VkDescriptorSetLayoutBinding> bindings,
+                                                const std::string& name) {
     VkDescriptorSetLayoutCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
         .bindingCount = static_cast<uint32_t>(bindings.size()),

@@ -5,8 +5,8 @@
 #include <vulkan/vulkan.h>
 
 #include <initializer_list>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "common/device.hpp"
 

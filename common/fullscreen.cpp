@@ -36,6 +36,7 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
     result.pipeline = createGraphicsPipeline(
         device, cache,
         {
+            .name = fragment,
             .stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertexModule),
                        shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragmentModule, specialization)},
             .vertexInput = nullptr,  // the triangle comes from gl_VertexIndex

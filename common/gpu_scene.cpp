@@ -39,8 +39,10 @@ struct TextureRequest {
 
 // What a debugger calls a texture: its image file (or files).
 std::string textureName(const TextureRequest& request) {
-    std::string name = request.first.empty() ? "texture" : utf8(std::filesystem::path(request.first.name()).filename());
-    if (!request.second.empty()) name += " + " + utf8(std::filesystem::path(request.second.name()).filename());
+    std::string name =
+        request.first.empty() ? "texture" : utf8(std::filesystem::path(request.first.name()).filename());
+    if (!request.second.empty())
+        name += " + " + utf8(std::filesystem::path(request.second.name()).filename());
     return name;
 }
 
@@ -106,7 +108,8 @@ public:
                 }
                 staged += prepared.chain->bytes.size();
                 index[prepared.request] = uint32_t(scene.textures.size());
-                scene.textures.push_back(uploadMipChain(device_, batch, *prepared.chain, textureName(requests_[prepared.request])));
+                scene.textures.push_back(uploadMipChain(device_, batch, *prepared.chain,
+                                                        textureName(requests_[prepared.request])));
                 scene.textureHasAlpha.push_back(prepared.hasAlpha);
             }
         } catch (...) {
@@ -249,8 +252,10 @@ void setDrawModel(const GpuScene& scene, Draw& draw, const glm::mat4& model) {
 GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted) {
     GpuScene gpu;
     StagingBatch batch = beginStaging(device);
-    gpu.textures.push_back(uploadTexture(device, batch, solid(255, 255, 255, 255), VK_FORMAT_R8G8B8A8_UNORM, "white"));
-    gpu.textures.push_back(uploadTexture(device, batch, solid(128, 128, 255, 255), VK_FORMAT_R8G8B8A8_UNORM, "flat normal"));
+    gpu.textures.push_back(
+        uploadTexture(device, batch, solid(255, 255, 255, 255), VK_FORMAT_R8G8B8A8_UNORM, "white"));
+    gpu.textures.push_back(
+        uploadTexture(device, batch, solid(128, 128, 255, 255), VK_FORMAT_R8G8B8A8_UNORM, "flat normal"));
     gpu.textureHasAlpha = {false, false};
     std::map<SamplerDesc, uint32_t> samplers;
     auto sampler = [&](const SamplerDesc& desc) {
@@ -274,10 +279,11 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 GpuMesh out;
                 out.vertices =
                     uploadStaged(device, batch, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex),
-                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "vertices"));
-                out.indices =
-                    uploadStaged(device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
-                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "indices"));
+                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                 meshName(instance.file, gpu.meshes.size(), "vertices"));
+                out.indices = uploadStaged(
+                    device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
+                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "indices"));
                 out.indexCount = uint32_t(mesh.indices.size());
                 out.boundsMin = out.boundsMax = mesh.vertices.front().position;
                 for (const Vertex& v : mesh.vertices) {

@@ -59,7 +59,8 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
     // by its alpha. Viewport and scissor are dynamic (the scissor changes with every command).
     VkPipeline pipeline = common::createGraphicsPipeline(
         device, cache,
-        {.stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex, &vertexConstants),
+        {.name = "gui",
+         .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex, &vertexConstants),
                     common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
          .vertexInput = &vertexInput,
          .cullMode = VK_CULL_MODE_NONE,
@@ -116,8 +117,8 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
         common::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     //< gui-font
     pass.setLayout = common::createDescriptorSetLayout(
-        device,
-        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "gui font");
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "gui font");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
     pass.fontSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout);

@@ -26,8 +26,8 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 }
 
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels, VkImageCreateFlags flags,
-                  const void* next) {
+                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels,
+                  VkImageCreateFlags flags, const void* next) {
     Image image;
     image.mipLevels = mipLevels;
     image.format = format;

@@ -25,8 +25,8 @@ VkImageView createImageView(const Device& device, VkImage image, VkFormat format
 // `next`: what VkImageCreateInfo chains (the list of those formats).
 // `name`: what graphics debuggers and validation messages call it (common/debug_names.hpp).
 Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels = 1, VkImageCreateFlags flags = 0,
-                  const void* next = nullptr);
+                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels = 1,
+                  VkImageCreateFlags flags = 0, const void* next = nullptr);
 void destroyImage(const Device& device, Image& image);
 
 }  // namespace common

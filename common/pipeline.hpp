@@ -5,9 +5,9 @@
 #include <vulkan/vulkan.h>
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
-#include <string>
 
 #include "common/device.hpp"
 

@@ -14,7 +14,8 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
                         const Image& lightOutput) {
     PostPass pass;
     pass.inputLayout = createDescriptorSetLayout(
-        device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}, "post input");
+        device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "post input");
     pass.descriptorPool = createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
     pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
 

@@ -30,7 +30,7 @@ struct RunControl {
     GpuTimer gpuTimer;                 // timestamps before the first pass and after each
     FrameStats stats;
     std::chrono::steady_clock::time_point frameStart;
-    double lastCpuMs = 0.0;  // the last frame's CPU time (the GUI shows it)
+    double lastCpuMs = 0.0;              // the last frame's CPU time (the GUI shows it)
     std::vector<std::string> passNames;  // the benchmark rows, also each pass's debug label
 };
 

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -30,11 +30,11 @@ namespace fs = std::filesystem;
 // A shader a chapter loaded: where its code came from, and the files to watch.
 struct Entry {
     ShaderSource source;
-    std::vector<uint32_t> spirv;               // what shaderCode returns now
-    std::vector<uint32_t> reference;           // the build's: the interface its pipeline was made for
+    std::vector<uint32_t> spirv;                   // what shaderCode returns now
+    std::vector<uint32_t> reference;               // the build's: the interface its pipeline was made for
     std::map<fs::path, fs::file_time_type> files;  // each file it came from, and its time when read
     std::optional<std::vector<uint32_t>> pending;  // compiled, waiting for the other changed ones
-    std::string error;                         // why the last compile of it failed
+    std::string error;                             // why the last compile of it failed
 };
 
 struct State {
@@ -71,7 +71,8 @@ std::string firstLine(const std::string& message) {
     size_t end = message.find('\n');
     std::string line = message.substr(0, end);
     size_t more = 0;
-    for (size_t at = message.find(": error:", end); at != std::string::npos; at = message.find(": error:", at + 1))
+    for (size_t at = message.find(": error:", end); at != std::string::npos;
+         at = message.find(": error:", at + 1))
         ++more;
     if (more > 0) line += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
     return line;
@@ -141,9 +142,10 @@ struct Interface {
 
 std::string typeName(spvc_compiler compiler, spvc_type_id id) {
     spvc_type type = spvc_compiler_get_type_handle(compiler, id);
-    static const char* kBase[] = {"unknown", "void", "bool", "int8", "uint8", "int16", "uint16",
-                                  "int", "uint", "int64", "uint64", "atomic", "float16", "float",
-                                  "double", "struct", "image", "sampled image", "sampler", "accel"};
+    static const char* kBase[] = {"unknown", "void",   "bool",          "int8",    "uint8",
+                                  "int16",   "uint16", "int",           "uint",    "int64",
+                                  "uint64",  "atomic", "float16",       "float",   "double",
+                                  "struct",  "image",  "sampled image", "sampler", "accel"};
     unsigned base = unsigned(spvc_type_get_basetype(type));
     std::string name = base < std::size(kBase) ? kBase[base] : "other";
     unsigned columns = spvc_type_get_columns(type), size = spvc_type_get_vector_size(type);
@@ -194,8 +196,8 @@ Interface reflect(const std::vector<uint32_t>& spirv) {
         });
     each(used, SPVC_RESOURCE_TYPE_PUSH_CONSTANT, [&](const spvc_reflected_resource& resource) {
         size_t size = 0;
-        spvc_compiler_get_declared_struct_size(compiler, spvc_compiler_get_type_handle(compiler, resource.base_type_id),
-                                               &size);
+        spvc_compiler_get_declared_struct_size(
+            compiler, spvc_compiler_get_type_handle(compiler, resource.base_type_id), &size);
         result.pushConstantBytes = std::max(result.pushConstantBytes, size);
     });
     each(declared, SPVC_RESOURCE_TYPE_STAGE_INPUT, [&](const spvc_reflected_resource& resource) {
@@ -272,7 +274,8 @@ void configureShaderSources(const fs::path& shaderDir) {
     gState = {};
     if (!shaderDir.empty()) {
         if (!runtimeShaderCompilation())
-            throw InputError("--shader-dir: this build has no runtime shader compilation (built without shaderc)");
+            throw InputError(
+                "--shader-dir: this build has no runtime shader compilation (built without shaderc)");
         if (!fs::is_directory(shaderDir))
             throw InputError("--shader-dir '" + utf8(shaderDir) + "' is not a directory");
         gState.sourceDir = fs::absolute(shaderDir);
@@ -336,9 +339,11 @@ ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
         size_t equals = define.find('=');
         std::string name = define.substr(0, equals);
         std::string value = equals == std::string::npos ? "" : define.substr(equals + 1);
-        shaderc_compile_options_add_macro_definition(options, name.data(), name.size(), value.data(), value.size());
+        shaderc_compile_options_add_macro_definition(options, name.data(), name.size(), value.data(),
+                                                     value.size());
     }
-    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan, shaderc_env_version_vulkan_1_1);
+    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan,
+                                           shaderc_env_version_vulkan_1_1);
     shaderc_compile_options_set_target_spirv(options, shaderc_spirv_version_1_3);
 #if defined(VKBOOK_SHADER_DEBUG_INFO)
     shaderc_compile_options_set_generate_debug_info(options);
@@ -348,8 +353,8 @@ ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
     std::string fileName = utf8(source.glsl);
     shaderc_compilation_result_t result =
         preprocessOnly ? shaderc_compile_into_preprocessed_text(compiler, text.data(), text.size(),
-                                                                shaderKind(source.glsl), fileName.c_str(), "main",
-                                                                options)
+                                                                shaderKind(source.glsl), fileName.c_str(),
+                                                                "main", options)
                        : shaderc_compile_into_spv(compiler, text.data(), text.size(), shaderKind(source.glsl),
                                                   fileName.c_str(), "main", options);
     if (shaderc_result_get_compilation_status(result) != shaderc_compilation_status_success) {
@@ -407,7 +412,8 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     if (newer) {
         ShaderCompilation compilation = compileShader(entry.source);
         if (!compilation.error.empty()) throw InputError(firstLine(compilation.error));
-        if (std::string change = checkInterface(entry, compilation.spirv); !change.empty()) throw InputError(change);
+        if (std::string change = checkInterface(entry, compilation.spirv); !change.empty())
+            throw InputError(change);
         std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
                     std::string(name).c_str());
         entry.spirv = std::move(compilation.spirv);
@@ -424,7 +430,8 @@ void watchShader(std::string_view name) {
     if (!entry.source.found) return;
     if (fs::exists(entry.source.spv)) entry.reference = readWords(entry.source.spv);
     ShaderCompilation preprocessed = runShaderc(entry.source, true);
-    remember(entry, preprocessed.files.empty() ? std::vector<fs::path>{entry.source.glsl} : preprocessed.files);
+    remember(entry,
+             preprocessed.files.empty() ? std::vector<fs::path>{entry.source.glsl} : preprocessed.files);
     gState.shaders.emplace(std::string(name), std::move(entry));
 }
 
@@ -433,9 +440,11 @@ bool shaderSourcesChanged() {
     // The last reload's report, now that a frame has been recorded and submitted with it: how long
     // from the edit (the newest changed file's modification time) to that frame.
     if (!gState.reloaded.empty()) {
-        auto latency = std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
-        std::printf("shaders: reloaded %s (compiled in %.0f ms; first frame with it %.0f ms after the edit)\n",
-                    gState.reloaded.c_str(), gState.compileMs, latency.count());
+        auto latency =
+            std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
+        std::printf(
+            "shaders: reloaded %s (compiled in %.0f ms; first frame with it %.0f ms after the edit)\n",
+            gState.reloaded.c_str(), gState.compileMs, latency.count());
         std::fflush(stdout);
         gState.reloaded.clear();
     }
@@ -451,8 +460,10 @@ bool shaderSourcesChanged() {
         bool edited = false, readable = true;
         for (const auto& [file, time] : entry.files) {
             std::optional<fs::file_time_type> current = modified(file);
-            if (!current) readable = false;
-            else if (*current != time) edited = true, editTime = std::max(editTime, *current);
+            if (!current)
+                readable = false;
+            else if (*current != time)
+                edited = true, editTime = std::max(editTime, *current);
         }
         if (edited && readable) changed.emplace_back(&name, &entry);
     }
@@ -461,8 +472,10 @@ bool shaderSourcesChanged() {
     auto started = std::chrono::steady_clock::now();
     for (auto& [name, entry] : changed) {
         ShaderCompilation compilation = compileShader(entry->source);
-        remember(*entry, compilation.files.empty() ? std::vector<fs::path>{entry->source.glsl} : compilation.files);
-        entry->error = compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
+        remember(*entry,
+                 compilation.files.empty() ? std::vector<fs::path>{entry->source.glsl} : compilation.files);
+        entry->error =
+            compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
         if (entry->error.empty())
             entry->pending = std::move(compilation.spirv);
         else
@@ -472,7 +485,8 @@ bool shaderSourcesChanged() {
     // Every shader must be good before any pipeline changes.
     gState.reloadError.clear();
     for (const auto& [name, entry] : gState.shaders)
-        if (!entry.error.empty()) gState.reloadError += entry.error + (entry.error.ends_with('\n') ? "" : "\n");
+        if (!entry.error.empty())
+            gState.reloadError += entry.error + (entry.error.ends_with('\n') ? "" : "\n");
     if (!gState.reloadError.empty()) {
         std::fflush(stderr);
         return false;
@@ -486,7 +500,8 @@ bool shaderSourcesChanged() {
         }
     gState.reloaded = names;
     gState.editTime = editTime;
-    gState.compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    gState.compileMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return true;
 }
 

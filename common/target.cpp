@@ -5,8 +5,8 @@
 #include <string>
 
 #include "common/check.hpp"
-#include "common/debug_names.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 #include "common/formats.hpp"
 
 namespace common {
@@ -191,7 +191,8 @@ void createOffscreen(Target& target, const Device& device) {
         target.offscreen.push_back(createImage(
             device, target.extent, target.format,
             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-            "offscreen target " + std::to_string(i), 1, mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0},
+            "offscreen target " + std::to_string(i), 1,
+            mutableImages ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : VkImageCreateFlags{0},
             listFormats ? &formatList : nullptr));
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);

@@ -191,7 +191,8 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
     return chain;
 }
 
-Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain, const std::string& name) {
+Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain,
+                     const std::string& name) {
     const uint32_t mipLevels = uint32_t(chain.regions.size());
     Image image = createImage(device, chain.extent, chain.format,
                               VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
@@ -222,7 +223,8 @@ Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& 
 Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format,
                     const std::string& name) {
     // A full mip chain when the format can be sampled with linear filtering (the usual case).
-    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)), name);
+    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)),
+                          name);
 }
 
 VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode addressMode,

@@ -43,7 +43,8 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped);
 bool linearFilterable(const Device& device, VkFormat format);
 // Records the upload of `chain` into a new sampled image, ending in SHADER_READ_ONLY_OPTIMAL.
 // Usable after endStaging(batch).
-Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain, const std::string& name);
+Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& chain,
+                     const std::string& name);
 
 // makeMipChain then uploadMipChain: `pixels` into a new sampled image of `format` (an 8-bit RGBA
 // format: _SRGB for colour, _UNORM for data such as normal maps).

@@ -46,7 +46,7 @@ struct Object {
 
 struct DeviceData {
     PFN_vkGetDeviceProcAddr getProcAddr = nullptr;
-    std::vector<Object> objects;                            // in creation order
+    std::vector<Object> objects;                                 // in creation order
     std::map<std::pair<VkObjectType, uint64_t>, size_t> latest;  // (type, handle) -> its newest object
     std::set<std::string> labels;
     long long openLabels = 0;
@@ -80,7 +80,8 @@ DeviceData& deviceData(const void* handle) {
 }
 
 template <typename Handle>
-void record(DeviceData& device, VkObjectType type, const char* typeName, const Handle* handles, uint32_t count) {
+void record(DeviceData& device, VkObjectType type, const char* typeName, const Handle* handles,
+            uint32_t count) {
     std::lock_guard lock(gLock);
     for (uint32_t i = 0; i < count; ++i) {
         uint64_t handle = reinterpret_cast<uint64_t>(handles[i]);
@@ -168,7 +169,8 @@ void writeReport(const DeviceData& device) {
     }
     for (const Object& object : device.objects) {
         if (object.name.empty())
-            std::fprintf(file, "unnamed %s 0x%llx\n", object.type, static_cast<unsigned long long>(object.handle));
+            std::fprintf(file, "unnamed %s 0x%llx\n", object.type,
+                         static_cast<unsigned long long>(object.handle));
         else
             std::fprintf(file, "named %s %s\n", object.type, object.name.c_str());
     }
@@ -228,14 +230,16 @@ VKAPI_ATTR VkResult VKAPI_CALL createComputePipelines(VkDevice device, VkPipelin
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createShaderModule(VkDevice device, const VkShaderModuleCreateInfo* info,
-                                                  const VkAllocationCallbacks* allocator, VkShaderModule* module) {
+                                                  const VkAllocationCallbacks* allocator,
+                                                  VkShaderModule* module) {
     DeviceData& data = deviceData(device);
     VkResult result = data.next.createShaderModule(device, info, allocator, module);
     if (result == VK_SUCCESS) record(data, VK_OBJECT_TYPE_SHADER_MODULE, "shader-module", module, 1);
     return result;
 }
 
-VKAPI_ATTR VkResult VKAPI_CALL createDescriptorSetLayout(VkDevice device, const VkDescriptorSetLayoutCreateInfo* info,
+VKAPI_ATTR VkResult VKAPI_CALL createDescriptorSetLayout(VkDevice device,
+                                                         const VkDescriptorSetLayoutCreateInfo* info,
                                                          const VkAllocationCallbacks* allocator,
                                                          VkDescriptorSetLayout* layout) {
     DeviceData& data = deviceData(device);
@@ -246,7 +250,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createDescriptorSetLayout(VkDevice device, const 
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createCommandPool(VkDevice device, const VkCommandPoolCreateInfo* info,
-                                                 const VkAllocationCallbacks* allocator, VkCommandPool* pool) {
+                                                 const VkAllocationCallbacks* allocator,
+                                                 VkCommandPool* pool) {
     DeviceData& data = deviceData(device);
     VkResult result = data.next.createCommandPool(device, info, allocator, pool);
     if (result == VK_SUCCESS) record(data, VK_OBJECT_TYPE_COMMAND_POOL, "command-pool", pool, 1);
@@ -316,7 +321,8 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getDeviceProcAddr(VkDevice device, cons
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance, const char* name) {
     if (std::strcmp(name, "vkGetInstanceProcAddr") == 0)
         return reinterpret_cast<PFN_vkVoidFunction>(getInstanceProcAddr);
-    if (std::strcmp(name, "vkCreateInstance") == 0) return reinterpret_cast<PFN_vkVoidFunction>(createInstance);
+    if (std::strcmp(name, "vkCreateInstance") == 0)
+        return reinterpret_cast<PFN_vkVoidFunction>(createInstance);
     if (std::strcmp(name, "vkDestroyInstance") == 0)
         return reinterpret_cast<PFN_vkVoidFunction>(destroyInstance);
     if (std::strcmp(name, "vkCreateDevice") == 0) return reinterpret_cast<PFN_vkVoidFunction>(createDevice);

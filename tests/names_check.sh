@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Runs a chapter with the object-names layer (names_layer/names_layer.cpp) and checks its report:
+# every image, buffer, pipeline, shader module, descriptor set layout and command pool the run
+# created has a non-empty name, every label begun was ended, and each expected pass label is there.
+#   names_check.sh REPORT LABEL[,LABEL...] CHAPTER [options...]
+set -u
+report=$1 labels=$2
+shift 2
+rm -f "$report"
+VKBOOK_NAMES_REPORT=$report "$@" > /dev/null || { echo "names_check: the chapter failed ($?)"; exit 1; }
+[ -s "$report" ] || { echo "names_check: no report in $report (was the layer loaded?)"; exit 1; }
+status=0
+if grep -q '^unnamed ' "$report"; then
+    echo "names_check: objects without a name:"
+    grep '^unnamed ' "$report" | sort | uniq -c | sort -rn | head -20
+    status=1
+fi
+if grep -q '^unbalanced ' "$report"; then
+    echo "names_check: $(grep '^unbalanced ' "$report")"
+    status=1
+fi
+IFS=, read -ra expected <<< "$labels"
+for label in "${expected[@]}"; do
+    grep -qx "label $label" "$report" || { echo "names_check: no pass labelled '$label'"; status=1; }
+done
+for type in image buffer pipeline shader-module descriptor-set-layout command-pool; do
+    echo "$type: $(grep -c "^named $type " "$report") named"
+done
+echo "labels: $(grep '^label ' "$report" | cut -d' ' -f2- | paste -sd, -)"
+exit $status
