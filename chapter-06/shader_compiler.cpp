@@ -122,6 +122,7 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
     if (!changed) return buildSpirv(source);
     std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
                 std::string(name).c_str());
+    std::fflush(stdout);
     return ::compileShader(source);  // ours, not common::compileShader
 }
 //< compile-if-changed

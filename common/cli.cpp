@@ -304,7 +304,10 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
             std::printf("%s", kExitCodes);
             return 0;
         }
-        if (!options.shaderDir.empty()) std::printf("%s\n", shaderSourcesSummary().c_str());
+        if (!options.shaderDir.empty()) {
+            std::printf("%s\n", shaderSourcesSummary().c_str());
+            std::fflush(stdout);  // for whoever waits for it (a test, a script)
+        }
         chapter(options);
     } catch (const InputError& error) {
         std::fprintf(stderr, "%s: error: %s\n", name, oneLine(error.what()).c_str());

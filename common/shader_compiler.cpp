@@ -416,6 +416,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
             throw InputError(change);
         std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
                     std::string(name).c_str());
+        std::fflush(stdout);
         entry.spirv = std::move(compilation.spirv);
     } else {
         entry.spirv = entry.reference;

@@ -1,0 +1,74 @@
+# Shaders compiled at run time and reloaded while a chapter runs (docs/live-shaders.md):
+# runtime_shaders.sh checks the start (a newer source compiled and used, a compile error's
+# file:line and exit code 2, a copied bin/ without sources), live_reload.sh edits a copy of the
+# shaders under a running chapter (--shader-dir), headless and in a window, with --validation.
+if(NOT VKBOOK_HAVE_RUNTIME_SHADERS)
+    message(WARNING "no runtime shader compilation in this build: the live-reload tests are not registered")
+    return()
+endif()
+set(SHADER_SOURCES ${PROJECT_SOURCE_DIR}/shaders)
+set(SMALL --width 320 --height 180)
+
+# At start-up.
+chapter_test(shaders.chapter-06.newer-source-compiled
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh newer ${SHADER_SOURCES} $<TARGET_FILE:image_compare>
+            $<TARGET_FILE:chapter-06> ${SMALL}
+    EXPECT_STDOUT "runtime_shaders: newer: ok")
+set_property(TEST shaders.chapter-06.newer-source-compiled APPEND PROPERTY ENVIRONMENT
+             FILE=chapter-06/triangle.frag "PIXELS=--pixel-linear 160 110 1 0 1")
+foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/scene.frag"
+             "chapter-15-lab;chapter-15/scene_surface.glsl")
+    list(GET case 0 program)
+    list(GET case 1 file)
+    chapter_test(shaders.${program}.compile-error
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh error ${SHADER_SOURCES} $<TARGET_FILE:image_compare>
+                $<TARGET_FILE:${program}> ${SMALL}
+        EXPECT_STDOUT "error: .*${file}:[0-9]+: error: .*runtime_shaders: error: ok")
+    set_property(TEST shaders.${program}.compile-error APPEND PROPERTY ENVIRONMENT FILE=${file})
+endforeach()
+chapter_test(shaders.chapter-06.copied-without-sources
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh no-sources ${SHADER_SOURCES}
+            $<TARGET_FILE:image_compare> $<TARGET_FILE:chapter-06> ${SMALL}
+    EXPECT_STDOUT "runtime_shaders: no-sources: ok")
+foreach(number 06 10 14 15)
+    chapter_test(shaders.chapter-${number}.help-says-runtime COMMAND $<TARGET_FILE:chapter-${number}> --help
+        EXPECT_STDOUT "shaders: compiled at run time from .*shaders when newer than the build's SPIR-V, reloaded when edited")
+endforeach()
+chapter_test(shaders.shader-dir-missing COMMAND $<TARGET_FILE:chapter-15> --headless --shader-dir /nonexistent
+    EXPECT_EXIT 2 ONE_LINE_STDERR EXPECT_STDERR "--shader-dir '/nonexistent' is not a directory")
+
+# live_test(NAME SCENARIO FILE[=NAME] COMMAND chapter options...)
+function(live_test name scenario shader)
+    cmake_parse_arguments(L "WINDOW" "" "COMMAND" ${ARGN})
+    set(command ${CMAKE_CURRENT_SOURCE_DIR}/live_reload.sh ${scenario} ${SHADER_SOURCES} ${shader}
+                $<TARGET_FILE:image_compare> ${L_COMMAND} --validation ${SMALL})
+    if(L_WINDOW)
+        if(NOT XVFB_RUN)
+            return()
+        endif()
+        set(command ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" ${command})
+    else()
+        list(APPEND command --headless)
+    endif()
+    chapter_test(${name} COMMAND ${command} EXPECT_STDOUT "live_reload: ${scenario}: ok")
+    set_tests_properties(${name} PROPERTIES TIMEOUT 300)
+endfunction()
+
+live_test(live-reload.chapter-06.edit edit chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
+live_test(live-reload.chapter-10.edit edit chapter-10/lighting.frag COMMAND $<TARGET_FILE:chapter-10>)
+live_test(live-reload.chapter-14.edit edit chapter-14/light.frag COMMAND $<TARGET_FILE:chapter-14>)
+live_test(live-reload.chapter-15.edit edit chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-15-lab.edit edit chapter-15-lab/light.frag
+    COMMAND $<TARGET_FILE:chapter-15-lab>)
+live_test(live-reload.chapter-15-lab.post-edit edit common/post.frag COMMAND $<TARGET_FILE:chapter-15-lab>
+    --light-culling tiled --light-pass compute --gui)
+live_test(live-reload.chapter-06.broken broken chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
+live_test(live-reload.chapter-15.broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-15.fix fix chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-15.interface interface chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-15.gui-broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15> --gui)
+live_test(live-reload.chapter-06.leak leak chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
+live_test(live-reload.chapter-15.leak leak chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-06.window-fix fix chapter-06/triangle.frag WINDOW COMMAND $<TARGET_FILE:chapter-06>)
+live_test(live-reload.chapter-15.window-edit edit chapter-15/light.frag WINDOW COMMAND $<TARGET_FILE:chapter-15>)
+live_test(live-reload.chapter-15.window-broken broken chapter-15/light.frag WINDOW COMMAND $<TARGET_FILE:chapter-15>)

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Shaders compiled when a chapter starts (the book's ShaderCompiler rule: a source newer than the
+# build's SPIR-V is compiled and used), and what happens without sources.
+#
+#   runtime_shaders.sh SCENARIO SHADERS IMAGE_COMPARE CHAPTER [options...]
+#
+#   newer       a copy of the sources with the fragment colour of FILE (env, e.g.
+#               chapter-06/triangle.frag) replaced: the chapter says it compiled it, and its image
+#               differs from the build's SPIR-V's where the edit says (magenta where red was);
+#   error       a copy with a syntax error at a known line of FILE: exit code 2 and one line
+#               "FILE:LINE: error: ..." on stderr, nothing rendered;
+#   no-sources  the executable and its shaders/ copied elsewhere with the recorded source
+#               directory gone (a copied bin/): --help says the build's SPIR-V is used and why,
+#               and the image is the build's.
+set -u
+scenario=$1 shaders=$2 image_compare=$3 chapter=$4
+shift 4
+work=$(mktemp -d "${TMPDIR:-/tmp}/runtime_shaders.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+fail() {
+    echo "runtime_shaders: $*"
+    exit 1
+}
+"$chapter" "$@" --headless --screenshot "$work/build.png" > /dev/null || fail "the build's run failed"
+
+case $scenario in
+newer)
+    cp -r "$shaders" "$work/shaders"
+    sed -i 's/vec3(1.0, 0.0, 0.0)/vec3(1.0, 0.0, 1.0)/' "$work/shaders/$FILE"
+    grep -q "vec3(1.0, 0.0, 1.0)" "$work/shaders/$FILE" || fail "the edit did not apply to $FILE"
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" --screenshot "$work/edited.png" > "$work/stdout" ||
+        fail "the run with the edited source failed"
+    grep -q "^shaders: compiled $FILE (its source is newer than the build's SPIR-V)" "$work/stdout" ||
+        fail "no 'compiled $FILE' line: $(cat "$work/stdout")"
+    "$image_compare" "$work/edited.png" $PIXELS || fail "the edit is not in the image"
+    "$image_compare" "$work/build.png" $PIXELS > /dev/null 2>&1 && fail "the build's image has the edit too"
+    ;;
+error)
+    cp -r "$shaders" "$work/shaders"
+    line=$(python3 - "$work/shaders/$FILE" << 'EOF'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+end = text.rindex('}')
+start = text.rindex('\n', 0, end) + 1
+open(path, 'w').write(text[:start] + '    this is not GLSL;\n' + text[start:])
+print(text[:start].count('\n') + 1)
+EOF
+)
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" --screenshot "$work/error.png" > /dev/null 2> "$work/stderr"
+    status=$?
+    [ $status = 2 ] || fail "exit code $status, expected 2"
+    [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
+    grep -q "$FILE:$line: error: " "$work/stderr" || fail "the error does not name $FILE:$line: $(cat "$work/stderr")"
+    [ -e "$work/error.png" ] && fail "an image was written"
+    cat "$work/stderr"
+    ;;
+no-sources)
+    mkdir -p "$work/bin"
+    cp "$chapter" "$work/bin/"
+    cp -r "$(dirname "$chapter")/shaders" "$work/bin/shaders"
+    echo "$work/moved-away" > "$work/bin/shaders/source-dir.txt"
+    copy="$work/bin/$(basename "$chapter")"
+    "$copy" --help > "$work/help" || fail "--help failed"
+    grep -q "^shaders: the build's SPIR-V (the build's sources ($work/moved-away) are not there)" "$work/help" ||
+        fail "--help does not say the build's SPIR-V is used: $(grep shaders: "$work/help")"
+    "$copy" "$@" --headless --screenshot "$work/copy.png" > /dev/null || fail "the copied program failed"
+    "$image_compare" "$work/copy.png" --golden "$work/build.png" --max-diff 0 --max-fraction 0 ||
+        fail "the copied program's image differs"
+    grep "^shaders:" "$work/help"
+    ;;
+*) fail "unknown scenario '$scenario'" ;;
+esac
+echo "runtime_shaders: $scenario: ok"
