@@ -91,7 +91,8 @@ std::vector<VkFramebuffer> createFramebuffers(const common::Device& device, VkRe
             .layers = 1,
         };
         VK_CHECK(vkCreateFramebuffer(device.handle, &info, nullptr, &framebuffers[i]));
-        common::nameObject(device.handle, framebuffers[i], "target image " + std::to_string(i));
+        common::nameObject(device.handle, framebuffers[i],
+                           std::string("target image ").append(std::to_string(i)));
     }
     return framebuffers;
 }

@@ -40,7 +40,7 @@ Buffer stage(const common::Device& device, VkCommandBuffer cmd, const void* data
              VkBufferUsageFlags usage, const std::string& name, std::vector<Buffer>& stagingBuffers) {
     Buffer staging = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                  "staging: " + name);
+                                  std::string("staging: ").append(name));
     std::memcpy(staging.mapped, data, size);
     stagingBuffers.push_back(staging);
 
@@ -77,7 +77,7 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
     std::vector<Mesh> meshes;
     for (const MeshData& data : meshData) {
         Mesh mesh;
-        std::string name = "mesh " + std::to_string(meshes.size());
+        std::string name = std::string("mesh ").append(std::to_string(meshes.size()));
         mesh.vertices = stage(device, cmd, data.positions.data(), data.positions.size() * sizeof(float),
                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, name + " vertices", stagingBuffers);
         mesh.indices = stage(device, cmd, data.indices.data(), data.indices.size() * sizeof(uint32_t),

@@ -10,6 +10,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/texture.hpp"
 
 namespace {

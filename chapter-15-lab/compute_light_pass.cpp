@@ -9,6 +9,7 @@
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
+#include "common/shader_compiler.hpp"
 
 LightPassSetup computeLightPassSetup(VkShaderStageFlags alsoStages) {
     return {.fragmentShader = "",

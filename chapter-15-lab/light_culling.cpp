@@ -14,6 +14,7 @@
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
+#include "common/shader_compiler.hpp"
 #include "light_pass.hpp"
 
 namespace {

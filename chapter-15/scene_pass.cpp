@@ -11,6 +11,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
+#include "common/shader_compiler.hpp"
 #include "common/texture.hpp"
 #include "gpu_types.hpp"
 

@@ -17,8 +17,6 @@
 #endif
 
 #include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/shader_compiler.hpp"
 
 namespace common {
 
@@ -108,28 +106,6 @@ std::string readInputFile(const std::filesystem::path& path) {
     if (!file || !file.read(text.data(), static_cast<std::streamsize>(size)))
         throw InputError(utf8(path) + ": cannot read");
     return text;
-}
-
-std::vector<char> readSpirv(std::string_view name) {
-    std::filesystem::path path = executableDir() / "shaders" / (std::string(name) + ".spv");
-    if (!std::filesystem::exists(path))
-        throw Failure("missing shader '" + utf8(path) + "' (is the build complete?)");
-    std::vector<char> code = readFile(path);
-    if (code.empty() || code.size() % 4 != 0) throw Failure("'" + utf8(path) + "' is not SPIR-V");
-    return code;
-}
-
-VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
-    std::vector<uint32_t> code = shaderCode(name);  // the build's, or compiled from a newer source
-    VkShaderModuleCreateInfo info{
-        .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
-        .codeSize = code.size() * sizeof(uint32_t),
-        .pCode = code.data(),
-    };
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
-    nameObject(device.handle, module, std::string(name));
-    return module;
 }
 
 std::filesystem::path cacheDir() {

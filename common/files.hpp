@@ -1,6 +1,5 @@
 // Where a chapter finds its data (next to its executable, whatever the working directory),
-// SPIR-V shader modules compiled at build time, and the per-user cache directory.
-// The book's ShaderProgram (chapter 6) loads .spv files the same way.
+// and the per-user cache directory. (Shader modules: common/shader_compiler.hpp.)
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -47,13 +46,6 @@ void requireInputFile(const std::filesystem::path& path);
 // one line naming the file when it does not exist, is a directory or a device or a pipe (which
 // could be endless: /dev/zero), is larger than kMaxInputFileBytes, or cannot be read.
 std::string readInputFile(const std::filesystem::path& path);
-
-// The SPIR-V words of <executableDir>/shaders/<name>.spv (compiled at build time), e.g.
-// readSpirv("chapter-06/triangle.vert"); throws Failure when the file is missing or not SPIR-V.
-std::vector<char> readSpirv(std::string_view name);
-
-// readSpirv, then vkCreateShaderModule (written out in chapter-06, which introduces it).
-VkShaderModule loadShaderModule(const Device& device, std::string_view name);
 
 // %LOCALAPPDATA%\vulkan-book-cpp on Windows; elsewhere $XDG_CACHE_HOME/vulkan-book-cpp or
 // ~/.cache/vulkan-book-cpp; empty when none of them is set.

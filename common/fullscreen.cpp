@@ -5,6 +5,7 @@
 #include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
+#include "common/shader_compiler.hpp"
 
 namespace common {
 

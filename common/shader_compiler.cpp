@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -15,6 +16,7 @@
 #include <tuple>
 
 #include "common/check.hpp"
+#include "common/debug_names.hpp"
 #include "common/files.hpp"
 
 #if defined(VKBOOK_RUNTIME_SHADERS)
@@ -38,8 +40,9 @@ struct Entry {
 };
 
 struct State {
-    fs::path sourceDir;  // empty: no sources this run
-    std::string why;     // why there are none, for shaderSourcesSummary
+    fs::path sourceDir;       // empty: no sources this run
+    fs::path buildSourceDir;  // the build's shaders/ (<bin>/shaders/source-dir.txt), where its depfiles point
+    std::string why;          // why there are none, for shaderSourcesSummary
     bool explicitDir = false;
     std::map<std::string, Entry, std::less<>> shaders;
     std::chrono::steady_clock::time_point lastPoll{};
@@ -272,16 +275,11 @@ bool runtimeShaderCompilation() {
 
 void configureShaderSources(const fs::path& shaderDir) {
     gState = {};
-    if (!shaderDir.empty()) {
-        if (!runtimeShaderCompilation())
-            throw InputError(
-                "--shader-dir: this build has no runtime shader compilation (built without shaderc)");
-        if (!fs::is_directory(shaderDir))
-            throw InputError("--shader-dir '" + utf8(shaderDir) + "' is not a directory");
-        gState.sourceDir = fs::absolute(shaderDir);
-        gState.explicitDir = true;
-        return;
-    }
+    if (!shaderDir.empty() && !runtimeShaderCompilation())
+        throw InputError(
+            "--shader-dir: this build has no runtime shader compilation (built without shaderc)");
+    if (!shaderDir.empty() && !fs::is_directory(shaderDir))
+        throw InputError("--shader-dir '" + utf8(shaderDir) + "' is not a directory");
     if (!runtimeShaderCompilation()) {
         gState.why = "this build has no runtime compilation (built without shaderc)";
         return;
@@ -289,16 +287,17 @@ void configureShaderSources(const fs::path& shaderDir) {
     fs::path recorded = executableDir() / "shaders" / "source-dir.txt";
     std::ifstream file(recorded);
     std::string line;
-    if (!file || !std::getline(file, line) || line.empty()) {
+    if (file && std::getline(file, line)) gState.buildSourceDir = fs::u8path(line);
+    if (!shaderDir.empty()) {
+        gState.sourceDir = fs::absolute(shaderDir);
+        gState.explicitDir = true;
+    } else if (line.empty()) {
         gState.why = "no " + utf8(recorded);
-        return;
-    }
-    fs::path dir = fs::u8path(line);
-    if (!fs::is_directory(dir)) {
+    } else if (!fs::is_directory(gState.buildSourceDir)) {
         gState.why = "the build's sources (" + line + ") are not there";
-        return;
+    } else {
+        gState.sourceDir = gState.buildSourceDir;
     }
-    gState.sourceDir = dir;
 }
 
 std::string shaderSourcesSummary() {
@@ -382,6 +381,37 @@ ShaderCompilation compileShader(const ShaderSource& source) {
 }
 
 std::vector<fs::path> shaderFiles(const ShaderSource& source) {
+    // The build's depfile (glslangValidator --depfile: "out.spv: source include..."), with the
+    // build's source directory replaced by this run's: reading it costs nothing, where running
+    // the preprocessor on every shader would add a good part of a second to every start.
+    std::ifstream depfile(fs::path(source.spv).concat(".d"), std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(depfile)), std::istreambuf_iterator<char>());
+    size_t colon = text.find(": ");
+    std::string buildDir = utf8(gState.buildSourceDir);
+    std::vector<fs::path> files;
+    if (colon != std::string::npos && !buildDir.empty()) {
+        std::string word;
+        auto add = [&] {
+            if (word.empty() || word == "\\") return word.clear();
+            if (word.starts_with(buildDir + "/"))
+                files.push_back(gState.sourceDir / fs::u8path(word.substr(buildDir.size() + 1)));
+            else
+                files.push_back(fs::u8path(word));
+            word.clear();
+        };
+        for (size_t i = colon + 2; i < text.size(); ++i) {
+            char c = text[i];
+            if (c == '\\' && i + 1 < text.size() && text[i + 1] == ' ')
+                word += text[++i];  // an escaped space
+            else if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+                add();
+            else
+                word += c;
+        }
+        add();
+    }
+    if (!files.empty() && files.front() == source.glsl) return files;
+    // No depfile, or another source than the build's: the preprocessor follows the #includes.
     ShaderCompilation preprocessed = runShaderc(source, true);
     if (!preprocessed.error.empty()) throw InputError(firstLine(preprocessed.error));
     return preprocessed.files;
@@ -401,9 +431,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     }
     // The book's rule, followed through the included files: compile when a file is newer than
     // the build's SPIR-V. The preprocessor tells which files those are.
-    ShaderCompilation preprocessed = runShaderc(entry.source, true);
-    if (!preprocessed.error.empty()) throw InputError(firstLine(preprocessed.error));
-    remember(entry, preprocessed.files);
+    remember(entry, shaderFiles(entry.source));
     bool newer = !built;
     if (built) {
         std::optional<fs::file_time_type> spvTime = modified(entry.source.spv);
@@ -424,15 +452,26 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     return gState.shaders.emplace(std::string(name), std::move(entry)).first->second.spirv;
 }
 
+VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
+    std::vector<uint32_t> code = shaderCode(name);  // the build's, or compiled from a newer source
+    VkShaderModuleCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+        .codeSize = code.size() * sizeof(uint32_t),
+        .pCode = code.data(),
+    };
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
+    nameObject(device.handle, module, std::string(name));
+    return module;
+}
+
 void watchShader(std::string_view name) {
     if (gState.sourceDir.empty() || gState.shaders.count(name)) return;
     Entry entry;
     entry.source = findShaderSource(name);
     if (!entry.source.found) return;
     if (fs::exists(entry.source.spv)) entry.reference = readWords(entry.source.spv);
-    ShaderCompilation preprocessed = runShaderc(entry.source, true);
-    remember(entry,
-             preprocessed.files.empty() ? std::vector<fs::path>{entry.source.glsl} : preprocessed.files);
+    remember(entry, shaderFiles(entry.source));
     gState.shaders.emplace(std::string(name), std::move(entry));
 }
 

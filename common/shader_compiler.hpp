@@ -12,11 +12,15 @@
 // modules are made deep inside the passes (loadShaderModule), and each of them asks it.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "common/device.hpp"
 
 namespace common {
 
@@ -62,6 +66,10 @@ std::vector<std::filesystem::path> shaderFiles(const ShaderSource& source);
 // compiled shader whose interface no longer fits the pipeline the code makes for it, throws
 // InputError "file:line: message" (exit code 2). Remembers the shader for shaderSourcesChanged.
 std::vector<uint32_t> shaderCode(std::string_view name);
+
+// shaderCode, then vkCreateShaderModule (written out in chapter-06, which introduces it), the
+// module named after the shader for graphics debuggers.
+VkShaderModule loadShaderModule(const Device& device, std::string_view name);
 
 // Remembers a shader a chapter compiled itself (chapter-06), so its edits are noticed too.
 void watchShader(std::string_view name);
