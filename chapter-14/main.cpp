@@ -172,7 +172,7 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
 
 //> record-frame
 // One command buffer for the whole frame: three passes (four with --gui), joined by barriers
-// only, each timed for --benchmark.
+// only, each labelled for graphics debuggers and timed for --benchmark.
 void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
                  ImDrawData* overlay) {
     setCamera(c.scenePass, slot,

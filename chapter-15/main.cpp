@@ -294,7 +294,8 @@ void updateFrame(Chapter& c, uint32_t slot) {
 //< update-frame
 
 //> record-frame
-// The frame's passes into one command buffer, each timed for --benchmark.
+// The frame's passes into one command buffer, each labelled for graphics debuggers and timed for
+// --benchmark.
 void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
                  ImDrawData* overlay) {
     VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));

@@ -253,6 +253,13 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         device.swapchainMaintenance1 = maintenance1.swapchainMaintenance1;
         if (device.swapchainMaintenance1) extensions.push_back(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME);
     }
+#if defined(VKBOOK_SHADER_DEBUG_INFO)
+    // Shaders built with non-semantic debug information (glslang -gVS: VKBOOK_SHADER_DEBUG_INFO)
+    // use this extension's instruction set; it is core from Vulkan 1.3 on.
+    if (device.apiVersion < VK_API_VERSION_1_3 &&
+        hasDeviceExtension(device.physical, VK_KHR_SHADER_NON_SEMANTIC_INFO_EXTENSION_NAME))
+        extensions.push_back(VK_KHR_SHADER_NON_SEMANTIC_INFO_EXTENSION_NAME);
+#endif
     // A portability implementation (MoltenVK) must have this extension enabled when it lists it.
     if (hasDeviceExtension(device.physical, "VK_KHR_portability_subset"))
         extensions.push_back("VK_KHR_portability_subset");

@@ -24,6 +24,7 @@ packages=(
     vulkan-validationlayers glslang-tools       # --validation, shader compiler
     libglfw3-dev libglm-dev libstb-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libgtest-dev
     libimgui-dev libcli11-dev
+    libshaderc-dev glslang-dev libspirv-cross-c-shared-dev   # shaders compiled at run time, live reload
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
     clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/fuzz/), symbolized reports
 )
@@ -53,12 +54,12 @@ build_sanitize() {
     cmake --build "$sanitize_build" -j "$(nproc)"
 }
 # Not run again under the sanitizers: the window-life tests, desktop.present-fences-window-life
-# among them (they measure resident memory, which
+# among them, and the live-reload leak tests (they measure resident memory, which
 # AddressSanitizer's shadow memory and quarantine inflate), chapter-15.window-keys (it checks how
 # far keys held for 0.7 s of wall-clock time move the lights, and the sanitizer build's slower
 # frames sample the key presses too coarsely: seen once, 2.83 instead of >= 3), builds of a
 # chapter on its own, formatting, docs, and the fuzzers (built with sanitizers of their own).
-sanitize_skip='window-life|^chapter-15\.window-keys$|standalone|^format$|^docs\.|^fuzz\.'
+sanitize_skip='window-life|^chapter-15\.window-keys$|standalone|^format$|^docs\.|^fuzz\.|^live-reload\..*\.leak$'
 
 command=${1:-}
 [ $# -gt 0 ] && shift

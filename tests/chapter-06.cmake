@@ -68,4 +68,4 @@ file(MAKE_DIRECTORY ${TEST_OUT}/dir.png)
 add_test(NAME chapter-06.pipeline-cache COMMAND ${CMAKE_COMMAND} -DCHAPTER=${CH06}
          -DCACHE_HOME=${CMAKE_CURRENT_BINARY_DIR}/cache-test-06 -P ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_cache.cmake)
 
-standalone_build_test(06)
+standalone_build_test(06 BUILD_TYPE Debug)  # shaders with debug information
