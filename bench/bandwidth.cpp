@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
         }
         VkDeviceSize size = VkDeviceSize(mib) << 20;
         VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-        common::Buffer source =
-            common::createBuffer(device, size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "bandwidth source");
-        common::Buffer target =
-            common::createBuffer(device, size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "bandwidth destination");
+        common::Buffer source = common::createBuffer(device, size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                                                     "bandwidth source");
+        common::Buffer target = common::createBuffer(device, size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                                                     "bandwidth destination");
 
         VkQueryPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
                                        .queryType = VK_QUERY_TYPE_TIMESTAMP,

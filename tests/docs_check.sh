@@ -77,6 +77,8 @@ case $mode in
         while IFS=: read -r page _ ref; do
             file=${ref%:*}
             line=${ref##*:}
+            # An absolute path is a reader's machine's (a compiler message quoted), not ours.
+            [[ $file == /* ]] && continue
             # A bare name (main.cpp:12) or a path from the root (chapter-15/main.cpp:12).
             if [ -f "$root/$file" ]; then
                 matches=("$root/$file")

@@ -94,7 +94,8 @@ void run(const common::Options& options) {
     common::Buffer buffers[7] = {
         common::createBuffer(device, sizeof(lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "lights"),
         common::createBuffer(device, sizeof(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host, "scene"),
-        common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "materials"),
+        common::createBuffer(device, sizeof(materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host,
+                             "materials"),
         common::createBuffer(device, sizeof(camera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, host, "camera"),
         common::createBuffer(device, sizeof(draw), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "draw"),
         common::createBuffer(device, expected.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

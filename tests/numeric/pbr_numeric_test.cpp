@@ -339,10 +339,10 @@ void run(const common::Options& options) {
     common::Instance instance = common::createInstance("pbr_numeric_test", options.validation, {});
     common::Device device = common::createDevice(instance, VK_NULL_HANDLE, options.device);
     VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    common::Buffer input =
-        common::createBuffer(device, cases.size() * sizeof(Sample), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "samples");
-    common::Buffer output =
-        common::createBuffer(device, cases.size() * sizeof(Result), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "results");
+    common::Buffer input = common::createBuffer(device, cases.size() * sizeof(Sample),
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "samples");
+    common::Buffer output = common::createBuffer(device, cases.size() * sizeof(Result),
+                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, host, "results");
     for (size_t i = 0; i < cases.size(); ++i)
         std::memcpy(static_cast<Sample*>(input.mapped) + i, &cases[i].sample, sizeof(Sample));
     uint32_t count = uint32_t(cases.size());
