@@ -5,6 +5,7 @@
 
 #include "common/check.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 
 //> describe-vertex-input
 void describeVertexInput(VertexInput& input) {
@@ -67,6 +68,7 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
     };
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &cmd));
+    common::nameObject(device.handle, cmd, "mesh upload");
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
@@ -100,6 +102,7 @@ std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<Mes
 
     // Submit, and wait on a fence until the GPU has run the copies; then the staging buffers go.
     VkFence done = common::createFence(device, false);
+    common::nameObject(device.handle, done, "mesh upload done");
     VkSubmitInfo submit{
         .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
         .commandBufferCount = 1,

@@ -145,7 +145,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
         common::createDescriptorPool(device, 2 + framesInFlight + textures,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1 + framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textures},
-                                      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1}});
+                                      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1}},
+                                     "geometry");
     //< descriptor-pool
 
     VkMemoryPropertyFlags hostVisible =

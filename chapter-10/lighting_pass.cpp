@@ -83,7 +83,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
          common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "lighting: G-buffer attachments");
     pass.descriptorPool =
-        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}, "lighting");
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // Attachments are read one texel per pixel: nearest filtering, which every depth format
     // supports (linear filtering of D32_SFLOAT is optional).
@@ -156,6 +156,9 @@ void recordLightingPass(const common::Device& device, LightingPass& pass, const 
             .commandBufferCount = uint32_t(pass.commandBuffers.size()),
         };
         VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, pass.commandBuffers.data()));
+        for (size_t i = 0; i < pass.commandBuffers.size(); ++i)
+            common::nameObject(device.handle, pass.commandBuffers[i],
+                               "lighting, target image " + std::to_string(i));
     }
 
     VkExtent2D extent = target.extent;

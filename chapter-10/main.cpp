@@ -62,6 +62,8 @@ std::vector<Frame> createFrames(const common::Device& device, uint32_t framesInF
                                               .commandBufferCount = 1};
         VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &frame.geometryCommands));
         frame.geometryComplete = common::createSemaphore(device);
+        common::nameObject(device.handle, frame.geometryCommands, "geometry commands");
+        common::nameObject(device.handle, frame.geometryComplete, "geometry complete");
         frames.push_back(frame);
     }
     return frames;

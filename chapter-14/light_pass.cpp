@@ -34,7 +34,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
          common::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "light: G-buffer attachments");
     pass.descriptorPool =
-        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}, "light");
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // One texel per pixel: nearest filtering, which depth formats always support.
     pass.sampler =

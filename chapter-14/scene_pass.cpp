@@ -46,7 +46,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
         common::createDescriptorPool(device, framesInFlight + 1 + materials,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, materials}});
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, materials}},
+                                     "scene");
 
     pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 

@@ -41,7 +41,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
     pass.outputLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT)},
         "compute light: output");
-    pass.descriptorPool = common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}});
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}, "compute light");
     pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
     writeComputeOutput(device, pass, lightPass);
     VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout,

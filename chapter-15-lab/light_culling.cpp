@@ -177,10 +177,10 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
                                            common::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages),
                                            common::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStages)},
                                           "cull: lists");
-    c.descriptorPool =
-        common::createDescriptorPool(device, framesInFlight,
-                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6 * framesInFlight}});
+    c.descriptorPool = common::createDescriptorPool(device, framesInFlight,
+                                                    {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
+                                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6 * framesInFlight}},
+                                                    "cull");
     VkMemoryPropertyFlags hostVisible =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     c.stats = common::createBuffer(device, 4 * sizeof(uint32_t),

@@ -22,6 +22,7 @@
 #include "common/check.hpp"
 #include "common/cli.hpp"
 #include "common/commands.hpp"
+#include "common/debug_names.hpp"
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
@@ -257,6 +258,7 @@ void run(const common::Options& options) {
                                               .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
                                               .commandBufferCount = 1};
         VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &lateCommands[i]));
+        common::nameObject(device.handle, lateCommands[i], "frame " + std::to_string(i) + " late commands");
     }
 
     common::GpuScene gpuScene = common::loadGpuScene(

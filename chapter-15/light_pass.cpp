@@ -64,7 +64,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         device, 2 + 2 * framesInFlight,
         {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(attachmentBindings.size())},
          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
-         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}});
+         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}},
+        "light");
     pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
     // One texel per pixel: nearest filtering, which depth formats always support.
     pass.sampler =

@@ -40,7 +40,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
         common::createDescriptorPool(device, framesInFlight + 1 + materials,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 * materials}});
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 * materials}},
+                                     "scene");
     for (const common::GpuMaterial& material : scene.materials) {
         VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
         common::TextureBinding textures[4] = {material.albedo, material.normal, material.metalRough,

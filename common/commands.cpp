@@ -71,6 +71,7 @@ VkCommandBuffer beginOneTimeCommands(const Device& device) {
     };
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateCommandBuffers(device.handle, &allocInfo, &commandBuffer));
+    nameObject(device.handle, commandBuffer, "one-time commands");
     VkCommandBufferBeginInfo beginInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
@@ -82,6 +83,7 @@ VkCommandBuffer beginOneTimeCommands(const Device& device) {
 void submitOneTimeCommands(const Device& device, VkCommandBuffer commandBuffer) {
     VK_CHECK(vkEndCommandBuffer(commandBuffer));
     VkFence done = createFence(device, false);
+    nameObject(device.handle, done, "one-time commands done");
     VkSubmitInfo submit{
         .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
         .commandBufferCount = 1,

@@ -26,7 +26,7 @@ VkDescriptorSetLayout createDescriptorSetLayout(const Device& device,
 }
 
 VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,
-                                      std::vector<VkDescriptorPoolSize> sizes) {
+                                      std::vector<VkDescriptorPoolSize> sizes, const std::string& name) {
     std::erase_if(sizes, [](const VkDescriptorPoolSize& size) { return size.descriptorCount == 0; });
     VkDescriptorPoolCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
@@ -36,6 +36,7 @@ VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,
     };
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VK_CHECK(vkCreateDescriptorPool(device.handle, &info, nullptr, &pool));
+    nameObject(device.handle, pool, name);
     return pool;
 }
 
@@ -49,6 +50,7 @@ VkDescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorPool poo
     };
     VkDescriptorSet set = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateDescriptorSets(device.handle, &info, &set));
+    nameObject(device.handle, set, objectName(layout));  // a set is named after its layout
     return set;
 }
 

@@ -22,7 +22,7 @@ VkDescriptorSetLayout createDescriptorSetLayout(const Device& device,
 // A pool for exactly `maxSets` sets holding the given descriptor counts (sized from what a scene
 // holds, never from fixed maxima). Zero-count types are left out.
 VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,
-                                      std::vector<VkDescriptorPoolSize> sizes);
+                                      std::vector<VkDescriptorPoolSize> sizes, const std::string& name);
 VkDescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorPool pool,
                                       VkDescriptorSetLayout layout);
 

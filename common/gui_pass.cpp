@@ -121,7 +121,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "gui font");
     pass.descriptorPool =
-        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
+        common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}, "gui");
     pass.fontSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout);
     common::writeImageDescriptor(device, pass.fontSet, 0, pass.sampler, pass.fontAtlas.view,
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

@@ -16,7 +16,8 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
     pass.inputLayout = createDescriptorSetLayout(
         device, {binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "post input");
-    pass.descriptorPool = createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
+    pass.descriptorPool =
+        createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}, "post");
     pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
 
     // FXAA's taps between texels need linear filtering, optional for 32-bit float formats.

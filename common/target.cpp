@@ -83,9 +83,11 @@ void createEncodedViews(Target& target, const Device& device, bool mutableImages
         target.encodedViews = target.views;
         return;
     }
-    for (VkImage image : target.images)
+    for (VkImage image : target.images) {
         target.encodedViews.push_back(
             createImageView(device, image, target.encodedFormat, VK_IMAGE_ASPECT_COLOR_BIT));
+        nameObject(device.handle, target.encodedViews.back(), objectName(image) + " (UNORM view)");
+    }
 }
 
 void createSwapchain(Target& target, const Device& device) {
@@ -163,8 +165,13 @@ void createSwapchain(Target& target, const Device& device) {
     target.colorSpace = surfaceFormat.colorSpace;
     target.extent = extent;
     target.presentLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    for (VkImage image : target.images)
-        target.views.push_back(createImageView(device, image, target.format, VK_IMAGE_ASPECT_COLOR_BIT));
+    for (size_t i = 0; i < target.images.size(); ++i) {
+        std::string name = "swapchain image " + std::to_string(i);
+        nameObject(device.handle, target.images[i], name);
+        target.views.push_back(
+            createImageView(device, target.images[i], target.format, VK_IMAGE_ASPECT_COLOR_BIT));
+        nameObject(device.handle, target.views.back(), name);
+    }
     createEncodedViews(target, device, mutableImages);
     target.presentedSinceRetiring.assign(target.images.size(), false);
 }
@@ -303,8 +310,11 @@ void createTargetImages(Target& target, const Device& device) {
     } else {
         createOffscreen(target, device);
     }
-    for (size_t i = 0; i < target.images.size(); ++i)
+    for (size_t i = 0; i < target.images.size(); ++i) {
         target.renderFinished.push_back(createSemaphore(device));
+        nameObject(device.handle, target.renderFinished.back(),
+                   "target image " + std::to_string(i) + " rendered");
+    }
     target.resized = false;
 }
 
@@ -374,6 +384,7 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
             VkFence fence = VK_NULL_HANDLE;
             if (target.spareFences.empty()) {
                 fence = createFence(device, false);
+                nameObject(device.handle, fence, "present fence");
             } else {
                 fence = target.spareFences.back();
                 target.spareFences.pop_back();

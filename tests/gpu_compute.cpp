@@ -22,7 +22,8 @@ void runCompute(const common::Device& device, const std::filesystem::path& spirv
     VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &setInfo, nullptr, &setLayout));
     VkDescriptorPool pool = common::createDescriptorPool(
         device, 1,
-        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform}});
+        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform}},
+        "compute");
     VkDescriptorSet set = common::allocateDescriptorSet(device, pool, setLayout);
     for (uint32_t i = 0; i < bindings.size(); ++i)
         common::writeBufferDescriptor(device, set, i, bindings[i].type, bindings[i].buffer, VK_WHOLE_SIZE);

@@ -23,14 +23,24 @@ file(GENERATE OUTPUT ${NAMES_LAYER_DIR}/vulkan/implicit_layer.d/VkLayer_vkbook_o
 }
 ]])
 
-# names_test(NAME LABELS a,b,c COMMAND chapter options...): the run's objects all named, its
-# passes labelled a, b, c; with --validation, whose messages then name our objects.
+# names_test(NAME LABELS a,b,c [WINDOW] COMMAND chapter options...): the run's objects all named,
+# its passes labelled a, b, c; with --validation, whose messages then name our objects. Headless,
+# or in a window under Xvfb (the swapchain, its images and semaphores).
 function(names_test name)
-    cmake_parse_arguments(N "" "LABELS" "COMMAND" ${ARGN})
+    cmake_parse_arguments(N "WINDOW" "LABELS" "COMMAND" ${ARGN})
+    set(prefix "")
+    set(mode --headless)
+    if(N_WINDOW)
+        if(NOT XVFB_RUN)
+            return()
+        endif()
+        set(prefix ${XVFB_RUN} -a -s "-screen 0 1280x1024x24")
+        set(mode "")
+    endif()
     chapter_test(${name}
-        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/names_check.sh ${TEST_OUT}/${name}.names ${N_LABELS} ${N_COMMAND}
-                --headless --validation --width 320 --height 180 --frames 3
-        EXPECT_STDOUT "image: [1-9][0-9]* named.*buffer: [1-9].*pipeline: [1-9].*shader-module: [1-9].*descriptor-set-layout: .*command-pool: [1-9]")
+        COMMAND ${prefix} ${CMAKE_CURRENT_SOURCE_DIR}/names_check.sh ${TEST_OUT}/${name}.names ${N_LABELS} ${N_COMMAND}
+                ${mode} --validation --width 320 --height 180 --frames 3
+        EXPECT_STDOUT "image: [0-9]+ named.*buffer: [1-9].*pipeline: [1-9].*shader-module: [1-9].*descriptor-set-layout: .*command-pool: [1-9].*semaphore: [1-9].*fence: [1-9]")
     set_tests_properties(${name} PROPERTIES
         ENVIRONMENT "${TEST_ENV};XDG_DATA_HOME=${NAMES_LAYER_DIR};VKBOOK_NAMES_LAYER=1")
 endfunction()
@@ -41,4 +51,6 @@ names_test(names.chapter-14 LABELS scene,light,post,gui COMMAND $<TARGET_FILE:ch
 names_test(names.chapter-15 LABELS scene,light,post,gui COMMAND $<TARGET_FILE:chapter-15> --gui)
 names_test(names.chapter-15-lab LABELS scene,cull,light,post,gui
     COMMAND $<TARGET_FILE:chapter-15-lab> --gui --light-culling tiled --light-pass compute)
+names_test(names.chapter-15-window LABELS scene,light,post,gui WINDOW COMMAND $<TARGET_FILE:chapter-15> --gui)
+names_test(names.chapter-06-window LABELS triangle WINDOW COMMAND $<TARGET_FILE:chapter-06>)
 names_test(names.chapter-15-lab-forward LABELS forward,post COMMAND $<TARGET_FILE:chapter-15-lab> --shading forward)

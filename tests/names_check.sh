@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs a chapter with the object-names layer (names_layer/names_layer.cpp) and checks its report:
-# every image, buffer, pipeline, shader module, descriptor set layout and command pool the run
-# created has a non-empty name, every label begun was ended, and each expected pass label is there.
+# every object the run created (images, buffers, memory, views, samplers, pipelines and layouts,
+# shader modules, render passes, framebuffers, descriptor set layouts, pools and sets, command
+# pools and buffers, semaphores, fences, query pools, swapchains) has a non-empty name, every label begun was ended, and each expected pass label is there.
 #   names_check.sh REPORT LABEL[,LABEL...] CHAPTER [options...]
 set -u
 report=$1 labels=$2
@@ -23,7 +24,8 @@ IFS=, read -ra expected <<< "$labels"
 for label in "${expected[@]}"; do
     grep -qx "label $label" "$report" || { echo "names_check: no pass labelled '$label'"; status=1; }
 done
-for type in image buffer pipeline shader-module descriptor-set-layout command-pool; do
+for type in image buffer memory image-view sampler pipeline pipeline-layout shader-module descriptor-set-layout \
+    descriptor-set command-pool command-buffer semaphore fence; do
     echo "$type: $(grep -c "^named $type " "$report") named"
 done
 echo "labels: $(grep '^label ' "$report" | cut -d' ' -f2- | paste -sd, -)"

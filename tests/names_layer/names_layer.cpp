@@ -3,8 +3,10 @@
 // buffer regions were labelled (vkCmdBeginDebugUtilsLabelEXT) -- so a test can check that every
 // object a chapter creates has a name and every pass a label (tests/names.cmake).
 //
-// Recorded: every image, buffer, graphics or compute pipeline, shader module, descriptor set
-// layout and command pool created, and the names set on them; every label begun and ended. At
+// Recorded: every object the device creates or allocates (images, buffers and their memory, image
+// views, samplers, pipelines and their layouts and cache, shader modules, render passes,
+// framebuffers, descriptor set layouts, pools and sets, command pools and buffers, semaphores,
+// fences, query pools, swapchains), and the names set on them; every label begun and ended. At
 // vkDestroyDevice the layer appends a report to the file VKBOOK_NAMES_REPORT names:
 //   named <type> <name>          an object, and the last name given to it
 //   unnamed <type> <handle>      an object created and never named (or named "")
@@ -59,6 +61,20 @@ struct DeviceData {
         PFN_vkCreateShaderModule createShaderModule;
         PFN_vkCreateDescriptorSetLayout createDescriptorSetLayout;
         PFN_vkCreateCommandPool createCommandPool;
+        PFN_vkAllocateMemory allocateMemory;
+        PFN_vkCreateImageView createImageView;
+        PFN_vkCreateSampler createSampler;
+        PFN_vkCreatePipelineLayout createPipelineLayout;
+        PFN_vkCreatePipelineCache createPipelineCache;
+        PFN_vkCreateRenderPass createRenderPass;
+        PFN_vkCreateFramebuffer createFramebuffer;
+        PFN_vkCreateDescriptorPool createDescriptorPool;
+        PFN_vkCreateSemaphore createSemaphore;
+        PFN_vkCreateFence createFence;
+        PFN_vkCreateQueryPool createQueryPool;
+        PFN_vkCreateSwapchainKHR createSwapchain;
+        PFN_vkAllocateDescriptorSets allocateDescriptorSets;
+        PFN_vkAllocateCommandBuffers allocateCommandBuffers;
         PFN_vkSetDebugUtilsObjectNameEXT setObjectName;
         PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel;
         PFN_vkCmdEndDebugUtilsLabelEXT endLabel;
@@ -151,6 +167,20 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     resolve(data.next.createShaderModule, next, *device, "vkCreateShaderModule");
     resolve(data.next.createDescriptorSetLayout, next, *device, "vkCreateDescriptorSetLayout");
     resolve(data.next.createCommandPool, next, *device, "vkCreateCommandPool");
+    resolve(data.next.allocateMemory, next, *device, "vkAllocateMemory");
+    resolve(data.next.createImageView, next, *device, "vkCreateImageView");
+    resolve(data.next.createSampler, next, *device, "vkCreateSampler");
+    resolve(data.next.createPipelineLayout, next, *device, "vkCreatePipelineLayout");
+    resolve(data.next.createPipelineCache, next, *device, "vkCreatePipelineCache");
+    resolve(data.next.createRenderPass, next, *device, "vkCreateRenderPass");
+    resolve(data.next.createFramebuffer, next, *device, "vkCreateFramebuffer");
+    resolve(data.next.createDescriptorPool, next, *device, "vkCreateDescriptorPool");
+    resolve(data.next.createSemaphore, next, *device, "vkCreateSemaphore");
+    resolve(data.next.createFence, next, *device, "vkCreateFence");
+    resolve(data.next.createQueryPool, next, *device, "vkCreateQueryPool");
+    resolve(data.next.createSwapchain, next, *device, "vkCreateSwapchainKHR");
+    resolve(data.next.allocateDescriptorSets, next, *device, "vkAllocateDescriptorSets");
+    resolve(data.next.allocateCommandBuffers, next, *device, "vkAllocateCommandBuffers");
     resolve(data.next.setObjectName, next, *device, "vkSetDebugUtilsObjectNameEXT");
     resolve(data.next.beginLabel, next, *device, "vkCmdBeginDebugUtilsLabelEXT");
     resolve(data.next.endLabel, next, *device, "vkCmdEndDebugUtilsLabelEXT");
@@ -258,6 +288,59 @@ VKAPI_ATTR VkResult VKAPI_CALL createCommandPool(VkDevice device, const VkComman
     return result;
 }
 
+// The other objects a device makes, each recorded the same way.
+#define RECORD_CREATE(function, member, Info, Handle, type, typeName)                                 \
+    VKAPI_ATTR VkResult VKAPI_CALL function(VkDevice device, const Info* info,                        \
+                                            const VkAllocationCallbacks* allocator, Handle* handle) { \
+        DeviceData& data = deviceData(device);                                                        \
+        VkResult result = data.next.member(device, info, allocator, handle);                          \
+        if (result == VK_SUCCESS) record(data, type, typeName, handle, 1);                            \
+        return result;                                                                                \
+    }
+RECORD_CREATE(allocateMemory, allocateMemory, VkMemoryAllocateInfo, VkDeviceMemory,
+              VK_OBJECT_TYPE_DEVICE_MEMORY, "memory")
+RECORD_CREATE(createImageView, createImageView, VkImageViewCreateInfo, VkImageView, VK_OBJECT_TYPE_IMAGE_VIEW,
+              "image-view")
+RECORD_CREATE(createSampler, createSampler, VkSamplerCreateInfo, VkSampler, VK_OBJECT_TYPE_SAMPLER, "sampler")
+RECORD_CREATE(createPipelineLayout, createPipelineLayout, VkPipelineLayoutCreateInfo, VkPipelineLayout,
+              VK_OBJECT_TYPE_PIPELINE_LAYOUT, "pipeline-layout")
+RECORD_CREATE(createPipelineCache, createPipelineCache, VkPipelineCacheCreateInfo, VkPipelineCache,
+              VK_OBJECT_TYPE_PIPELINE_CACHE, "pipeline-cache")
+RECORD_CREATE(createRenderPass, createRenderPass, VkRenderPassCreateInfo, VkRenderPass,
+              VK_OBJECT_TYPE_RENDER_PASS, "render-pass")
+RECORD_CREATE(createFramebuffer, createFramebuffer, VkFramebufferCreateInfo, VkFramebuffer,
+              VK_OBJECT_TYPE_FRAMEBUFFER, "framebuffer")
+RECORD_CREATE(createDescriptorPool, createDescriptorPool, VkDescriptorPoolCreateInfo, VkDescriptorPool,
+              VK_OBJECT_TYPE_DESCRIPTOR_POOL, "descriptor-pool")
+RECORD_CREATE(createSemaphore, createSemaphore, VkSemaphoreCreateInfo, VkSemaphore, VK_OBJECT_TYPE_SEMAPHORE,
+              "semaphore")
+RECORD_CREATE(createFence, createFence, VkFenceCreateInfo, VkFence, VK_OBJECT_TYPE_FENCE, "fence")
+RECORD_CREATE(createQueryPool, createQueryPool, VkQueryPoolCreateInfo, VkQueryPool, VK_OBJECT_TYPE_QUERY_POOL,
+              "query-pool")
+RECORD_CREATE(createSwapchain, createSwapchain, VkSwapchainCreateInfoKHR, VkSwapchainKHR,
+              VK_OBJECT_TYPE_SWAPCHAIN_KHR, "swapchain")
+#undef RECORD_CREATE
+
+VKAPI_ATTR VkResult VKAPI_CALL allocateDescriptorSets(VkDevice device,
+                                                      const VkDescriptorSetAllocateInfo* info,
+                                                      VkDescriptorSet* sets) {
+    DeviceData& data = deviceData(device);
+    VkResult result = data.next.allocateDescriptorSets(device, info, sets);
+    if (result == VK_SUCCESS)
+        record(data, VK_OBJECT_TYPE_DESCRIPTOR_SET, "descriptor-set", sets, info->descriptorSetCount);
+    return result;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL allocateCommandBuffers(VkDevice device,
+                                                      const VkCommandBufferAllocateInfo* info,
+                                                      VkCommandBuffer* buffers) {
+    DeviceData& data = deviceData(device);
+    VkResult result = data.next.allocateCommandBuffers(device, info, buffers);
+    if (result == VK_SUCCESS)
+        record(data, VK_OBJECT_TYPE_COMMAND_BUFFER, "command-buffer", buffers, info->commandBufferCount);
+    return result;
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL setObjectName(VkDevice device, const VkDebugUtilsObjectNameInfoEXT* info) {
     DeviceData& data = deviceData(device);
     {
@@ -304,6 +387,20 @@ PFN_vkVoidFunction interceptedDeviceCall(const char* name) {
         {"vkCreateShaderModule", reinterpret_cast<PFN_vkVoidFunction>(createShaderModule)},
         {"vkCreateDescriptorSetLayout", reinterpret_cast<PFN_vkVoidFunction>(createDescriptorSetLayout)},
         {"vkCreateCommandPool", reinterpret_cast<PFN_vkVoidFunction>(createCommandPool)},
+        {"vkAllocateMemory", reinterpret_cast<PFN_vkVoidFunction>(allocateMemory)},
+        {"vkCreateImageView", reinterpret_cast<PFN_vkVoidFunction>(createImageView)},
+        {"vkCreateSampler", reinterpret_cast<PFN_vkVoidFunction>(createSampler)},
+        {"vkCreatePipelineLayout", reinterpret_cast<PFN_vkVoidFunction>(createPipelineLayout)},
+        {"vkCreatePipelineCache", reinterpret_cast<PFN_vkVoidFunction>(createPipelineCache)},
+        {"vkCreateRenderPass", reinterpret_cast<PFN_vkVoidFunction>(createRenderPass)},
+        {"vkCreateFramebuffer", reinterpret_cast<PFN_vkVoidFunction>(createFramebuffer)},
+        {"vkCreateDescriptorPool", reinterpret_cast<PFN_vkVoidFunction>(createDescriptorPool)},
+        {"vkCreateSemaphore", reinterpret_cast<PFN_vkVoidFunction>(createSemaphore)},
+        {"vkCreateFence", reinterpret_cast<PFN_vkVoidFunction>(createFence)},
+        {"vkCreateQueryPool", reinterpret_cast<PFN_vkVoidFunction>(createQueryPool)},
+        {"vkCreateSwapchainKHR", reinterpret_cast<PFN_vkVoidFunction>(createSwapchain)},
+        {"vkAllocateDescriptorSets", reinterpret_cast<PFN_vkVoidFunction>(allocateDescriptorSets)},
+        {"vkAllocateCommandBuffers", reinterpret_cast<PFN_vkVoidFunction>(allocateCommandBuffers)},
         {"vkSetDebugUtilsObjectNameEXT", reinterpret_cast<PFN_vkVoidFunction>(setObjectName)},
         {"vkCmdBeginDebugUtilsLabelEXT", reinterpret_cast<PFN_vkVoidFunction>(beginLabel)},
         {"vkCmdEndDebugUtilsLabelEXT", reinterpret_cast<PFN_vkVoidFunction>(endLabel)},
