@@ -113,7 +113,7 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
     if (!source.found) return buildSpirv(source);  // no sources here: the build's SPIR-V
 
     // The book compares the GLSL file's time with the SPIR-V file's; we also look at every file it
-    // includes (shaderc's preprocessor lists them).
+    // includes (the build's dependency file lists them).
     bool changed = !std::filesystem::exists(source.spv);
     for (const std::filesystem::path& file : common::shaderFiles(source))
         changed =
@@ -123,6 +123,10 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
     std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
                 std::string(name).c_str());
     std::fflush(stdout);
-    return ::compileShader(source);  // ours, not common::compileShader
+    std::vector<uint32_t> spirv = ::compileShader(source);  // ours, not common::compileShader
+    // The pipeline is made for the build's shader: an edit that needs another layout is refused.
+    if (std::string change = common::shaderInterfaceChange(source, spirv); !change.empty())
+        throw common::InputError(change);
+    return spirv;
 }
 //< compile-if-changed

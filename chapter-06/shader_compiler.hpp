@@ -19,5 +19,7 @@ std::vector<uint32_t> compileShader(const common::ShaderSource& source);
 // The book's compileShaderIfChanged: the SPIR-V for a shader name ("chapter-06/triangle.frag"),
 // compiled from its GLSL when the GLSL (or a file it includes) is newer than the build's .spv,
 // else the build's .spv; also when the sources are not found (a copied bin/) or this build has
-// no shaderc. Either way the shader is watched for edits (live reload, common/shader_compiler.hpp).
+// no shaderc. Compiled code that does not fit the pipeline made for the build's shader throws
+// common::InputError. Where the sources are found, the shader is watched for edits from then on
+// (live reload, common/shader_compiler.hpp).
 std::vector<uint32_t> compileShaderIfChanged(std::string_view name);

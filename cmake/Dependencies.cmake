@@ -176,8 +176,8 @@ endif()
 # Runtime shader compilation (common/shader_compiler.cpp, chapter-06/shader_compiler.cpp): shaderc
 # compiles GLSL while a chapter runs, as the book's ShaderCompiler does, and SPIRV-Cross reflects a
 # recompiled shader's interface so that a reload never gives a pipeline a shader its layout does
-# not fit. Debian: libshaderc-dev and libspirv-cross-c-shared-dev; Windows and macOS: both are in
-# the Vulkan SDK. Without them the chapters build as before and use the build's SPIR-V only
+# not fit. Debian: libshaderc-dev, glslang-dev and libspirv-cross-c-shared-dev; Windows and macOS:
+# the Vulkan SDK has them. Without them the chapters build as before and use the build's SPIR-V only
 # (--help says so). Target: vkbook::runtime_shaders, with VKBOOK_RUNTIME_SHADERS=1 defined.
 option(VKBOOK_RUNTIME_SHADERS "Compile shaders at run time with shaderc when found (live reload)" ON)
 add_library(vkbook_runtime_shaders INTERFACE)
@@ -218,7 +218,7 @@ if(VKBOOK_RUNTIME_SHADERS)
         set(VKBOOK_HAVE_RUNTIME_SHADERS ON)
     else()
         message(STATUS "shaderc or SPIRV-Cross not found: the chapters use the build's SPIR-V only "
-                       "(Debian: apt-get install libshaderc-dev libspirv-cross-c-shared-dev)")
+                       "(Debian: apt-get install libshaderc-dev glslang-dev libspirv-cross-c-shared-dev)")
     endif()
 endif()
 add_library(vkbook::runtime_shaders ALIAS vkbook_runtime_shaders)

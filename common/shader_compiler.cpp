@@ -132,11 +132,13 @@ shaderc_shader_kind shaderKind(const fs::path& glsl) {
     throw Failure("'" + utf8(glsl) + "': unknown shader stage (expected .vert, .frag or .comp)");
 }
 
-// The interface of a SPIR-V module that its pipeline depends on: the descriptors and push
-// constants the code uses (SPIRV-Cross's reflection of the active ones), the inputs it reads and
-// the outputs it writes, by location. A reloaded shader must fit the old one's pipeline layout
-// and its neighbouring stages: uses no descriptor the layout lacks, no more push constant bytes,
-// reads no input the old one did not, writes every output the old one wrote.
+// The interface of a SPIR-V module that its pipeline depends on, as SPIRV-Cross reflects it: the
+// descriptors (set, binding, kind) and push constant bytes, the inputs and outputs by location and
+// type. The pipeline's layout and neighbouring stages were made for the build's shader, so that
+// one is taken with everything it declares; a recompiled one with what its code uses. It fits when
+// it uses no descriptor the build's declares not (or declares as another kind), no more push
+// constant bytes, reads no input location the build's does not declare (with that type), and still
+// writes every output location the build's declares (with that type).
 struct Interface {
     std::map<std::pair<unsigned, unsigned>, std::string> descriptors;  // (set, binding) -> kind
     size_t pushConstantBytes = 0;
@@ -157,7 +159,7 @@ std::string typeName(spvc_compiler compiler, spvc_type_id id) {
     return name;
 }
 
-Interface reflect(const std::vector<uint32_t>& spirv) {
+Interface reflect(const std::vector<uint32_t>& spirv, bool usedOnly) {
     Interface result;
     spvc_context context = nullptr;
     if (spvc_context_create(&context) != SPVC_SUCCESS) throw Failure("SPIRV-Cross: no context");
@@ -191,19 +193,20 @@ Interface reflect(const std::vector<uint32_t>& spirv) {
         {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, "storage image"},
         {SPVC_RESOURCE_TYPE_SUBPASS_INPUT, "input attachment"},
     };
+    spvc_resources resources = usedOnly ? used : declared;
     for (const auto& [type, kind] : kinds)
-        each(used, type, [&](const spvc_reflected_resource& resource) {
+        each(resources, type, [&](const spvc_reflected_resource& resource) {
             unsigned set = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationDescriptorSet);
             unsigned binding = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationBinding);
             result.descriptors[{set, binding}] = kind;
         });
-    each(used, SPVC_RESOURCE_TYPE_PUSH_CONSTANT, [&](const spvc_reflected_resource& resource) {
+    each(resources, SPVC_RESOURCE_TYPE_PUSH_CONSTANT, [&](const spvc_reflected_resource& resource) {
         size_t size = 0;
         spvc_compiler_get_declared_struct_size(
             compiler, spvc_compiler_get_type_handle(compiler, resource.base_type_id), &size);
         result.pushConstantBytes = std::max(result.pushConstantBytes, size);
     });
-    each(declared, SPVC_RESOURCE_TYPE_STAGE_INPUT, [&](const spvc_reflected_resource& resource) {
+    each(resources, SPVC_RESOURCE_TYPE_STAGE_INPUT, [&](const spvc_reflected_resource& resource) {
         unsigned location = spvc_compiler_get_decoration(compiler, resource.id, SpvDecorationLocation);
         result.inputs[location] = typeName(compiler, resource.type_id);
     });
@@ -220,8 +223,9 @@ std::string interfaceChange(const Interface& before, const Interface& now) {
         auto old = before.descriptors.find(slot);
         std::string where = "set " + std::to_string(slot.first) + " binding " + std::to_string(slot.second);
         if (old == before.descriptors.end())
-            return "it uses " + where + " (" + kind + "), which its pipeline layout does not have";
-        if (old->second != kind) return where + " is now a " + kind + ", the layout has a " + old->second;
+            return "it uses " + where + " (" + kind + "), which the shader its pipeline was made for does not declare";
+        if (old->second != kind)
+            return where + " is now a " + kind + "; the shader its pipeline was made for has a " + old->second;
     }
     if (now.pushConstantBytes > before.pushConstantBytes)
         return "its push constants grew from " + std::to_string(before.pushConstantBytes) + " to " +
@@ -230,7 +234,7 @@ std::string interfaceChange(const Interface& before, const Interface& now) {
         auto old = before.inputs.find(location);
         if (old == before.inputs.end() || old->second != type)
             return "it reads input location " + std::to_string(location) + " (" + type +
-                   "), which the stage before does not give it";
+                   "), which the shader its pipeline was made for does not";
     }
     for (const auto& [location, type] : before.outputs) {
         auto old = now.outputs.find(location);
@@ -243,18 +247,24 @@ std::string interfaceChange(const Interface& before, const Interface& now) {
 #endif  // VKBOOK_RUNTIME_SHADERS
 
 // Checks compiled code against the build's; returns the error message, or empty.
-std::string checkInterface(const Entry& entry, const std::vector<uint32_t>& spirv) {
+std::string checkInterface(const ShaderSource& source, const std::vector<uint32_t>& reference,
+                           const std::vector<uint32_t>& spirv) {
 #if defined(VKBOOK_RUNTIME_SHADERS)
-    if (entry.reference.empty()) return {};
-    std::string change = interfaceChange(reflect(entry.reference), reflect(spirv));
+    if (reference.empty()) return {};
+    std::string change = interfaceChange(reflect(reference, false), reflect(spirv, true));
     if (change.empty()) return {};
-    return utf8(entry.source.glsl) + ": interface changed: " + change +
+    return utf8(source.glsl) + ": interface changed: " + change +
            " (a reload changes shader code only; a new interface needs the C++ that makes the pipeline)";
 #else
-    (void)entry;
+    (void)source;
+    (void)reference;
     (void)spirv;
     return {};
 #endif
+}
+
+std::string checkInterface(const Entry& entry, const std::vector<uint32_t>& spirv) {
+    return checkInterface(entry.source, entry.reference, spirv);
 }
 
 void remember(Entry& entry, const std::vector<fs::path>& files) {
@@ -417,6 +427,11 @@ std::vector<fs::path> shaderFiles(const ShaderSource& source) {
     return preprocessed.files;
 }
 
+std::string shaderInterfaceChange(const ShaderSource& source, const std::vector<uint32_t>& spirv) {
+    if (!fs::exists(source.spv)) return {};
+    return checkInterface(source, readWords(source.spv), spirv);
+}
+
 std::vector<uint32_t> shaderCode(std::string_view name) {
     if (auto known = gState.shaders.find(name); known != gState.shaders.end() && !known->second.spirv.empty())
         return known->second.spirv;
@@ -430,7 +445,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
         return gState.shaders.emplace(std::string(name), std::move(entry)).first->second.spirv;
     }
     // The book's rule, followed through the included files: compile when a file is newer than
-    // the build's SPIR-V. The preprocessor tells which files those are.
+    // the build's SPIR-V. shaderFiles tells which files those are.
     remember(entry, shaderFiles(entry.source));
     bool newer = !built;
     if (built) {

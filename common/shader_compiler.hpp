@@ -32,8 +32,8 @@ bool runtimeShaderCompilation();
 // runChapter, before the chapter starts.
 void configureShaderSources(const std::filesystem::path& shaderDir);
 
-// One line for --help and the start of a run: which applies, runtime compilation from where, or
-// the build's SPIR-V and why.
+// One line, for --help (and at the start of a run with --shader-dir): which applies, runtime
+// compilation from where, or the build's SPIR-V and why.
 std::string shaderSourcesSummary();
 
 // What the build compiled a shader from (<bin>/shaders/<name>.source): the GLSL file in this
@@ -57,14 +57,20 @@ struct ShaderCompilation {
 };
 ShaderCompilation compileShader(const ShaderSource& source);
 
-// The source and every file it includes (shaderc's preprocessor follows the #includes); throws
-// InputError when the preprocessor fails.
+// The source and every file it includes: the build's dependency file (glslangValidator --depfile)
+// says which, with the build's source directory replaced by this run's; where there is none, or
+// it names another source, shaderc's preprocessor follows the #includes (InputError when it fails).
 std::vector<std::filesystem::path> shaderFiles(const ShaderSource& source);
 
+// Empty when SPIR-V compiled from `source` fits the pipeline the code makes for the build's
+// shader (the rules: Interface in shader_compiler.cpp); else "file: interface changed: why".
+std::string shaderInterfaceChange(const ShaderSource& source, const std::vector<uint32_t>& spirv);
+
 // The SPIR-V for a shader name: compiled from its source when the source or a file it includes is
-// newer than the build's .spv (the book's rule), else the build's .spv. A compile error, or a
-// compiled shader whose interface no longer fits the pipeline the code makes for it, throws
-// InputError "file:line: message" (exit code 2). Remembers the shader for shaderSourcesChanged.
+// newer than the build's .spv (the book's rule), else the build's .spv. A compile error throws
+// InputError "file:line: error: ..." and a compiled shader whose interface no longer fits the
+// pipeline the code makes for it "file: interface changed: ..." (exit code 2). Remembers the
+// shader for shaderSourcesChanged.
 std::vector<uint32_t> shaderCode(std::string_view name);
 
 // shaderCode, then vkCreateShaderModule (written out in chapter-06, which introduces it), the
@@ -76,10 +82,11 @@ void watchShader(std::string_view name);
 
 // Live reload, called once a frame: looks at the modification times of every file the loaded
 // shaders came from (at most four times a second) and recompiles the shaders whose files changed.
-// True when at least one changed and every changed shader compiled and fits its pipelines: the
+// True when at least one changed and every loaded shader now compiles and fits its pipelines: the
 // caller then rebuilds its pipelines at this frame boundary, and shaderCode returns the new code.
-// A shader that fails leaves everything as it was, false is returned, the error is printed once
-// and kept (shaderReloadError) until its file is fixed.
+// While any shader fails, nothing changes and false is returned; each failure is printed once
+// and kept (shaderReloadError) until its file is fixed. Also prints the last reload's latency,
+// at the start of the frame after the first one that used it.
 bool shaderSourcesChanged();
 
 // The error of the last failed reload, empty when every shader compiled (the --gui overlay shows it).

@@ -26,6 +26,15 @@ foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/scene.
         EXPECT_STDOUT "error: .*${file}:[0-9]+: error: .*runtime_shaders: error: ok")
     set_property(TEST shaders.${program}.compile-error APPEND PROPERTY ENVIRONMENT FILE=${file})
 endforeach()
+foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/light.frag")
+    list(GET case 0 program)
+    list(GET case 1 file)
+    chapter_test(shaders.${program}.interface-change-refused
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh interface ${SHADER_SOURCES}
+                $<TARGET_FILE:image_compare> $<TARGET_FILE:${program}> ${SMALL}
+        EXPECT_STDOUT "interface changed: .*runtime_shaders: interface: ok")
+    set_property(TEST shaders.${program}.interface-change-refused APPEND PROPERTY ENVIRONMENT FILE=${file})
+endforeach()
 chapter_test(shaders.chapter-06.copied-without-sources
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh no-sources ${SHADER_SOURCES}
             $<TARGET_FILE:image_compare> $<TARGET_FILE:chapter-06> ${SMALL}

@@ -9,6 +9,8 @@
 #               differs from the build's SPIR-V's where the edit says (magenta where red was);
 #   error       a copy with a syntax error at a known line of FILE: exit code 2 and one line
 #               "FILE:LINE: error: ..." on stderr, nothing rendered;
+#   interface   a copy whose FILE reads a descriptor (set 6) the pipeline layout does not have:
+#               exit code 2 and one line "FILE: interface changed: ..." on stderr;
 #   no-sources  the executable and its shaders/ copied elsewhere with the recorded source
 #               directory gone (a copied bin/): --help says the build's SPIR-V is used and why,
 #               and the image is the build's.
@@ -53,6 +55,27 @@ EOF
     [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
     grep -q "$FILE:$line: error: " "$work/stderr" || fail "the error does not name $FILE:$line: $(cat "$work/stderr")"
     [ -e "$work/error.png" ] && fail "an image was written"
+    cat "$work/stderr"
+    ;;
+interface)
+    cp -r "$shaders" "$work/shaders"
+    python3 - "$work/shaders/$FILE" << 'EOF'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+end = text.rindex('}')
+start = text.rindex('\n', 0, end) + 1
+text = text[:start] + '    outColor = extraInput.color;\n' + text[start:]
+at = text.index('layout(location = 0) out vec4 outColor;')
+declaration = 'layout(set = 6, binding = 0) uniform ExtraInput { vec4 color; } extraInput;\n'
+open(path, 'w').write(text[:at] + declaration + text[at:])
+EOF
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" > /dev/null 2> "$work/stderr"
+    status=$?
+    [ $status = 2 ] || fail "exit code $status, expected 2"
+    [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
+    grep -q "$FILE: interface changed: it uses set 6 binding 0 (uniform buffer)" "$work/stderr" ||
+        fail "not refused as an interface change: $(cat "$work/stderr")"
     cat "$work/stderr"
     ;;
 no-sources)
