@@ -223,9 +223,11 @@ std::string interfaceChange(const Interface& before, const Interface& now) {
         auto old = before.descriptors.find(slot);
         std::string where = "set " + std::to_string(slot.first) + " binding " + std::to_string(slot.second);
         if (old == before.descriptors.end())
-            return "it uses " + where + " (" + kind + "), which the shader its pipeline was made for does not declare";
+            return "it uses " + where + " (" + kind +
+                   "), which the shader its pipeline was made for does not declare";
         if (old->second != kind)
-            return where + " is now a " + kind + "; the shader its pipeline was made for has a " + old->second;
+            return where + " is now a " + kind + "; the shader its pipeline was made for has a " +
+                   old->second;
     }
     if (now.pushConstantBytes > before.pushConstantBytes)
         return "its push constants grew from " + std::to_string(before.pushConstantBytes) + " to " +
