@@ -1,525 +1,39 @@
-// glTF 2.0 models through tinygltf, into the structures the OBJ loader fills (common/model.hpp).
-//
-// tinygltf parses the JSON, reads the buffers and hands us the images' bytes; everything it
-// trusts we check first or after: URIs (a model reads only its own files), buffer views against
-// their buffers, every accessor against its buffer view, node indices and cycles, and every
-// number we use. Section numbers in the comments are those of the Khronos glTF 2.0
-// specification (https://registry.khronos.org/glTF/specs/2.0/glTF-2.0.html).
+// The glTF loader, part 3 of 3: the scene. glTF 2.0 models into the structures the OBJ loader
+// fills (common/model.hpp), from the document part 1 checked (common/gltf_document.hpp) and the
+// accessors part 2 reads (common/gltf_accessors.hpp).
 //
 // The default scene's node hierarchy is baked into the vertices (the book's Assimp import does
 // the same with PreTransformVertices): one MeshData per triangle primitive of each node that has
-// a mesh, in the model's own space.
-#include <tiny_gltf.h>
-
+// a mesh, in the model's own space. What that will cost -- vertices and indices after baking,
+// through every node that instances a mesh, and the values decoded -- is added up from the
+// sizes the file declares before anything is decoded, and a model beyond the budget
+// (common/model.hpp) is refused then. Each primitive's corner list is made once, whatever the
+// number of nodes that share it; each node then only transforms the vertices it bakes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <functional>
-#include <limits>
+#include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <nlohmann/json.hpp>
 
 #include "common/check.hpp"
+#include "common/checked.hpp"
 #include "common/files.hpp"
+#include "common/gltf_accessors.hpp"
+#include "common/gltf_document.hpp"
 #include "common/model.hpp"
 
 namespace common {
 namespace {
 
-using nlohmann::json;
-
-// The most elements one accessor may hold (and so the most vertices or indices of a primitive):
-// an accessor that reads a buffer view is bounded by its bytes too, but one made of zeros and
-// sparse values (3.6.2.3) has only its count.
-constexpr uint64_t kMaxAccessorElements = uint64_t{1} << 25;
-// The most vertices a whole model may bake (each is a 56-byte Vertex): 64 Mi, 3.5 GiB.
-constexpr uint64_t kMaxModelVertices = uint64_t{1} << 26;
-// The deepest node hierarchy we walk (a longer chain is almost surely a hostile file).
+// The deepest node hierarchy we walk (a longer chain is almost surely a hostile file). The walk
+// keeps its own stack, so depth costs no call stack; the limit is on what a real scene does.
 constexpr int kMaxNodeDepth = 1024;
-
-std::filesystem::path pathFromUtf8(const std::string& text) {
-    return std::filesystem::path(std::u8string(text.begin(), text.end()));
-}
-
-// %XX escapes decoded (2.8 "URIs": relative references are URI-encoded).
-std::string percentDecoded(const std::string& uri) {
-    std::string out;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        auto hex = [](char c) {
-            return c >= '0' && c <= '9'   ? c - '0'
-                   : c >= 'a' && c <= 'f' ? c - 'a' + 10
-                   : c >= 'A' && c <= 'F' ? c - 'A' + 10
-                                          : -1;
-        };
-        if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
-            out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
-            i += 2;
-        } else {
-            out += uri[i];
-        }
-    }
-    return out;
-}
-
-// A quoted name for messages: at most 64 characters, control characters shown as '?'.
-std::string shown(const std::string& text) {
-    std::string out = text.size() > 64 ? text.substr(0, 64) + "..." : text;
-    for (char& c : out)
-        if (static_cast<unsigned char>(c) < 0x20) c = '?';
-    return "'" + out + "'";
-}
-
-// A model reads only its own files: a URI is a data: URI or a relative path that stays inside
-// the model's directory. An absolute path, another scheme (http:, file:) or a path that climbs out
-// with ".." is refused.
-void checkUri(const std::string& origin, const std::string& where, const std::string& uri) {
-    if (uri.rfind("data:", 0) == 0) return;
-    std::string decoded = percentDecoded(uri);
-    auto fail = [&](const std::string& why) {
-        throw InputError(origin + ": " + where + " " + shown(uri) + " " + why +
-                         " (a model reads only files in its own directory)");
-    };
-    if (decoded.empty()) fail("is empty");
-    if (decoded.find('\0') != std::string::npos) fail("has a NUL character");
-    size_t colon = decoded.find(':'), slash = decoded.find_first_of("/\\");
-    if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
-        fail("is not a relative path");  // a scheme, or a Windows drive ("C:")
-    if (decoded[0] == '/' || decoded[0] == '\\') fail("is an absolute path");
-    std::string cleaned = decoded;
-    std::replace(cleaned.begin(), cleaned.end(), '\\', '/');
-    int depth = 0;
-    size_t start = 0;
-    while (start <= cleaned.size()) {
-        size_t end = cleaned.find('/', start);
-        if (end == std::string::npos) end = cleaned.size();
-        std::string part = cleaned.substr(start, end - start);
-        if (part == "..") {
-            if (--depth < 0) fail("leaves the model's directory");
-        } else if (!part.empty() && part != ".") {
-            ++depth;
-        }
-        start = end + 1;
-    }
-}
-
-// A JSON value that must be a whole number in [0, max], when present.
-bool readIndex(const json& object, const char* key, uint64_t max, uint64_t* value, const std::string& origin,
-               const std::string& where) {
-    if (!object.is_object() || !object.contains(key)) return false;
-    const json& v = object[key];
-    if (!v.is_number_integer() ||
-        (v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0) || v.get<uint64_t>() > max)
-        throw InputError(origin + ": " + where + "." + key + " must be a whole number from 0 to " +
-                         std::to_string(max));
-    *value = v.get<uint64_t>();
-    return true;
-}
-
-// What tinygltf takes on trust, checked on the JSON before it reads anything: the version, the
-// extensions a model requires, every URI, and every buffer view against its buffer (tinygltf
-// reads images out of buffer views unchecked). Returns the URIs that name files.
-struct FileUris {
-    std::vector<std::string> buffers, images;
-};
-
-FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
-    FileUris files;
-    if (!root.is_object()) throw InputError(origin + ": not a glTF file (the JSON is not an object)");
-    if (!root.contains("asset") || !root["asset"].is_object() || !root["asset"].contains("version") ||
-        !root["asset"]["version"].is_string())
-        throw InputError(origin + ": not a glTF file (no asset.version)");
-    std::string version = root["asset"]["version"].get<std::string>();
-    if (version.rfind("2.", 0) != 0)
-        throw InputError(origin + ": glTF version " + shown(version) + "; only glTF 2.0 is read");
-    // 3.2 "Asset" and 3.12 "Specifying Extensions": a model that requires an extension a client
-    // lacks should not be loaded. We implement none of those a model can require (Draco, meshopt,
-    // quantization, texture transforms, Basis Universal textures, ...).
-    if (root.contains("extensionsRequired")) {
-        const json& required = root["extensionsRequired"];
-        if (!required.is_array()) throw InputError(origin + ": extensionsRequired is not an array");
-        for (const json& name : required)
-            throw InputError(origin + ": requires the extension " +
-                             shown(name.is_string() ? name.get<std::string>() : name.dump()) +
-                             ", which this loader does not implement");
-    }
-    auto array = [&](const char* key) -> const json& {
-        static const json empty = json::array();
-        if (!root.contains(key)) return empty;
-        if (!root[key].is_array()) throw InputError(origin + ": '" + key + "' is not an array");
-        return root[key];
-    };
-    const json& buffers = array("buffers");
-    std::vector<uint64_t> bufferBytes;
-    for (size_t i = 0; i < buffers.size(); ++i) {
-        std::string where = "buffers[" + std::to_string(i) + "]";
-        uint64_t bytes = 0;
-        if (!readIndex(buffers[i], "byteLength", kMaxInputFileBytes, &bytes, origin, where) || bytes == 0)
-            throw InputError(origin + ": " + where + ".byteLength is missing or 0");
-        bufferBytes.push_back(bytes);
-        if (buffers[i].contains("uri")) {
-            if (!buffers[i]["uri"].is_string())
-                throw InputError(origin + ": " + where + ".uri is not a string");
-            const std::string uri = buffers[i]["uri"].get<std::string>();
-            checkUri(origin, where + ".uri", uri);
-            if (!uri.starts_with("data:")) files.buffers.push_back(uri);
-        } else if (!glb || i != 0) {
-            throw InputError(origin + ": " + where + " has no uri (only a .glb's first buffer may omit it)");
-        }
-    }
-    const json& views = array("bufferViews");
-    for (size_t i = 0; i < views.size(); ++i) {
-        std::string where = "bufferViews[" + std::to_string(i) + "]";
-        uint64_t buffer = 0, offset = 0, length = 0, stride = 0;
-        if (bufferBytes.empty() ||
-            !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
-            throw InputError(origin + ": " + where + ".buffer is missing or names no buffer");
-        readIndex(views[i], "byteOffset", kMaxInputFileBytes, &offset, origin, where);
-        if (!readIndex(views[i], "byteLength", kMaxInputFileBytes, &length, origin, where) || length == 0)
-            throw InputError(origin + ": " + where + ".byteLength is missing or 0");
-        if (offset + length > bufferBytes[buffer])
-            throw InputError(origin + ": " + where + " (bytes " + std::to_string(offset) + ".." +
-                             std::to_string(offset + length) + ") runs past the end of buffer " +
-                             std::to_string(buffer) + " (" + std::to_string(bufferBytes[buffer]) + " bytes)");
-        // 5.11 "Buffer View": a stride of 4 to 252; 3.6.2.4: a multiple of 4.
-        if (readIndex(views[i], "byteStride", 252, &stride, origin, where) && (stride < 4 || stride % 4 != 0))
-            throw InputError(origin + ": " + where + ".byteStride " + std::to_string(stride) +
-                             " is not a multiple of 4 from 4 to 252");
-    }
-    const json& images = array("images");
-    for (size_t i = 0; i < images.size(); ++i) {
-        std::string where = "images[" + std::to_string(i) + "]";
-        uint64_t view = 0;
-        if (images[i].is_object() && images[i].contains("uri")) {
-            if (!images[i]["uri"].is_string())
-                throw InputError(origin + ": " + where + ".uri is not a string");
-            const std::string uri = images[i]["uri"].get<std::string>();
-            checkUri(origin, where + ".uri", uri);
-            if (!uri.starts_with("data:")) files.images.push_back(uri);
-        } else if (images[i].is_object() && images[i].contains("bufferView") &&
-                   (views.empty() ||
-                    !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
-            throw InputError(origin + ": " + where + ".bufferView names no buffer view");
-        }
-    }
-    return files;
-}
-
-// The file system as tinygltf sees it: files inside the model's directory only (tinygltf also
-// looks in the working directory), regular files only (a pipe would block), no path expansion
-// (tinygltf's own runs the shell's wordexp on the URI), nothing written. Image files are not read
-// here: tinygltf would read each one whole only for us to drop the bytes (the texture upload reads
-// and decodes them, on every core), so they are refused, which tinygltf takes as a warning and
-// keeps the image's URI.
-struct ModelFiles {
-    std::string directory;             // absolute, '/'-separated, UTF-8, no '/' at the end but "/"
-    std::set<std::string> imageFiles;  // the paths tinygltf asks for the images' URIs
-
-    explicit ModelFiles(const std::filesystem::path& dir) {
-        std::u8string generic = dir.generic_u8string();
-        directory.assign(generic.begin(), generic.end());
-        while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
-    }
-    // The path tinygltf asks for a URI, as its JoinPath makes it.
-    std::string join(const std::string& decoded) const {
-        return directory.ends_with('/') ? directory + decoded : directory + "/" + decoded;
-    }
-    // Image files are not read here (see above); a file that is also a buffer is.
-    void skipImages(const FileUris& uris) {
-        for (const std::string& uri : uris.images) imageFiles.insert(join(percentDecoded(uri)));
-        for (std::string uri : uris.buffers) {
-            imageFiles.erase(join(percentDecoded(uri)));
-            std::replace(uri.begin(), uri.end(), '+', ' ');  // tinygltf's decoder also reads '+' as ' '
-            imageFiles.erase(join(percentDecoded(uri)));
-        }
-    }
-};
-
-bool insideModel(const std::string& path, const ModelFiles& files) {
-    const std::string& dir = files.directory;
-    if (dir.ends_with('/')) return path.size() > dir.size() && path.starts_with(dir);  // the root
-    return path.size() > dir.size() + 1 && path.starts_with(dir) && path[dir.size()] == '/';
-}
-
-bool fileExists(const std::string& path, void* user) {
-    const ModelFiles& files = *static_cast<const ModelFiles*>(user);
-    std::error_code ec;
-    return insideModel(path, files) && std::filesystem::is_regular_file(pathFromUtf8(path), ec);
-}
-
-std::string expandFilePath(const std::string& path, void*) {
-    return path;
-}
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    const ModelFiles& files = *static_cast<const ModelFiles*>(user);
-    if (!insideModel(path, files)) {
-        *err = "outside the model's directory";
-        return false;
-    }
-    if (files.imageFiles.count(path)) {
-        *err = "an image file, read by the texture upload";
-        return false;
-    }
-    try {
-        std::string bytes = readInputFile(pathFromUtf8(path));
-        out->assign(bytes.begin(), bytes.end());
-        return true;
-    } catch (const InputError& error) {
-        *err = error.what();
-        return false;
-    }
-}
-
-bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    *err = "a model loader writes no files";
-    return false;
-}
-
-// tinygltf hands over each image's encoded bytes. Those inside the model (a data: URI, a buffer
-// view) are kept, undecoded; an image file is not read here (ModelFiles): the texture upload
-// reads and decodes it, on every core (common/gpu_scene.cpp).
-using EmbeddedImages = std::vector<std::shared_ptr<const std::vector<uint8_t>>>;
-
-bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                    const unsigned char* bytes, int size, void* user) {
-    auto& embedded = *static_cast<EmbeddedImages*>(user);
-    if (index < 0) return false;
-    if (embedded.size() <= size_t(index)) embedded.resize(size_t(index) + 1);
-    if (image->uri.empty() && size > 0)
-        embedded[size_t(index)] = std::make_shared<const std::vector<uint8_t>>(bytes, bytes + size);
-    return true;
-}
-
-// The first line of tinygltf's error text.
-std::string firstLine(std::string text) {
-    text = text.substr(0, text.find('\n'));
-    while (!text.empty() && (text.back() == '\r' || text.back() == ' ')) text.pop_back();
-    return text.empty() ? "cannot be read as glTF" : text;
-}
-
-// ---- Accessors (3.6.2) ---------------------------------------------------------------------
-
-class GltfReader {
-public:
-    GltfReader(const tinygltf::Model& model, std::filesystem::path path)
-        : model_(model), path_(std::move(path)), origin_(utf8(path_)) {}
-
-    [[noreturn]] void fail(const std::string& what) const { throw InputError(origin_ + ": " + what); }
-
-    // Element i of an accessor as `components` floats: float components as they are, normalized
-    // integers mapped to [0, 1] or [-1, 1] (the table of 3.11 "Animations"), plain integers (indices)
-    // converted. Sparse accessors get their substituted values (3.6.2.3).
-    std::vector<float> floats(int index, const std::string& what, std::initializer_list<int> types,
-                              std::initializer_list<int> componentTypes, bool requireNormalized) const {
-        const tinygltf::Accessor& accessor = get(model_.accessors, index, what + " accessor");
-        std::string where = what + " (accessor " + std::to_string(index) + ")";
-        if (std::find(types.begin(), types.end(), accessor.type) == types.end())
-            fail(where + " has the wrong type for its use");
-        bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-        if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) ==
-                componentTypes.end() ||
-            (requireNormalized && !isFloat && !accessor.normalized))
-            fail(where + " has a component type the specification does not allow for it (" +
-                 std::to_string(accessor.componentType) + (accessor.normalized ? ", normalized" : "") + ")");
-        const size_t components = size_t(tinygltf::GetNumComponentsInType(uint32_t(accessor.type)));
-        const size_t count = elementCount(accessor, where);
-        std::vector<float> out(count * components, 0.0f);
-        if (accessor.bufferView >= 0) {
-            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType,
-                             components, true, where);
-            for (size_t i = 0; i < count; ++i)
-                for (size_t c = 0; c < components; ++c)
-                    out[i * components + c] = component(span.data + i * span.stride, c,
-                                                        accessor.componentType, accessor.normalized);
-        }
-        if (accessor.sparse.isSparse) {
-            const auto& sparse = accessor.sparse;
-            if (sparse.count < 1 || size_t(sparse.count) > count)
-                fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
-                     std::to_string(count) + " elements");
-            int indexType = sparse.indices.componentType;
-            if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-                fail(where + " has sparse indices of component type " + std::to_string(indexType));
-            Span indices = view(sparse.indices.bufferView, size_t(std::max(sparse.indices.byteOffset, 0)),
-                                size_t(sparse.count), indexType, 1, false, where + " sparse indices");
-            Span values = view(sparse.values.bufferView, size_t(std::max(sparse.values.byteOffset, 0)),
-                               size_t(sparse.count), accessor.componentType, components, false,
-                               where + " sparse values");
-            for (size_t k = 0; k < size_t(sparse.count); ++k) {
-                float target = component(indices.data + k * indices.stride, 0, indexType, false);
-                if (!(target < float(count))) fail(where + " has a sparse index past its elements");
-                for (size_t c = 0; c < components; ++c)
-                    out[size_t(target) * components + c] = component(
-                        values.data + k * values.stride, c, accessor.componentType, accessor.normalized);
-            }
-        }
-        for (float value : out)
-            if (!std::isfinite(value)) fail(where + " holds a non-finite number");
-        return out;
-    }
-
-    // An index accessor (3.7.2.1): unsigned byte, short or int scalars, each below `vertices`.
-    std::vector<uint32_t> indices(int index, size_t vertices, const std::string& what) const {
-        const tinygltf::Accessor& accessor = get(model_.accessors, index, what + " accessor");
-        if (accessor.type != TINYGLTF_TYPE_SCALAR || accessor.normalized ||
-            (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-             accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-             accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(what + " (accessor " + std::to_string(index) +
-                 ") is not unsigned byte, short or int scalars (3.7.2.1)");
-        std::vector<float> values;  // exact: 32-bit indices are checked below against at most 2^25 vertices
-        const size_t count = elementCount(accessor, what);
-        std::vector<uint32_t> out(count);
-        if (accessor.bufferView >= 0 && !accessor.sparse.isSparse) {
-            Span span =
-                view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, 1, false, what);
-            for (size_t i = 0; i < count; ++i)
-                out[i] = integer(span.data + i * span.stride, accessor.componentType);
-        } else {
-            values = floats(index, what, {TINYGLTF_TYPE_SCALAR},
-                            {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-                            false);
-            for (size_t i = 0; i < count; ++i)
-                out[i] = values[i] < 4294967296.0f ? uint32_t(values[i]) : UINT32_MAX;
-        }
-        for (uint32_t i : out)
-            if (i >= vertices)
-                fail(what + " (accessor " + std::to_string(index) + ") refers to vertex " +
-                     std::to_string(i) + " of " + std::to_string(vertices));
-        return out;
-    }
-
-    size_t count(int index, const std::string& what) const {
-        return elementCount(get(model_.accessors, index, what + " accessor"), what);
-    }
-
-    template <typename T>
-    const T& get(const std::vector<T>& items, int index, const std::string& what) const {
-        if (index < 0 || size_t(index) >= items.size())
-            fail(what + " " + std::to_string(index) + " does not exist (the model has " +
-                 std::to_string(items.size()) + ")");
-        return items[size_t(index)];
-    }
-
-    const std::string& origin() const { return origin_; }
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    struct Span {
-        const uint8_t* data;
-        size_t stride;
-    };
-
-    size_t elementCount(const tinygltf::Accessor& accessor, const std::string& where) const {
-        if (accessor.count < 1 || accessor.count > kMaxAccessorElements)
-            fail(where + " has " + std::to_string(accessor.count) + " elements (1 to " +
-                 std::to_string(kMaxAccessorElements) + " are read)");
-        return accessor.count;
-    }
-
-    static size_t componentBytes(int componentType) {
-        switch (componentType) {
-            case TINYGLTF_COMPONENT_TYPE_BYTE:
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                return 1;
-            case TINYGLTF_COMPONENT_TYPE_SHORT:
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-                return 2;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-            case TINYGLTF_COMPONENT_TYPE_FLOAT:
-                return 4;
-            default:
-                return 0;
-        }
-    }
-
-    // Where `count` elements of `components` x `componentType` start in a buffer view, and the
-    // stride between them, checked to lie wholly inside the view and the view inside its buffer
-    // (3.6.2.4: "the last element must fit in the buffer view").
-    Span view(int viewIndex, size_t byteOffset, size_t count, int componentType, size_t components,
-              bool strided, const std::string& where) const {
-        const tinygltf::BufferView& view = get(model_.bufferViews, viewIndex, where + ": buffer view");
-        const tinygltf::Buffer& buffer = get(model_.buffers, view.buffer, where + ": buffer");
-        size_t size = componentBytes(componentType);
-        if (size == 0) fail(where + " has the unknown component type " + std::to_string(componentType));
-        uint64_t element = uint64_t(size) * components;
-        uint64_t stride = strided && view.byteStride != 0 ? uint64_t(view.byteStride) : element;
-        if (stride < element)
-            fail(where + ": byteStride " + std::to_string(stride) + " is smaller than an element (" +
-                 std::to_string(element) + " bytes)");
-        if (byteOffset % size != 0 || view.byteOffset % size != 0)
-            fail(where + " is not aligned to its component size (3.6.2.4)");
-        uint64_t end = uint64_t(view.byteOffset) + byteOffset + (uint64_t(count) - 1) * stride + element;
-        if (uint64_t(view.byteOffset) + view.byteLength > buffer.data.size() ||
-            uint64_t(byteOffset) + (uint64_t(count) - 1) * stride + element > view.byteLength)
-            fail(where + ": " + std::to_string(count) + " elements end at byte " + std::to_string(end) +
-                 ", past the end of buffer view " + std::to_string(viewIndex) + " or its buffer");
-        return {buffer.data.data() + view.byteOffset + byteOffset, size_t(stride)};
-    }
-
-    static uint32_t integer(const uint8_t* element, int componentType) {
-        switch (componentType) {
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                return element[0];
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                uint16_t v;
-                std::memcpy(&v, element, 2);
-                return v;
-            }
-            default: {
-                uint32_t v;
-                std::memcpy(&v, element, 4);
-                return v;
-            }
-        }
-    }
-
-    static float component(const uint8_t* element, size_t c, int componentType, bool normalized) {
-        switch (componentType) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-                float v;
-                std::memcpy(&v, element + 4 * c, 4);
-                return v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-                float v = element[c];
-                return normalized ? v / 255.0f : v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_BYTE: {
-                float v = float(int8_t(element[c]));
-                return normalized ? std::max(v / 127.0f, -1.0f) : v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                uint16_t v;
-                std::memcpy(&v, element + 2 * c, 2);
-                return normalized ? float(v) / 65535.0f : float(v);
-            }
-            case TINYGLTF_COMPONENT_TYPE_SHORT: {
-                int16_t v;
-                std::memcpy(&v, element + 2 * c, 2);
-                return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
-            }
-            default: {
-                uint32_t v;
-                std::memcpy(&v, element + 4 * c, 4);
-                return float(v);
-            }
-        }
-    }
-
-    const tinygltf::Model& model_;
-    std::filesystem::path path_;
-    std::string origin_;
-};
 
 // Warnings for what we read but do not draw: one line each, once per model, printed when the
 // model has loaded (a model that is refused gets its one error line only).
@@ -603,9 +117,8 @@ SamplerDesc samplerDesc(const tinygltf::Sampler& s) {
 
 class MaterialReader {
 public:
-    MaterialReader(const tinygltf::Model& model, const GltfReader& reader, const EmbeddedImages& embedded,
-                   Skipped& skipped)
-        : model_(model), reader_(reader), embedded_(embedded), skipped_(skipped) {}
+    MaterialReader(const GltfDocument& document, const GltfReader& reader, Skipped& skipped)
+        : model_(document.model), reader_(reader), embedded_(document.embedded), skipped_(skipped) {}
 
     //> gltf-material
     // The metallic-roughness material (3.9.2) in the terms of the OBJ loader's MaterialData.
@@ -703,7 +216,7 @@ private:
     Skipped& skipped_;
 };
 
-// ---- Nodes and meshes (3.5, 3.7) -----------------------------------------------------------
+// ---- Node transforms (3.5.3) ----------------------------------------------------------------
 
 glm::dmat4 localMatrix(const tinygltf::Node& node, const GltfReader& reader, const std::string& where) {
     auto check = [&](const std::vector<double>& values, size_t size, const char* name) {
@@ -731,236 +244,25 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const GltfReader& reader, con
     return m;
 }
 
-// One triangle primitive of a node, baked into the model's space.
-MeshData bakePrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
-                       const GltfReader& reader, const std::string& where, Skipped& skipped,
-                       uint32_t defaultMaterial) {
-    auto attribute = [&](const char* name) {
-        auto it = primitive.attributes.find(name);
-        return it == primitive.attributes.end() ? -1 : it->second;
-    };
-    constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    int positionAccessor = attribute("POSITION");
-    if (positionAccessor < 0) reader.fail(where + " has no POSITION");
-    // 3.7.2.1 "Overview": which component types each attribute may have.
-    std::vector<float> positions =
-        reader.floats(positionAccessor, where + " POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
-    const size_t vertexCount = positions.size() / 3;
-    auto sameCount = [&](int accessor, const char* name) {
-        if (accessor >= 0 && reader.count(accessor, where + " " + name) != vertexCount)
-            reader.fail(where + " " + name + " has another count than POSITION");
-    };
-    int normalAccessor = attribute("NORMAL"), tangentAccessor = attribute("TANGENT"),
-        uvAccessor = attribute("TEXCOORD_0");
-    sameCount(normalAccessor, "NORMAL");
-    sameCount(tangentAccessor, "TANGENT");
-    sameCount(uvAccessor, "TEXCOORD_0");
-    std::vector<float> normals, tangents, uvs;
-    if (normalAccessor >= 0)
-        normals = reader.floats(normalAccessor, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
-    if (tangentAccessor >= 0 && normalAccessor >= 0)  // 3.7.2.1: without normals, tangents are ignored
-        tangents = reader.floats(tangentAccessor, where + " TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat}, false);
-    if (uvAccessor >= 0)
-        uvs = reader.floats(
-            uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
-            {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
-    if (primitive.targets.size()) skipped.note("morph targets are not applied (drawn in the base shape)");
-    for (const auto& [name, accessor] : primitive.attributes) {
-        if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn unskinned)");
-        if (name.rfind("COLOR_", 0) == 0) skipped.note("vertex colours (COLOR_n) are not used");
-    }
 
-    // The primitive's corners as triangles, counter-clockwise (3.7.2.1, its topology types).
-    std::vector<uint32_t> corners;
-    if (primitive.indices >= 0) {
-        corners = reader.indices(primitive.indices, vertexCount, where + " indices");
-    } else {
-        corners.resize(vertexCount);
-        for (uint32_t i = 0; i < vertexCount; ++i) corners[i] = i;
-    }
-    std::vector<uint32_t> triangles;
-    if (primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == -1) {
-        triangles.assign(corners.begin(), corners.end() - long(corners.size() % 3));
-    } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-        for (size_t i = 0; i + 2 < corners.size(); ++i)  // p_i = {v_i, v_i+(1+i%2), v_i+(2-i%2)}
-            triangles.insert(triangles.end(), {corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]});
-    } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-        for (size_t i = 0; i + 2 < corners.size(); ++i)  // p_i = {v_i+1, v_i+2, v_0}
-            triangles.insert(triangles.end(), {corners[i + 1], corners[i + 2], corners[0]});
-    }
+// ---- Nodes (3.5) ---------------------------------------------------------------------------
 
-    MeshData mesh;
-    mesh.material = primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial;
-    // Positions by the node's world matrix, normals by its inverse-transpose; a mirroring
-    // transform (negative determinant) turns the winding around (3.7.4 "Instantiation").
-    const glm::dmat3 linear(world), normalMatrix = glm::transpose(glm::inverse(linear));
-    const bool mirrored = glm::determinant(linear) < 0.0;
-    bool unusableTangent = false;  // a file's tangent along its normal, or zero
-    auto vertex = [&](uint32_t i) {
-        Vertex v{};
-        glm::dvec4 p = world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0);
-        v.position = glm::vec3(p);
-        if (!normals.empty()) {
-            glm::dvec3 n0(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-            glm::dvec3 n = unitOr(normalMatrix * n0, glm::dvec3(0.0, 1.0, 0.0));
-            v.normal = glm::vec3(n);
-            if (!tangents.empty()) {
-                // 3.7.2.1: bitangent = cross(normal, tangent.xyz) * w, in the primitive's space;
-                // tangent and bitangent transformed as directions in the surface, then the frame
-                // made orthonormal about the normal (a file's tangent need not be perpendicular to
-                // its normal), keeping the bitangent's side.
-                glm::dvec3 t0(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
-                double w = tangents[4 * i + 3] < 0.0f ? -1.0 : 1.0;
-                glm::dvec3 t = linear * t0, b = linear * (glm::cross(n0, t0) * w);
-                t = unitOr(t, glm::dvec3(0.0));
-                t = unitOr(t - n * glm::dot(n, t), glm::dvec3(0.0));  // Gram-Schmidt
-                if (t == glm::dvec3(0.0)) {
-                    unusableTangent = true;  // computed for the whole primitive below instead
-                } else {
-                    glm::dvec3 side = glm::cross(n, t);
-                    v.tangent = glm::vec3(t);
-                    v.bitangent = glm::vec3(glm::dot(side, unitOr(b, side)) < 0.0 ? -side : side);
-                }
-            }
-        }
-        if (!uvs.empty())
-            v.uv = {uvs[2 * i], uvs[2 * i + 1]};  // (0, 0) is the image's first texel (3.8 "Texture Data")
-        if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z))
-            reader.fail(where + ": a transformed position is not finite");
-        return v;
-    };
+// A node that draws a mesh, with its transform into the model's space.
+struct NodeInstance {
+    int node;
+    glm::dmat4 world;
+};
 
-    if (normals.empty()) {
-        // 3.7.2.1: without NORMAL, flat normals: each triangle gets its own three vertices.
-        for (size_t k = 0; k + 2 < triangles.size(); k += 3) {
-            Vertex a = vertex(triangles[k]), b = vertex(triangles[k + 1]), c = vertex(triangles[k + 2]);
-            if (mirrored) std::swap(b, c);
-            glm::dvec3 n =
-                glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
-            glm::vec3 flat =
-                glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
-            for (Vertex* v : {&a, &b, &c}) {
-                v->normal = flat;
-                mesh.indices.push_back(uint32_t(mesh.vertices.size()));
-                mesh.vertices.push_back(*v);
-            }
-        }
-    } else {
-        // Only the vertices the triangles use, in the order first used.
-        std::vector<uint32_t> remap(vertexCount, UINT32_MAX);
-        for (size_t k = 0; k < triangles.size(); ++k) {
-            uint32_t& slot = remap[triangles[k]];
-            if (slot == UINT32_MAX) {
-                slot = uint32_t(mesh.vertices.size());
-                mesh.vertices.push_back(vertex(triangles[k]));
-            }
-            mesh.indices.push_back(slot);
-        }
-        if (mirrored)
-            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
-                std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
-    }
-    // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp), or
-    // where one of its tangents is unusable.
-    if (tangents.empty() || unusableTangent) computeTangents(mesh);
-    return mesh;
-}
-
-}  // namespace
-
-ModelData loadGltfModel(const std::filesystem::path& path) {
-    const std::string origin = utf8(path);
-    std::string bytes = readInputFile(path);
-    const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-
-    // The JSON: the whole .gltf, or a .glb's first chunk (4.4 "Binary glTF Layout").
-    std::string jsonText;
-    if (glb) {
-        auto u32 = [&](size_t at) {
-            uint32_t v;
-            std::memcpy(&v, bytes.data() + at, 4);
-            return v;
-        };
-        if (bytes.size() < 20) throw InputError(origin + ": a GLB file shorter than its headers");
-        if (u32(4) != 2)
-            throw InputError(origin + ": GLB version " + std::to_string(u32(4)) + "; only 2 is read");
-        if (u32(8) != bytes.size())
-            throw InputError(origin + ": the GLB header says " + std::to_string(u32(8)) +
-                             " bytes, the file has " + std::to_string(bytes.size()));
-        if (u32(16) != 0x4E4F534Au) throw InputError(origin + ": the GLB's first chunk is not JSON");
-        if (uint64_t(u32(12)) + 20 > bytes.size())
-            throw InputError(origin + ": the GLB's JSON chunk (" + std::to_string(u32(12)) +
-                             " bytes) runs past the end of the file");
-        jsonText.assign(bytes.data() + 20, u32(12));
-        size_t next = 20 + size_t(u32(12));
-        if (next < bytes.size()) {
-            if (next + 8 > bytes.size() || uint64_t(u32(next)) + next + 8 > bytes.size())
-                throw InputError(origin + ": the GLB's binary chunk runs past the end of the file");
-            if (u32(next + 4) != 0x004E4942u)
-                throw InputError(origin + ": the GLB's second chunk is not BIN");
-        }
-    } else {
-        jsonText = bytes;
-    }
-    if (jsonText.starts_with("\xef\xbb\xbf")) jsonText.erase(0, 3);
-    FileUris fileUris;
-    {
-        json root;
-        try {
-            root = json::parse(jsonText);
-        } catch (const json::exception& error) {
-            std::string what = error.what();
-            size_t at = what.find("] ");
-            throw InputError(origin +
-                             ": invalid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
-        }
-        fileUris = checkGltfJson(root, origin, glb);
-    }
-
-    //> gltf-parse
-    // tinygltf parses the file and reads its buffers, through our file callbacks only.
-    ModelFiles files(std::filesystem::absolute(path).parent_path());
-    files.skipImages(fileUris);
-    tinygltf::TinyGLTF loader;
-    loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, &files});
-    EmbeddedImages embedded;
-    loader.SetImageLoader(keepImageBytes, &embedded);
-    tinygltf::Model model;
-    std::string error, warning;
-    bool parsed = glb ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                                    reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                    unsigned(bytes.size()), files.directory)
-                      : loader.LoadASCIIFromString(&model, &error, &warning, jsonText.data(),
-                                                   unsigned(jsonText.size()), files.directory);
-    if (!parsed) throw InputError(origin + ": " + firstLine(error));
-    //< gltf-parse
-    bytes.clear();
-    bytes.shrink_to_fit();
-
-    GltfReader reader(model, path);
-    Skipped skipped(origin);
-    if (!model.cameras.empty()) skipped.note("its cameras are not used (the scene's camera is)");
-    if (!model.animations.empty()) skipped.note("animations are not played");
-
-    ModelData out;
-    MaterialReader materials(model, reader, embedded, skipped);
-    for (int i = 0; i < int(model.materials.size()); ++i) out.materials.push_back(materials.material(i));
-    for (const std::string& name : model.extensionsUsed)  // those the materials used are noted already
-        skipped.extension(name, "extension " + name + " is not used");
-    const uint32_t defaultMaterial = uint32_t(out.materials.size());
-    // 3.9.6 "Default Material": a primitive without one is opaque white, metallic 1, roughness 1.
-    out.materials.push_back(
-        MaterialData{.name = "default", .roughness = 1.0f, .metallic = 1.0f, .alphaMode = AlphaMode::Opaque});
-
-    // 3.5.1 "Scenes": the default scene's root nodes (every root node when there is no scene).
+// 3.5.1 "Scenes" and 3.5.2 "Nodes and Hierarchy": the default scene's nodes (every root node
+// when there is no scene), checked to form a forest (one parent each, no cycles), walked with a
+// stack of our own. Returns the nodes that have a mesh, in the order a depth-first walk meets them.
+std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const GltfReader& reader, Skipped& skipped) {
     std::vector<int> parents(model.nodes.size(), -1);
     for (size_t i = 0; i < model.nodes.size(); ++i)
         for (int child : model.nodes[i].children) {
             reader.get(model.nodes, child, "nodes[" + std::to_string(i) + "].children: node");
-            // 3.5.2 "Nodes and Hierarchy": the nodes form a forest, one parent each.
             if (parents[size_t(child)] >= 0 || size_t(child) == i)
-                reader.fail("node " + std::to_string(child) +
-                            " has more than one parent or is its own child");
+                reader.fail("node " + std::to_string(child) + " has more than one parent or is its own child");
             parents[size_t(child)] = int(i);
         }
     // With one parent each, a node that no root reaches lies on a cycle (or below one).
@@ -976,8 +278,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             for (int child : model.nodes[size_t(node)].children) stack.push_back(child);
         }
         for (size_t i = 0; i < model.nodes.size(); ++i)
-            if (!reached[i])
-                reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
+            if (!reached[i]) reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
     }
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -985,59 +286,327 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         roots = reader.get(model.scenes, scene, "scene").nodes;
         for (int root : roots) {
             reader.get(model.nodes, root, "scenes[" + std::to_string(scene) + "].nodes: node");
-            if (parents[size_t(root)] >= 0)
-                reader.fail("node " + std::to_string(root) + " is a root and a child");
+            if (parents[size_t(root)] >= 0) reader.fail("node " + std::to_string(root) + " is a root and a child");
         }
     } else {
         for (size_t i = 0; i < model.nodes.size(); ++i)
             if (parents[i] < 0) roots.push_back(int(i));
     }
 
-    uint64_t vertices = 0;
-    bool first = true;
-    std::function<void(int, const glm::dmat4&, int)> visit = [&](int index, const glm::dmat4& parent,
-                                                                 int depth) {
-        if (depth > kMaxNodeDepth)
+    // Depth first, children in their order, as a recursive walk would go: the stack holds what is
+    // left to visit, the last entry first.
+    struct Pending {
+        int node;
+        glm::dmat4 parent;
+        int depth;
+    };
+    std::vector<Pending> stack;
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, glm::dmat4(1.0), 0});
+    std::vector<NodeInstance> instances;
+    while (!stack.empty()) {
+        Pending pending = stack.back();
+        stack.pop_back();
+        if (pending.depth > kMaxNodeDepth)
             reader.fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " (a cycle?)");
-        const tinygltf::Node& node = model.nodes[size_t(index)];
-        std::string where = "nodes[" + std::to_string(index) + "]";
-        glm::dmat4 world = parent * localMatrix(node, reader, where);
+        const tinygltf::Node& node = model.nodes[size_t(pending.node)];
+        const std::string where = "nodes[" + std::to_string(pending.node) + "]";
+        const glm::dmat4 world = pending.parent * localMatrix(node, reader, where);
         if (node.skin >= 0) skipped.note("skins are not applied (drawn unskinned)");
         if (node.mesh >= 0) {
-            const tinygltf::Mesh& mesh = reader.get(model.meshes, node.mesh, where + ".mesh: mesh");
-            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-                const tinygltf::Primitive& primitive = mesh.primitives[p];
-                std::string at =
-                    "meshes[" + std::to_string(node.mesh) + "].primitives[" + std::to_string(p) + "]";
-                if (primitive.material >= 0)
-                    reader.get(model.materials, primitive.material, at + ".material: material");
-                int mode = primitive.mode;
-                if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-                    mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-                    if (mode < 0 || mode > 6)
-                        reader.fail(at + ".mode " + std::to_string(mode) + " is not 0 to 6");
-                    skipped.note("points and lines are not drawn");
-                    continue;
-                }
-                // A node scaled by zero shows nothing (and has no inverse for its normals).
-                if (std::abs(glm::determinant(glm::dmat3(world))) < 1e-300) continue;
-                MeshData baked = bakePrimitive(primitive, world, reader, at, skipped, defaultMaterial);
-                if (baked.indices.empty()) continue;
-                vertices += baked.vertices.size();
-                if (vertices > kMaxModelVertices)
-                    reader.fail("more than " + std::to_string(kMaxModelVertices) + " vertices in all");
-                for (const Vertex& v : baked.vertices) {
-                    out.boundsMin = first ? v.position : glm::min(out.boundsMin, v.position);
-                    out.boundsMax = first ? v.position : glm::max(out.boundsMax, v.position);
-                    first = false;
-                }
-                out.meshes.push_back(std::move(baked));
+            reader.get(model.meshes, node.mesh, where + ".mesh: mesh");
+            instances.push_back({pending.node, world});
+        }
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, world, pending.depth + 1});
+    }
+    return instances;
+}
+
+// ---- Meshes (3.7) --------------------------------------------------------------------------
+
+int attribute(const tinygltf::Primitive& primitive, const char* name) {
+    auto it = primitive.attributes.find(name);
+    return it == primitive.attributes.end() ? -1 : it->second;
+}
+
+// Whether a primitive is drawn (3.7.2.1 topology types): triangles, strips and fans are; points
+// and lines are skipped with a warning; any other mode is refused.
+bool drawsTriangles(const tinygltf::Primitive& primitive, const GltfReader& reader, const std::string& at,
+                    Skipped& skipped) {
+    const int mode = primitive.mode;
+    if (mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+        mode == TINYGLTF_MODE_TRIANGLE_FAN)
+        return true;
+    if (mode < 0 || mode > 6) reader.fail(at + ".mode " + std::to_string(mode) + " is not 0 to 6");
+    skipped.note("points and lines are not drawn");
+    return false;
+}
+
+// A node scaled by zero shows nothing (and has no inverse for its normals).
+bool degenerate(const glm::dmat4& world) {
+    return std::abs(glm::determinant(glm::dmat3(world))) < 1e-300;
+}
+
+std::string primitiveName(int mesh, size_t primitive) {
+    return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]";
+}
+
+// What the default scene will cost, from the counts the document declares (checked by part 1):
+// refused here, before any accessor is decoded, when it exceeds the budget of common/model.hpp.
+void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& instances, const GltfReader& reader,
+                 Skipped& skipped) {
+    uint64_t vertices = 0, indices = 0, valuesRead = 0;
+    std::set<std::pair<int, size_t>> primitivesSeen;
+    std::set<int> accessorsSeen;
+    auto read = [&](int accessor, const std::string& what) {
+        if (accessor >= 0 && accessorsSeen.insert(accessor).second)
+            valuesRead = saturatingAdd(valuesRead, saturatingMul(reader.count(accessor, what), reader.components(accessor)));
+    };
+    for (const NodeInstance& instance : instances) {
+        if (degenerate(instance.world)) continue;
+        const int meshIndex = model.nodes[size_t(instance.node)].mesh;
+        const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            const std::string at = primitiveName(meshIndex, p);
+            if (!drawsTriangles(primitive, reader, at, skipped)) continue;
+            const int position = attribute(primitive, "POSITION");
+            if (position < 0) reader.fail(at + " has no POSITION");
+            const uint64_t vertexCount = reader.count(position, at + " POSITION");
+            const uint64_t corners = primitive.indices >= 0 ? reader.count(primitive.indices, at + " indices") : vertexCount;
+            const uint64_t triangles = primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+                                               primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN
+                                           ? (corners >= 3 ? corners - 2 : 0)
+                                           : corners / 3;
+            const bool normals = attribute(primitive, "NORMAL") >= 0;
+            // Flat normals give each triangle three vertices of its own; with normals, a vertex
+            // is baked once however many triangles use it.
+            vertices = saturatingAdd(vertices, normals ? std::min(vertexCount, 3 * triangles) : 3 * triangles);
+            indices = saturatingAdd(indices, 3 * triangles);
+            if (primitivesSeen.insert({meshIndex, p}).second) {
+                // A primitive's corners are listed once, with a slot for each of its vertices.
+                valuesRead = saturatingAdd(valuesRead, vertexCount + 3 * triangles);
+                read(position, at + " POSITION");
+                read(attribute(primitive, "NORMAL"), at + " NORMAL");
+                if (normals) read(attribute(primitive, "TANGENT"), at + " TANGENT");
+                read(attribute(primitive, "TEXCOORD_0"), at + " TEXCOORD_0");
+                read(primitive.indices, at + " indices");
             }
         }
-        for (int child : node.children) visit(child, world, depth + 1);
+    }
+    auto limit = [&](uint64_t value, uint64_t max, const std::string& what) {
+        if (value > max)
+            reader.fail("the default scene " + what + " " + (value == kNoFit ? "more than 2^64" : std::to_string(value)) +
+                        " (through " + std::to_string(instances.size()) + " node instances); at most " +
+                        std::to_string(max) + " are loaded");
     };
-    for (int root : roots) visit(root, glm::dmat4(1.0), 0);
-    if (out.meshes.empty()) throw InputError(origin + ": the model's default scene has no triangles");
+    limit(vertices, kMaxModelVertices, "bakes vertices:");
+    limit(indices, kMaxModelIndices, "bakes indices:");
+    limit(valuesRead, kMaxModelValuesRead, "reads accessor values:");
+}
+
+// A triangle primitive's corners, made once however many nodes draw it: which of its vertices
+// each baked vertex is (`source`), and the triangles over the baked vertices (`indices`, in the
+// primitive's winding). Without normals every triangle has three vertices of its own (flat).
+struct PrimitiveShape {
+    const std::vector<float>* positions = nullptr;
+    const std::vector<float>* normals = nullptr;
+    const std::vector<float>* tangents = nullptr;
+    const std::vector<float>* uvs = nullptr;
+    std::vector<uint32_t> source, indices;
+};
+
+PrimitiveShape makeShape(const tinygltf::Primitive& primitive, GltfReader& reader, const std::string& where,
+                         Skipped& skipped) {
+    constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    PrimitiveShape shape;
+    // 3.7.2.1 "Overview": which component types each attribute may have.
+    shape.positions = &reader.floats(attribute(primitive, "POSITION"), where + " POSITION", {TINYGLTF_TYPE_VEC3},
+                                     {kFloat}, false);
+    const size_t vertexCount = shape.positions->size() / 3;
+    auto sameCount = [&](int accessor, const char* name) {
+        if (accessor >= 0 && reader.count(accessor, where + " " + name) != vertexCount)
+            reader.fail(where + " " + name + " has another count than POSITION");
+    };
+    const int normalAccessor = attribute(primitive, "NORMAL"), tangentAccessor = attribute(primitive, "TANGENT"),
+              uvAccessor = attribute(primitive, "TEXCOORD_0");
+    sameCount(normalAccessor, "NORMAL");
+    sameCount(tangentAccessor, "TANGENT");
+    sameCount(uvAccessor, "TEXCOORD_0");
+    if (normalAccessor >= 0)
+        shape.normals = &reader.floats(normalAccessor, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
+    if (tangentAccessor >= 0 && normalAccessor >= 0)  // 3.7.2.1: without normals, tangents are ignored
+        shape.tangents = &reader.floats(tangentAccessor, where + " TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat}, false);
+    if (uvAccessor >= 0)
+        shape.uvs = &reader.floats(
+            uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
+            {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
+    if (primitive.targets.size()) skipped.note("morph targets are not applied (drawn in the base shape)");
+    for (const auto& [name, accessor] : primitive.attributes) {
+        if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn unskinned)");
+        if (name.rfind("COLOR_", 0) == 0) skipped.note("vertex colours (COLOR_n) are not used");
+    }
+
+    // The primitive's corners as triangles, counter-clockwise (3.7.2.1, its topology types).
+    std::vector<uint32_t> identity;
+    if (primitive.indices < 0) {
+        identity.resize(vertexCount);
+        for (uint32_t i = 0; i < vertexCount; ++i) identity[i] = i;
+    }
+    const std::vector<uint32_t>& corners =
+        primitive.indices >= 0 ? reader.indices(primitive.indices, vertexCount, where + " indices") : identity;
+    std::vector<uint32_t> triangles;
+    if (primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == -1) {
+        triangles.assign(corners.begin(), corners.end() - long(corners.size() % 3));
+    } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (size_t i = 0; i + 2 < corners.size(); ++i)  // p_i = {v_i, v_i+(1+i%2), v_i+(2-i%2)}
+            triangles.insert(triangles.end(), {corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]});
+    } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        for (size_t i = 0; i + 2 < corners.size(); ++i)  // p_i = {v_i+1, v_i+2, v_0}
+            triangles.insert(triangles.end(), {corners[i + 1], corners[i + 2], corners[0]});
+    }
+    if (!shape.normals) {
+        // 3.7.2.1: without NORMAL, flat normals: each triangle gets its own three vertices.
+        shape.source = std::move(triangles);
+        shape.indices.resize(shape.source.size());
+        for (uint32_t i = 0; i < shape.indices.size(); ++i) shape.indices[i] = i;
+    } else {
+        // Only the vertices the triangles use, in the order first used.
+        std::vector<uint32_t> remap(vertexCount, UINT32_MAX);
+        shape.indices.reserve(triangles.size());
+        for (uint32_t corner : triangles) {
+            uint32_t& slot = remap[corner];
+            if (slot == UINT32_MAX) {
+                slot = uint32_t(shape.source.size());
+                shape.source.push_back(corner);
+            }
+            shape.indices.push_back(slot);
+        }
+    }
+    return shape;
+}
+
+// One triangle primitive drawn by a node, baked into the model's space.
+MeshData bakePrimitive(const PrimitiveShape& shape, const glm::dmat4& world, const GltfReader& reader,
+                       const std::string& where, uint32_t material) {
+    const std::vector<float>& positions = *shape.positions;
+    const std::vector<float>* normals = shape.normals;
+    const std::vector<float>* tangents = shape.tangents;
+    const std::vector<float>* uvs = shape.uvs;
+    MeshData mesh;
+    mesh.material = material;
+    // Positions by the node's world matrix, normals by its inverse-transpose; a mirroring
+    // transform (negative determinant) turns the winding around (3.7.4 "Instantiation").
+    const glm::dmat3 linear(world), normalMatrix = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    bool unusableTangent = false;  // a file's tangent along its normal, or zero
+    auto vertex = [&](uint32_t i) {
+        Vertex v{};
+        glm::dvec4 p = world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0);
+        v.position = glm::vec3(p);
+        if (normals) {
+            glm::dvec3 n0((*normals)[3 * i], (*normals)[3 * i + 1], (*normals)[3 * i + 2]);
+            glm::dvec3 n = unitOr(normalMatrix * n0, glm::dvec3(0.0, 1.0, 0.0));
+            v.normal = glm::vec3(n);
+            if (tangents) {
+                // 3.7.2.1: bitangent = cross(normal, tangent.xyz) * w, in the primitive's space;
+                // tangent and bitangent transformed as directions in the surface, then the frame
+                // made orthonormal about the normal (a file's tangent need not be perpendicular to
+                // its normal), keeping the bitangent's side.
+                glm::dvec3 t0((*tangents)[4 * i], (*tangents)[4 * i + 1], (*tangents)[4 * i + 2]);
+                double w = (*tangents)[4 * i + 3] < 0.0f ? -1.0 : 1.0;
+                glm::dvec3 t = linear * t0, b = linear * (glm::cross(n0, t0) * w);
+                t = unitOr(t, glm::dvec3(0.0));
+                t = unitOr(t - n * glm::dot(n, t), glm::dvec3(0.0));  // Gram-Schmidt
+                if (t == glm::dvec3(0.0)) {
+                    unusableTangent = true;  // computed for the whole primitive below instead
+                } else {
+                    glm::dvec3 side = glm::cross(n, t);
+                    v.tangent = glm::vec3(t);
+                    v.bitangent = glm::vec3(glm::dot(side, unitOr(b, side)) < 0.0 ? -side : side);
+                }
+            }
+        }
+        if (uvs) v.uv = {(*uvs)[2 * i], (*uvs)[2 * i + 1]};  // (0, 0) is the image's first texel (3.8)
+        if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z))
+            reader.fail(where + ": a transformed position is not finite");
+        return v;
+    };
+
+    mesh.vertices.reserve(shape.source.size());
+    if (!normals) {
+        // Flat normals, from the transformed corners of each triangle.
+        for (size_t k = 0; k + 2 < shape.source.size(); k += 3) {
+            Vertex a = vertex(shape.source[k]), b = vertex(shape.source[k + 1]), c = vertex(shape.source[k + 2]);
+            if (mirrored) std::swap(b, c);
+            glm::dvec3 n = glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
+            glm::vec3 flat = glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
+            for (Vertex* v : {&a, &b, &c}) {
+                v->normal = flat;
+                mesh.vertices.push_back(*v);
+            }
+        }
+        mesh.indices = shape.indices;
+    } else {
+        for (uint32_t i : shape.source) mesh.vertices.push_back(vertex(i));
+        mesh.indices = shape.indices;
+        if (mirrored)
+            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3) std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
+    }
+    // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp), or
+    // where one of its tangents is unusable.
+    if (!tangents || unusableTangent) computeTangents(mesh);
+    return mesh;
+}
+
+}  // namespace
+
+ModelData loadGltfModel(const std::filesystem::path& path) {
+    const GltfDocument document = readGltfDocument(path);
+    const tinygltf::Model& model = document.model;
+    GltfReader reader(document);
+    Skipped skipped(document.origin);
+    if (!model.cameras.empty()) skipped.note("its cameras are not used (the scene's camera is)");
+    if (!model.animations.empty()) skipped.note("animations are not played");
+
+    ModelData out;
+    MaterialReader materials(document, reader, skipped);
+    for (int i = 0; i < int(model.materials.size()); ++i) out.materials.push_back(materials.material(i));
+    for (const std::string& name : model.extensionsUsed)  // those the materials used are noted already
+        skipped.extension(name, "extension " + name + " is not used");
+    const uint32_t defaultMaterial = uint32_t(out.materials.size());
+    // 3.9.6 "Default Material": a primitive without one is opaque white, metallic 1, roughness 1.
+    out.materials.push_back(
+        MaterialData{.name = "default", .roughness = 1.0f, .metallic = 1.0f, .alphaMode = AlphaMode::Opaque});
+
+    const std::vector<NodeInstance> instances = sceneInstances(model, reader, skipped);
+    checkBudget(model, instances, reader, skipped);
+
+    std::map<std::pair<int, size_t>, PrimitiveShape> shapes;
+    bool first = true;
+    for (const NodeInstance& instance : instances) {
+        const int meshIndex = model.nodes[size_t(instance.node)].mesh;
+        const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            const std::string at = primitiveName(meshIndex, p);
+            if (primitive.material >= 0) reader.get(model.materials, primitive.material, at + ".material: material");
+            if (!drawsTriangles(primitive, reader, at, skipped) || degenerate(instance.world)) continue;
+            auto shape = shapes.find({meshIndex, p});
+            if (shape == shapes.end())
+                shape = shapes.emplace(std::pair{meshIndex, p}, makeShape(primitive, reader, at, skipped)).first;
+            if (shape->second.indices.empty()) continue;
+            MeshData baked = bakePrimitive(shape->second, instance.world, reader, at,
+                                           primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial);
+            for (const Vertex& v : baked.vertices) {
+                out.boundsMin = first ? v.position : glm::min(out.boundsMin, v.position);
+                out.boundsMax = first ? v.position : glm::max(out.boundsMax, v.position);
+                first = false;
+            }
+            out.meshes.push_back(std::move(baked));
+        }
+    }
+    if (out.meshes.empty()) throw InputError(document.origin + ": the model's default scene has no triangles");
     skipped.print();
     return out;
 }

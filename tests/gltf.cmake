@@ -72,12 +72,12 @@ gltf_hostile(index-past-vertices 2
     "${GH}/index_past_vertices.gltf: meshes\\[0\\].primitives\\[0\\] indices \\(accessor 2\\) refers to vertex 7 of 3"
     index_past_vertices.gltf)
 gltf_hostile(accessor-past-view 2
-    "${GH}/accessor_past_view.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\): 4 elements end at byte 48, past the end of buffer view 0"
+    "${GH}/accessor_past_view.gltf: accessors\\[0\\]: 4 elements from byte 0 end at byte 48, past the end of bufferViews\\[0\\] \\(36 bytes\\)"
     accessor_past_view.gltf)
 gltf_hostile(view-past-buffer 2 "${GH}/view_past_buffer.gltf: bufferViews\\[0\\] \\(bytes 0..4000\\) runs past the end of buffer 0"
     view_past_buffer.gltf)
 gltf_hostile(stride-lies 2
-    "${GH}/stride_lies.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\): byteStride 8 is smaller than an element \\(12 bytes\\)"
+    "${GH}/stride_lies.gltf: accessors\\[0\\]: bufferViews\\[0\\].byteStride 8 is smaller than an element \\(12 bytes\\)"
     stride_lies.gltf)
 gltf_hostile(stride-odd 2 "${GH}/stride_odd.gltf: bufferViews\\[0\\].byteStride 6 is not a multiple of 4 from 4 to 252"
     stride_odd.gltf)
@@ -88,9 +88,9 @@ gltf_hostile(missing-bin 2 "${GH}/missing_bin.gltf: File not found : missing_bin
 gltf_hostile(nan-position 2 "${GH}/nan_position.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 2\\) holds a non-finite number"
     nan_position.gltf)
 gltf_hostile(huge-count 2
-    "${GH}/huge_count.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 0\\) has 2000000000 elements \\(1 to 33554432 are read\\)"
+    "${GH}/huge_count.gltf: accessors\\[0\\].count is 2000000000; it must be a whole number from 1 to 33554432"
     huge_count.gltf)
-gltf_hostile(huge-buffer 2 "${GH}/huge_buffer.gltf: buffers\\[0\\].byteLength must be a whole number from 0 to 2147483648"
+gltf_hostile(huge-buffer 2 "${GH}/huge_buffer.gltf: buffers\\[0\\].byteLength is 1000000000000000000; it must be a whole number from 1 to 2147483648"
     huge_buffer.gltf)
 gltf_hostile(absolute-uri 2 "${GH}/absolute_uri.gltf: images\\[0\\].uri '/etc/passwd' is an absolute path \\(a model reads only files in its own directory\\)"
     absolute_uri.gltf)
