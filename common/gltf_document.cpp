@@ -51,6 +51,10 @@ namespace {
 
 using nlohmann::json;
 
+// The largest offset or length in bytes a document may state: the largest whole number
+// tinygltf's int fields hold, 2 GiB - 1 (an input file has at most 2 GiB).
+constexpr uint64_t kMaxBytes = uint64_t(INT32_MAX);
+
 // A model reads only its own files: a URI is a data: URI or a relative path that stays inside
 // the model's directory. An absolute path, another scheme (http:, file:) or a path that climbs out
 // with ".." is refused.
@@ -223,7 +227,7 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
         accessor.contains("type") && accessor["type"].is_string() ? accessor["type"].get<std::string>() : "";
     const uint64_t component = componentSize(componentType), element = elementSize(type, component);
     if (element == 0) refuse(origin, where + ".type " + shown(type) + " is not one of glTF's (3.6.2.2)");
-    readIndex(accessor, "byteOffset", kMaxInputFileBytes, &offset, origin, where);
+    readIndex(accessor, "byteOffset", kMaxBytes, &offset, origin, where);
     if (offset % component != 0)
         refuse(origin, where + ".byteOffset " + std::to_string(offset) + " is not a multiple of its component size (3.6.2.4)");
     const bool hasView = accessor.contains("bufferView");
@@ -250,7 +254,7 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
         uint64_t partView = 0, partOffset = 0, partType = 0;
         if (views.empty() || !readIndex(p, "bufferView", views.size() - 1, &partView, origin, in))
             refuse(origin, in + ".bufferView is missing or names no buffer view");
-        readIndex(p, "byteOffset", kMaxInputFileBytes, &partOffset, origin, in);
+        readIndex(p, "byteOffset", kMaxBytes, &partOffset, origin, in);
         if (indices) {
             if (!readIndex(p, "componentType", UINT32_MAX, &partType, origin, in) ||
                 (partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
@@ -296,7 +300,7 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
     for (size_t i = 0; i < buffers.size(); ++i) {
         std::string where = "buffers[" + std::to_string(i) + "]";
         uint64_t bytes = 0;
-        if (!readNumber(buffers[i], "byteLength", 1, kMaxInputFileBytes, &bytes, origin, where))
+        if (!readNumber(buffers[i], "byteLength", 1, kMaxBytes, &bytes, origin, where))
             refuse(origin, where + ".byteLength is missing");
         bufferBytes.push_back(bytes);
         if (buffers[i].contains("uri")) {
@@ -315,8 +319,8 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
         uint64_t buffer = 0, offset = 0, length = 0, stride = 0;
         if (bufferBytes.empty() || !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
             refuse(origin, where + ".buffer is missing or names no buffer");
-        readIndex(views[i], "byteOffset", kMaxInputFileBytes, &offset, origin, where);
-        if (!readNumber(views[i], "byteLength", 1, kMaxInputFileBytes, &length, origin, where))
+        readIndex(views[i], "byteOffset", kMaxBytes, &offset, origin, where);
+        if (!readNumber(views[i], "byteLength", 1, kMaxBytes, &length, origin, where))
             refuse(origin, where + ".byteLength is missing");
         if (!fitsIn(offset, length, bufferBytes[buffer]))
             refuse(origin, where + " (bytes " + std::to_string(offset) + ".." + std::to_string(offset + length) +

@@ -396,9 +396,10 @@ void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& 
     }
     auto limit = [&](uint64_t value, uint64_t max, const std::string& what) {
         if (value > max)
-            reader.fail("the default scene " + what + " " + (value == kNoFit ? "more than 2^64" : std::to_string(value)) +
-                        " (through " + std::to_string(instances.size()) + " node instances); at most " +
-                        std::to_string(max) + " are loaded");
+            reader.fail("the default scene " + what + " " +
+                        (value == kNoFit ? std::string("2^64 or more") : std::to_string(value)) + " (in " +
+                        std::to_string(instances.size()) + (instances.size() == 1 ? " node" : " nodes") +
+                        "); at most " + std::to_string(max) + " are loaded");
     };
     limit(vertices, kMaxModelVertices, "bakes vertices:");
     limit(indices, kMaxModelIndices, "bakes indices:");

@@ -6,10 +6,12 @@
 #include <stb_image_write.h>
 
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -252,6 +254,106 @@ void writeHostile(const fs::path& dir) {
         change(root);
         writeText(dir / name, root.dump());
     };
+    // Offsets near 2^64: a sum that wraps would pass a bounds check (the byteOffset below plus
+    // 8,388,611 elements of 12 bytes is 36 modulo 2^64) and read 96 MiB before the buffer.
+    static constexpr uint64_t kNearTop = 18446744073608888320ull;  // 2^64 - 96 MiB
+    make("offset_wrap.gltf", [](gltf::File& f) {
+        f.root["accessors"][0]["byteOffset"] = kNearTop;
+        f.root["accessors"][0]["count"] = 8388611;
+    });
+    make("view_offset_wrap.gltf", [](gltf::File& f) { f.root["bufferViews"][0]["byteOffset"] = kNearTop; });
+    make("index_offset_wrap.gltf", [](gltf::File& f) { f.root["accessors"][1]["byteOffset"] = kNearTop; });
+    // The largest stride with the largest count: 8 GiB of a 36-byte view.
+    make("stride_count.gltf", [](gltf::File& f) {
+        f.root["bufferViews"][0]["byteStride"] = 252;
+        f.root["accessors"][0]["count"] = 33554432;
+    });
+    // Sparse parts whose offsets wrap.
+    auto sparseAt = [](gltf::File& f, uint64_t indicesOffset, uint64_t valuesOffset) {
+        std::vector<uint32_t> index{1};
+        std::vector<float> value{2, 0, 0};
+        int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
+        f.root["accessors"][0]["sparse"] = {
+            {"count", 1},
+            {"indices", {{"bufferView", indices}, {"byteOffset", indicesOffset}, {"componentType", gltf::kUnsignedInt}}},
+            {"values", {{"bufferView", values}, {"byteOffset", valuesOffset}}}};
+    };
+    make("sparse_indices_wrap.gltf", [&](gltf::File& f) { sparseAt(f, kNearTop, 0); });
+    make("sparse_values_wrap.gltf", [&](gltf::File& f) { sparseAt(f, 0, 18446744073709551612ull); });
+    // An index beyond 32 bits: tinygltf would read 4294967296 as 0, a node that exists.
+    make("index_beyond_32_bits.gltf", [](gltf::File& f) {
+        f.root["nodes"].push_back({{"children", {4294967296ull}}});
+        f.root["scenes"][0]["nodes"] = {1};
+    });
+    // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one
+    // sparse value (no buffer view), drawn without indices: 2^25 vertices per node.
+    auto sharedSparse = [](gltf::File& f, int nodes, bool fewIndices) {
+        std::vector<uint32_t> index{1};
+        std::vector<float> value{1, 0, 0};
+        int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
+        int positions = f.add("accessors", {{"componentType", gltf::kFloat},
+                                            {"count", 33554432},
+                                            {"type", "VEC3"},
+                                            {"sparse",
+                                             {{"count", 1},
+                                              {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                                              {"values", {{"bufferView", values}}}}}});
+        std::vector<uint32_t> corners{0, 1, 2};
+        json prim = {{"attributes", {{"POSITION", positions}}}};
+        if (fewIndices) prim["indices"] = f.values(corners, gltf::kUnsignedInt, "SCALAR");
+        int mesh = f.mesh(json::array({prim}));
+        json roots = json::array();
+        for (int k = 0; k < nodes; ++k)
+            roots.push_back(f.node({{"mesh", mesh}, {"translation", {0, 0, k}}}));
+        f.root["scenes"][0]["nodes"] = roots;
+    };
+    make("shared_sparse.gltf", [&](gltf::File& f) { sharedSparse(f, 10000, false); });
+    // The same accessor under 1,000 nodes, drawn by 3 indices: legal and within the budget, it is
+    // decoded once (not 1,000 times) and draws 1,000 triangles.
+    make("shared_sparse_indexed.gltf", [&](gltf::File& f) { sharedSparse(f, 1000, true); });
+    // A strip of 2^25 vertices (zeros and one sparse value: no bytes) without normals: flat
+    // shading would bake 3 vertices for each of its 2^25 - 2 triangles, 100 M vertices.
+    auto sparsePositions = [](gltf::File& f, uint64_t count, int mode) {
+        std::vector<uint32_t> index{1};
+        std::vector<float> value{1, 0, 0};
+        int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
+        json& primitive = f.root["meshes"][0]["primitives"][0];
+        primitive["attributes"]["POSITION"] =
+            f.add("accessors", {{"componentType", gltf::kFloat},
+                                {"count", count},
+                                {"type", "VEC3"},
+                                {"sparse",
+                                 {{"count", 1},
+                                  {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                                  {"values", {{"bufferView", values}}}}}});
+        primitive.erase("indices");
+        primitive["mode"] = mode;
+    };
+    make("strip_flat.gltf", [&](gltf::File& f) { sparsePositions(f, 33554432, gltf::kTriangleStrip); });
+    // One triangle more than the vertex budget: 5,592,406 flat triangles bake 16,777,218 vertices.
+    make("budget_plus_one.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 5592406, gltf::kTriangles); });
+    // Accessor counts at the limit and one past it (an accessor no mesh uses is checked too).
+    for (uint64_t count : {33554432ull, 33554433ull})
+        make("count_" + std::to_string(count) + ".gltf", [&](gltf::File& f) {
+            f.add("accessors", {{"componentType", gltf::kFloat}, {"count", count}, {"type", "SCALAR"}});
+        });
+    // 300,000 nested arrays in an extras field, 600 KB: tinygltf's recursive copy of the JSON
+    // would overflow the stack.
+    make("deep_extras.gltf", [](gltf::File&) {});
+    {
+        std::ifstream in(dir / "deep_extras.gltf");
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        text.insert(text.rfind('}'), ",\"extras\":" + std::string(300000, '[') + std::string(300000, ']'));
+        writeText(dir / "deep_extras.gltf", text);
+    }
+    // Brackets inside strings are not nesting: a name of 100,000 '[' loads.
+    make("brackets_in_string.gltf", [](gltf::File& f) { f.root["nodes"][0]["name"] = std::string(100000, '['); });
+    // data: URIs whose bytes disagree with the buffer's byteLength (both ways).
+    for (auto [name, length] : {std::pair{"data_uri_short.gltf", 2147483647ull}, std::pair{"data_uri_long.gltf", 4ull}})
+        edit(name, [&](json& root) {
+            root["buffers"][0]["uri"] = "data:application/octet-stream;base64,AAAAAAAAgD8AAAAAAAAAAAAAAAA=";
+            root["buffers"][0]["byteLength"] = length;
+        });
     edit("huge_buffer.gltf", [](json& root) { root["buffers"][0]["byteLength"] = 1000000000000000000ull; });
     make("absolute_uri.gltf", [](gltf::File& f) { f.image("/etc/passwd"); });
     make("scheme_uri.gltf", [](gltf::File& f) { f.image("https://example.com/texture.png"); });
@@ -300,6 +402,23 @@ void writeHostile(const fs::path& dir) {
     std::vector<uint8_t> lying = glb;
     lying[12] = 0xff, lying[13] = 0xff, lying[14] = 0x00;
     gltf::writeBytes(dir / "lying_chunk.glb", lying.data(), lying.size());
+    // A BIN chunk that claims 4 GiB, and a GLB whose JSON nests 300,000 deep.
+    std::vector<uint8_t> bin = glb;
+    uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, glb.data() + 12, 4);
+    std::memset(bin.data() + 20 + jsonLength, 0xff, 4);
+    gltf::writeBytes(dir / "lying_bin_chunk.glb", bin.data(), bin.size());
+    std::string nested = "{\"asset\":{\"version\":\"2.0\"},\"extras\":" + std::string(300000, '[') +
+                         std::string(300000, ']') + "}";
+    std::vector<uint8_t> deep(20 + nested.size());
+    auto put32 = [&](size_t at, uint32_t v) { std::memcpy(deep.data() + at, &v, 4); };
+    std::memcpy(deep.data(), "glTF", 4);
+    put32(4, 2);
+    put32(8, uint32_t(deep.size()));
+    put32(12, uint32_t(nested.size()));
+    std::memcpy(deep.data() + 16, "JSON", 4);
+    std::memcpy(deep.data() + 20, nested.data(), nested.size());
+    gltf::writeBytes(dir / "deep.glb", deep.data(), deep.size());
     fs::remove(dir / "good.glb");
 }
 
