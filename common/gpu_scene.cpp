@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "common/check.hpp"
+#include "common/checked.hpp"
 #include "common/files.hpp"
 #include "common/texture.hpp"
 
@@ -83,6 +84,7 @@ public:
     // kMissing where its files do not exist.
     static constexpr uint32_t kMissing = UINT32_MAX;
     std::vector<uint32_t> build(StagingBatch& batch, GpuScene& scene) {
+        checkMemoryBudget(scene);
         std::vector<uint32_t> index(requests_.size(), kMissing);
         size_t workers = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
         workers = std::min(workers, requests_.size());
@@ -153,6 +155,41 @@ private:
             ready_.push_back(std::move(prepared));
             changed_.notify_all();
         }
+    }
+
+    // What the scene will hold in device memory -- its meshes, uploaded already, and every
+    // texture with its mip levels, from the images' headers before any is decoded -- against the
+    // largest device-local heap: refused beyond 3/4 of it (the rest is the G-buffer's, the
+    // swapchain's and the driver's), in one line naming both.
+    void checkMemoryBudget(const GpuScene& scene) {
+        const uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
+        uint64_t meshBytes = 0, texelBytes = 0;
+        for (const GpuMesh& mesh : scene.meshes)
+            meshBytes = saturatingAdd(meshBytes, saturatingAdd(mesh.vertices.size, mesh.indices.size));
+        for (const TextureRequest& request : requests_) {
+            std::optional<ImageExtent> extent;
+            for (const ImageSource* source : {&request.first, &request.second}) {
+                if (extent || source->empty()) continue;
+                std::error_code ec;
+                if (source->embedded)
+                    extent = readImageExtent(source->embedded->data(), source->embedded->size(), source->name(),
+                                             maxDimension);
+                else if (std::filesystem::exists(source->file, ec))
+                    extent = readImageExtent(source->file, maxDimension);
+            }
+            if (extent) texelBytes = saturatingAdd(texelBytes, mipChainBytes(*extent));
+        }
+        VkDeviceSize heap = 0;
+        for (uint32_t i = 0; i < device_.memory.memoryHeapCount; ++i)
+            if (device_.memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+                heap = std::max(heap, device_.memory.memoryHeaps[i].size);
+        const uint64_t budget = heap / 4 * 3, need = saturatingAdd(meshBytes, texelBytes);
+        auto mib = [](uint64_t bytes) { return std::to_string(bytes / (1 << 20) + (bytes % (1 << 20) != 0)); };
+        if (need > budget)
+            throw InputError("the scene needs " + mib(need) + " MiB of device memory (meshes " + mib(meshBytes) +
+                             " MiB, textures with their mip levels " + mib(texelBytes) +
+                             " MiB); this device's largest memory heap has " + std::to_string(heap >> 20) +
+                             " MiB, of which a scene may use 3/4 (" + std::to_string(budget >> 20) + " MiB)");
     }
 
     PreparedTexture prepare(size_t index) {

@@ -90,7 +90,7 @@ void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool s
 
 }  // namespace
 
-Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
+ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimension) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(utf8(path) + ": no such image file");
     int width = 0, height = 0, channels = 0;
@@ -114,6 +114,32 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
     if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
         throw InputError(utf8(path) + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
                          " exceeds the device limit of " + std::to_string(maxDimension));
+    return {uint32_t(width), uint32_t(height)};
+}
+
+ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
+    if (size == 0 || size > size_t(INT32_MAX))
+        throw InputError(name + ": not a readable image (empty or too large)");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
+        throw InputError(name + ": not a readable image (" + stbi_failure_reason() + ")");
+    if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
+        throw InputError(name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                         " exceeds the device limit of " + std::to_string(maxDimension));
+    return {uint32_t(width), uint32_t(height)};
+}
+
+uint64_t mipChainBytes(ImageExtent extent) {
+    uint64_t total = 0;
+    for (uint64_t w = extent.width, h = extent.height;; w = std::max<uint64_t>(w / 2, 1), h = std::max<uint64_t>(h / 2, 1)) {
+        total += w * h * 4;  // at most 16384^2 x 4 per level: no wrap
+        if (w == 1 && h == 1) return total;
+    }
+}
+
+Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
+    readImageExtent(path, maxDimension);  // the header's size, checked before decoding
+    int width = 0, height = 0, channels = 0;
     stbi_uc* data = stbi_load(utf8(path).c_str(), &width, &height, &channels, 4);
     if (!data) throw InputError(utf8(path) + ": corrupt image (" + stbi_failure_reason() + ")");
     Pixels pixels{uint32_t(width), uint32_t(height), {}};
@@ -123,14 +149,8 @@ Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
 }
 
 Pixels decodePixels(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
-    if (size == 0 || size > size_t(INT32_MAX))
-        throw InputError(name + ": not a readable image (empty or too large)");
+    readImageExtent(bytes, size, name, maxDimension);  // the header's size, checked before decoding
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
-        throw InputError(name + ": not a readable image (" + stbi_failure_reason() + ")");
-    if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
-        throw InputError(name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
-                         " exceeds the device limit of " + std::to_string(maxDimension));
     stbi_uc* data = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!data) throw InputError(name + ": corrupt image (" + stbi_failure_reason() + ")");
     Pixels pixels{uint32_t(width), uint32_t(height), {}};

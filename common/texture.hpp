@@ -21,6 +21,17 @@ struct Pixels {
     std::vector<uint8_t> rgba;
 };
 
+// An image's size read from its header alone, nothing decoded; refused (InputError naming the
+// file) when unreadable or larger than `maxDimension`, as loadPixels refuses it.
+struct ImageExtent {
+    uint32_t width = 0, height = 0;
+};
+ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimension);
+ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension);
+
+// The bytes of an RGBA8 texture of that size with every mip level.
+uint64_t mipChainBytes(ImageExtent extent);
+
 // Decodes a PNG/JPEG/TGA/BMP file into RGBA8 (grey, 16-bit and paletted files are converted).
 // Throws InputError naming the file when it is missing, corrupt or larger than `maxDimension`.
 Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension);

@@ -136,3 +136,15 @@ if(XVFB_RUN)
             EXPECT_STDERR "^chapter-${number}: error: ${LOST}vkQueuePresentKHR ${LOST_END}")
     endforeach()
 endif()
+
+# A device with less memory than the scene needs (VKBOOK_HEAP_MIB: the layer reports smaller
+# device-local heaps): refused from the meshes' sizes and the images' headers before any texture
+# is decoded, in one line naming the need and the heap; with enough memory, drawn.
+fault_test(fault.heap-too-small FAULT vkAllocateMemory:1000000 EXPECT_EXIT 2
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
+    EXPECT_STDERR "^chapter-15: error: the scene needs 11 MiB of device memory \\(meshes 2 MiB, textures with their mip levels 10 MiB\\); this device's largest memory heap has 8 MiB, of which a scene may use 3/4 \\(6 MiB\\)\n$")
+set_property(TEST fault.heap-too-small APPEND PROPERTY ENVIRONMENT VKBOOK_HEAP_MIB=8)
+fault_test(fault.heap-large-enough FAULT vkAllocateMemory:1000000 EXPECT_EXIT 0
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
+    EXPECT_STDOUT "chapter-15: 19 draws" QUIET_STDERR)
+set_property(TEST fault.heap-large-enough APPEND PROPERTY ENVIRONMENT VKBOOK_HEAP_MIB=16)

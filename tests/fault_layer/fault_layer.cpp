@@ -20,6 +20,8 @@
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...) and
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
 //                                   among a surface's formats).
+//   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
+//                                   smaller than this machine's memory, which lavapipe reports).
 //   VKBOOK_EMULATE=swapchain_maintenance1  offers VK_EXT_swapchain_maintenance1 (lavapipe 22.3 has
 //                                   none) and carries out its present fences: the fence of a
 //                                   presentation is signalled by an empty submission right after
@@ -156,6 +158,7 @@ struct Profile {
     bool maintenance1 = false;  // emulate VK_EXT_swapchain_maintenance1
     uint32_t apiVersion = 0;    // 0: the device's own
     std::vector<std::string> hidden;
+    unsigned long long heapMib = 0;  // 0: the device's own heap sizes
 };
 
 const std::unordered_map<std::string, VkFormat>& formatNames() {
@@ -192,6 +195,7 @@ Profile parseProfile() {
             std::fprintf(stderr,
                          "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
     }
+    if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap) p.heapMib = std::strtoull(heap, nullptr, 10);
     if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
         std::string list = hide;
         for (size_t start = 0; start <= list.size();) {
@@ -496,6 +500,27 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties2(VkPhysicalDevice physica
     lowerVersion(properties->properties);
 }
 
+void shrinkHeaps(VkPhysicalDeviceMemoryProperties& memory) {
+    const VkDeviceSize limit = VkDeviceSize(profile().heapMib) << 20;
+    for (uint32_t i = 0; i < memory.memoryHeapCount && limit != 0; ++i)
+        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            memory.memoryHeaps[i].size = std::min(memory.memoryHeaps[i].size, limit);
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties(VkPhysicalDevice physical,
+                                                             VkPhysicalDeviceMemoryProperties* memory) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties>(physical, "vkGetPhysicalDeviceMemoryProperties")(
+        physical, memory);
+    shrinkHeaps(*memory);
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties2(VkPhysicalDevice physical,
+                                                              VkPhysicalDeviceMemoryProperties2* memory) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties2>(physical, "vkGetPhysicalDeviceMemoryProperties2")(
+        physical, memory);
+    shrinkHeaps(memory->memoryProperties);
+}
+
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
                                                       VkPhysicalDeviceFeatures2* features) {
     VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
@@ -631,6 +656,12 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
         {"vkGetPhysicalDeviceSurfaceFormatsKHR",
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceSurfaceFormats)},
         {"vkGetPhysicalDeviceFeatures2", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
+        {"vkGetPhysicalDeviceMemoryProperties",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceMemoryProperties)},
+        {"vkGetPhysicalDeviceMemoryProperties2",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceMemoryProperties2)},
+        {"vkGetPhysicalDeviceMemoryProperties2KHR",
+         reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceMemoryProperties2)},
         {"vkGetPhysicalDeviceFeatures2KHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
     };
     if (auto found = physicalDeviceCalls.find(name); found != physicalDeviceCalls.end()) return found->second;
