@@ -126,14 +126,17 @@ GltfReader::Span GltfReader::view(int viewIndex, uint64_t byteOffset, uint64_t c
     return {buffer.data.data() + view.byteOffset + byteOffset, size_t(stride)};
 }
 
-const std::vector<float>& GltfReader::floats(int index, const std::string& what, std::initializer_list<int> types,
-                                             std::initializer_list<int> componentTypes, bool requireNormalized) {
+const std::vector<float>& GltfReader::floats(int index, const std::string& what,
+                                             std::initializer_list<int> types,
+                                             std::initializer_list<int> componentTypes,
+                                             bool requireNormalized) {
     const tinygltf::Accessor& accessor = get(model_.accessors, index, what + " accessor");
     const std::string where = what + " (accessor " + std::to_string(index) + ")";
     if (std::find(types.begin(), types.end(), accessor.type) == types.end())
         fail(where + " has the wrong type for its use");
     const bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) == componentTypes.end() ||
+    if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) ==
+            componentTypes.end() ||
         (requireNormalized && !isFloat && !accessor.normalized))
         fail(where + " has a component type the specification does not allow for it (" +
              std::to_string(accessor.componentType) + (accessor.normalized ? ", normalized" : "") + ")");
@@ -156,22 +159,24 @@ const std::vector<float>& GltfReader::floats(int index, const std::string& what,
             fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
                  std::to_string(count) + " elements");
         const int indexType = sparse.indices.componentType;
-        if (!isIndexType(indexType)) fail(where + " has sparse indices of component type " + std::to_string(indexType));
+        if (!isIndexType(indexType))
+            fail(where + " has sparse indices of component type " + std::to_string(indexType));
         if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
             fail(where + " has a negative sparse byteOffset");
-        Span indices = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset), uint64_t(sparse.count),
-                            indexType, 1, false, where + " sparse indices");
-        Span values = view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
-                           accessor.componentType, components, false, where + " sparse values");
+        Span indices = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset),
+                            uint64_t(sparse.count), indexType, 1, false, where + " sparse indices");
+        Span values =
+            view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
+                 accessor.componentType, components, false, where + " sparse values");
         for (size_t k = 0; k < size_t(sparse.count); ++k) {
             // An integer, compared as one: through a float, indices above 2^24 would round.
             const uint32_t target = integer(indices.data + k * indices.stride, indexType);
             if (target >= count)
-                fail(where + " has a sparse index of " + std::to_string(target) + " for " + std::to_string(count) +
-                     " elements");
+                fail(where + " has a sparse index of " + std::to_string(target) + " for " +
+                     std::to_string(count) + " elements");
             for (size_t c = 0; c < components; ++c)
-                out[size_t(target) * components + c] =
-                    component(values.data + k * values.stride, c, accessor.componentType, accessor.normalized);
+                out[size_t(target) * components + c] = component(values.data + k * values.stride, c,
+                                                                 accessor.componentType, accessor.normalized);
         }
     }
     for (float value : out)
@@ -189,8 +194,10 @@ const std::vector<uint32_t>& GltfReader::indices(int index, size_t vertices, con
         const size_t count = this->count(index, where);
         std::vector<uint32_t> out(count, 0);
         if (accessor.bufferView >= 0) {
-            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, 1, false, where);
-            for (size_t i = 0; i < count; ++i) out[i] = integer(span.data + i * span.stride, accessor.componentType);
+            Span span = view(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, 1,
+                             false, where);
+            for (size_t i = 0; i < count; ++i)
+                out[i] = integer(span.data + i * span.stride, accessor.componentType);
         }
         if (accessor.sparse.isSparse) {
             const auto& sparse = accessor.sparse;
@@ -198,13 +205,15 @@ const std::vector<uint32_t>& GltfReader::indices(int index, size_t vertices, con
                 fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
                      std::to_string(count) + " elements");
             const int indexType = sparse.indices.componentType;
-            if (!isIndexType(indexType)) fail(where + " has sparse indices of component type " + std::to_string(indexType));
+            if (!isIndexType(indexType))
+                fail(where + " has sparse indices of component type " + std::to_string(indexType));
             if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
                 fail(where + " has a negative sparse byteOffset");
             Span targets = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset),
                                 uint64_t(sparse.count), indexType, 1, false, where + " sparse indices");
-            Span values = view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
-                               accessor.componentType, 1, false, where + " sparse values");
+            Span values =
+                view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
+                     accessor.componentType, 1, false, where + " sparse values");
             for (size_t k = 0; k < size_t(sparse.count); ++k) {
                 const uint32_t target = integer(targets.data + k * targets.stride, indexType);
                 if (target >= count)

@@ -108,8 +108,9 @@ void checkNesting(const std::string& text, const std::string& origin) {
             inString = true;
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonDepth)
-                refuse(origin, "the JSON nests arrays and objects more than " + std::to_string(kMaxJsonDepth) +
-                                   " deep (at byte " + std::to_string(i) + ")");
+                refuse(origin, "the JSON nests arrays and objects more than " +
+                                   std::to_string(kMaxJsonDepth) + " deep (at byte " + std::to_string(i) +
+                                   ")");
         } else if (c == ']' || c == '}') {
             --depth;
         }
@@ -122,9 +123,11 @@ void checkNesting(const std::string& text, const std::string& origin) {
 // numbers). Recursion is bounded by checkNesting.
 void checkWholeNumbers(const json& value, std::string& path, const std::string& origin) {
     if (value.is_number_integer()) {
-        bool fits = value.is_number_unsigned() ? value.get<uint64_t>() <= uint64_t(INT32_MAX)
-                                               : value.get<int64_t>() >= INT32_MIN && value.get<int64_t>() <= INT32_MAX;
-        if (!fits) refuse(origin, path + " is " + value.dump() + ", beyond the 32-bit whole numbers glTF uses");
+        bool fits = value.is_number_unsigned()
+                        ? value.get<uint64_t>() <= uint64_t(INT32_MAX)
+                        : value.get<int64_t>() >= INT32_MIN && value.get<int64_t>() <= INT32_MAX;
+        if (!fits)
+            refuse(origin, path + " is " + value.dump() + ", beyond the 32-bit whole numbers glTF uses");
     } else if (value.is_array()) {
         const size_t length = path.size();
         for (size_t i = 0; i < value.size(); ++i) {
@@ -148,10 +151,11 @@ bool readNumber(const json& object, const char* key, uint64_t min, uint64_t max,
                 const std::string& origin, const std::string& where) {
     if (!object.is_object() || !object.contains(key)) return false;
     const json& v = object[key];
-    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0) || v.get<uint64_t>() < min ||
-        v.get<uint64_t>() > max)
+    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0) ||
+        v.get<uint64_t>() < min || v.get<uint64_t>() > max)
         refuse(origin, where + "." + key + (v.is_number() ? " is " + v.dump() + "; it" : "") +
-                           " must be a whole number from " + std::to_string(min) + " to " + std::to_string(max));
+                           " must be a whole number from " + std::to_string(min) + " to " +
+                           std::to_string(max));
     *value = v.get<uint64_t>();
     return true;
 }
@@ -204,12 +208,13 @@ void checkRange(uint64_t offset, uint64_t count, uint64_t stride, uint64_t eleme
                 const ViewExtent& view, const std::string& origin, const std::string& where) {
     if (stride < element)
         refuse(origin, where + ": bufferViews[" + std::to_string(viewIndex) + "].byteStride " +
-                           std::to_string(stride) + " is smaller than an element (" + std::to_string(element) +
-                           " bytes)");
+                           std::to_string(stride) + " is smaller than an element (" +
+                           std::to_string(element) + " bytes)");
     std::optional<uint64_t> end = elementsEnd(offset, count, stride, element);
     if (!end || *end > view.length)
-        refuse(origin, where + ": " + std::to_string(count) + " elements from byte " + std::to_string(offset) +
-                           " end at byte " + (end ? std::to_string(*end) : std::string("2^64 or more")) +
+        refuse(origin, where + ": " + std::to_string(count) + " elements from byte " +
+                           std::to_string(offset) + " end at byte " +
+                           (end ? std::to_string(*end) : std::string("2^64 or more")) +
                            ", past the end of bufferViews[" + std::to_string(viewIndex) + "] (" +
                            std::to_string(view.length) + " bytes)");
 }
@@ -229,7 +234,8 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
     if (element == 0) refuse(origin, where + ".type " + shown(type) + " is not one of glTF's (3.6.2.2)");
     readIndex(accessor, "byteOffset", kMaxBytes, &offset, origin, where);
     if (offset % component != 0)
-        refuse(origin, where + ".byteOffset " + std::to_string(offset) + " is not a multiple of its component size (3.6.2.4)");
+        refuse(origin, where + ".byteOffset " + std::to_string(offset) +
+                           " is not a multiple of its component size (3.6.2.4)");
     const bool hasView = accessor.contains("bufferView");
     if (hasView) {
         if (views.empty() || !readIndex(accessor, "bufferView", views.size() - 1, &view, origin, where))
@@ -246,7 +252,8 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
     const std::string at = where + ".sparse";
     if (!sparse.is_object()) refuse(origin, at + " is not an object");
     uint64_t sparseCount = 0;
-    if (!readNumber(sparse, "count", 1, count, &sparseCount, origin, at)) refuse(origin, at + ".count is missing");
+    if (!readNumber(sparse, "count", 1, count, &sparseCount, origin, at))
+        refuse(origin, at + ".count is missing");
     auto part = [&](const char* name, uint64_t partElement, bool indices) {
         const std::string in = at + "." + name;
         if (!sparse.contains(name) || !sparse[name].is_object()) refuse(origin, in + " is missing");
@@ -257,13 +264,15 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
         readIndex(p, "byteOffset", kMaxBytes, &partOffset, origin, in);
         if (indices) {
             if (!readIndex(p, "componentType", UINT32_MAX, &partType, origin, in) ||
-                (partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                (partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                 partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
                  partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
                 refuse(origin, in + ".componentType must be unsigned byte, short or int (5121, 5123, 5125)");
             partElement = componentSize(partType);
         }
         if (partOffset % (indices ? partElement : component) != 0)
-            refuse(origin, in + ".byteOffset " + std::to_string(partOffset) + " is not a multiple of its component size (3.6.2.4)");
+            refuse(origin, in + ".byteOffset " + std::to_string(partOffset) +
+                               " is not a multiple of its component size (3.6.2.4)");
         checkRange(partOffset, sparseCount, partElement, partElement, partView, views[partView], origin, in);
     };
     part("indices", 0, true);
@@ -277,7 +286,8 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
         !root["asset"]["version"].is_string())
         refuse(origin, "not a glTF file (no asset.version)");
     std::string version = root["asset"]["version"].get<std::string>();
-    if (version.rfind("2.", 0) != 0) refuse(origin, "glTF version " + shown(version) + "; only glTF 2.0 is read");
+    if (version.rfind("2.", 0) != 0)
+        refuse(origin, "glTF version " + shown(version) + "; only glTF 2.0 is read");
     // 3.2 "Asset" and 3.12 "Specifying Extensions": a model that requires an extension a client
     // lacks should not be loaded. We implement none of those a model can require (Draco, meshopt,
     // quantization, texture transforms, Basis Universal textures, ...).
@@ -317,18 +327,21 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
     for (size_t i = 0; i < views.size(); ++i) {
         std::string where = "bufferViews[" + std::to_string(i) + "]";
         uint64_t buffer = 0, offset = 0, length = 0, stride = 0;
-        if (bufferBytes.empty() || !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
+        if (bufferBytes.empty() ||
+            !readIndex(views[i], "buffer", bufferBytes.size() - 1, &buffer, origin, where))
             refuse(origin, where + ".buffer is missing or names no buffer");
         readIndex(views[i], "byteOffset", kMaxBytes, &offset, origin, where);
         if (!readNumber(views[i], "byteLength", 1, kMaxBytes, &length, origin, where))
             refuse(origin, where + ".byteLength is missing");
         if (!fitsIn(offset, length, bufferBytes[buffer]))
-            refuse(origin, where + " (bytes " + std::to_string(offset) + ".." + std::to_string(offset + length) +
-                               ") runs past the end of buffer " + std::to_string(buffer) + " (" +
-                               std::to_string(bufferBytes[buffer]) + " bytes)");
+            refuse(origin, where + " (bytes " + std::to_string(offset) + ".." +
+                               std::to_string(offset + length) + ") runs past the end of buffer " +
+                               std::to_string(buffer) + " (" + std::to_string(bufferBytes[buffer]) +
+                               " bytes)");
         // 5.11 "Buffer View": a stride of 4 to 252; 3.6.2.4: a multiple of 4.
         if (readIndex(views[i], "byteStride", 252, &stride, origin, where) && (stride < 4 || stride % 4 != 0))
-            refuse(origin, where + ".byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
+            refuse(origin,
+                   where + ".byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
         extents.push_back({length, stride});
     }
     const json& accessors = array("accessors");
@@ -344,7 +357,8 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
             checkUri(origin, where + ".uri", uri);
             if (!uri.starts_with("data:")) files.images.push_back(uri);
         } else if (images[i].is_object() && images[i].contains("bufferView") &&
-                   (views.empty() || !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
+                   (views.empty() ||
+                    !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
             refuse(origin, where + ".bufferView names no buffer view");
         }
     }
@@ -444,7 +458,6 @@ std::string firstLine(std::string text) {
     return text.empty() ? "cannot be read as glTF" : text;
 }
 
-
 // The JSON of the file: the whole .gltf, or a .glb's first chunk (4.4 "Binary glTF Layout"),
 // its chunks checked against the file's length.
 std::string jsonOf(const std::string& bytes, bool glb, const std::string& origin) {
@@ -458,11 +471,13 @@ std::string jsonOf(const std::string& bytes, bool glb, const std::string& origin
     if (size < 20) refuse(origin, "a GLB file shorter than its headers");
     if (u32(4) != 2) refuse(origin, "GLB version " + std::to_string(u32(4)) + "; only 2 is read");
     if (u32(8) != size)
-        refuse(origin, "the GLB header says " + std::to_string(u32(8)) + " bytes, the file has " + std::to_string(size));
+        refuse(origin, "the GLB header says " + std::to_string(u32(8)) + " bytes, the file has " +
+                           std::to_string(size));
     if (u32(16) != 0x4E4F534Au) refuse(origin, "the GLB's first chunk is not JSON");
     const uint64_t jsonLength = u32(12);
     if (!fitsIn(20, jsonLength, size))
-        refuse(origin, "the GLB's JSON chunk (" + std::to_string(jsonLength) + " bytes) runs past the end of the file");
+        refuse(origin, "the GLB's JSON chunk (" + std::to_string(jsonLength) +
+                           " bytes) runs past the end of the file");
     const uint64_t next = 20 + jsonLength;
     if (next < size) {
         if (!fitsIn(next, 8, size) || !fitsIn(next + 8, u32(next), size))

@@ -50,6 +50,6 @@ GltfDocument readGltfDocument(const std::filesystem::path& path);
 // Helpers the other parts share.
 std::filesystem::path pathFromUtf8(const std::string& text);
 std::string percentDecoded(const std::string& uri);  // %XX escapes decoded (2.8 "URIs")
-std::string shown(const std::string& text);         // quoted for a message, at most 64 characters
+std::string shown(const std::string& text);          // quoted for a message, at most 64 characters
 
 }  // namespace common

@@ -244,7 +244,6 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const GltfReader& reader, con
     return m;
 }
 
-
 // ---- Nodes (3.5) ---------------------------------------------------------------------------
 
 // A node that draws a mesh, with its transform into the model's space.
@@ -256,13 +255,15 @@ struct NodeInstance {
 // 3.5.1 "Scenes" and 3.5.2 "Nodes and Hierarchy": the default scene's nodes (every root node
 // when there is no scene), checked to form a forest (one parent each, no cycles), walked with a
 // stack of our own. Returns the nodes that have a mesh, in the order a depth-first walk meets them.
-std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const GltfReader& reader, Skipped& skipped) {
+std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const GltfReader& reader,
+                                         Skipped& skipped) {
     std::vector<int> parents(model.nodes.size(), -1);
     for (size_t i = 0; i < model.nodes.size(); ++i)
         for (int child : model.nodes[i].children) {
             reader.get(model.nodes, child, "nodes[" + std::to_string(i) + "].children: node");
             if (parents[size_t(child)] >= 0 || size_t(child) == i)
-                reader.fail("node " + std::to_string(child) + " has more than one parent or is its own child");
+                reader.fail("node " + std::to_string(child) +
+                            " has more than one parent or is its own child");
             parents[size_t(child)] = int(i);
         }
     // With one parent each, a node that no root reaches lies on a cycle (or below one).
@@ -278,7 +279,8 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
             for (int child : model.nodes[size_t(node)].children) stack.push_back(child);
         }
         for (size_t i = 0; i < model.nodes.size(); ++i)
-            if (!reached[i]) reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
+            if (!reached[i])
+                reader.fail("node " + std::to_string(i) + " is on a cycle of the node hierarchy");
     }
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -286,7 +288,8 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
         roots = reader.get(model.scenes, scene, "scene").nodes;
         for (int root : roots) {
             reader.get(model.nodes, root, "scenes[" + std::to_string(scene) + "].nodes: node");
-            if (parents[size_t(root)] >= 0) reader.fail("node " + std::to_string(root) + " is a root and a child");
+            if (parents[size_t(root)] >= 0)
+                reader.fail("node " + std::to_string(root) + " is a root and a child");
         }
     } else {
         for (size_t i = 0; i < model.nodes.size(); ++i)
@@ -301,7 +304,8 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
         int depth;
     };
     std::vector<Pending> stack;
-    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, glm::dmat4(1.0), 0});
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root)
+        stack.push_back({*root, glm::dmat4(1.0), 0});
     std::vector<NodeInstance> instances;
     while (!stack.empty()) {
         Pending pending = stack.back();
@@ -353,14 +357,15 @@ std::string primitiveName(int mesh, size_t primitive) {
 
 // What the default scene will cost, from the counts the document declares (checked by part 1):
 // refused here, before any accessor is decoded, when it exceeds the budget of common/model.hpp.
-void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& instances, const GltfReader& reader,
-                 Skipped& skipped) {
+void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& instances,
+                 const GltfReader& reader, Skipped& skipped) {
     uint64_t vertices = 0, indices = 0, valuesRead = 0;
     std::set<std::pair<int, size_t>> primitivesSeen;
     std::set<int> accessorsSeen;
     auto read = [&](int accessor, const std::string& what) {
         if (accessor >= 0 && accessorsSeen.insert(accessor).second)
-            valuesRead = saturatingAdd(valuesRead, saturatingMul(reader.count(accessor, what), reader.components(accessor)));
+            valuesRead = saturatingAdd(
+                valuesRead, saturatingMul(reader.count(accessor, what), reader.components(accessor)));
     };
     for (const NodeInstance& instance : instances) {
         if (degenerate(instance.world)) continue;
@@ -373,15 +378,17 @@ void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& 
             const int position = attribute(primitive, "POSITION");
             if (position < 0) reader.fail(at + " has no POSITION");
             const uint64_t vertexCount = reader.count(position, at + " POSITION");
-            const uint64_t corners = primitive.indices >= 0 ? reader.count(primitive.indices, at + " indices") : vertexCount;
-            const uint64_t triangles = primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
-                                               primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN
-                                           ? (corners >= 3 ? corners - 2 : 0)
-                                           : corners / 3;
+            const uint64_t corners =
+                primitive.indices >= 0 ? reader.count(primitive.indices, at + " indices") : vertexCount;
+            const uint64_t triangles =
+                primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP || primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN
+                    ? (corners >= 3 ? corners - 2 : 0)
+                    : corners / 3;
             const bool normals = attribute(primitive, "NORMAL") >= 0;
             // Flat normals give each triangle three vertices of its own; with normals, a vertex
             // is baked once however many triangles use it.
-            vertices = saturatingAdd(vertices, normals ? std::min(vertexCount, 3 * triangles) : 3 * triangles);
+            vertices =
+                saturatingAdd(vertices, normals ? std::min(vertexCount, 3 * triangles) : 3 * triangles);
             indices = saturatingAdd(indices, 3 * triangles);
             if (primitivesSeen.insert({meshIndex, p}).second) {
                 // A primitive's corners are listed once, with a slot for each of its vertices.
@@ -422,22 +429,25 @@ PrimitiveShape makeShape(const tinygltf::Primitive& primitive, GltfReader& reade
     constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
     PrimitiveShape shape;
     // 3.7.2.1 "Overview": which component types each attribute may have.
-    shape.positions = &reader.floats(attribute(primitive, "POSITION"), where + " POSITION", {TINYGLTF_TYPE_VEC3},
-                                     {kFloat}, false);
+    shape.positions = &reader.floats(attribute(primitive, "POSITION"), where + " POSITION",
+                                     {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
     const size_t vertexCount = shape.positions->size() / 3;
     auto sameCount = [&](int accessor, const char* name) {
         if (accessor >= 0 && reader.count(accessor, where + " " + name) != vertexCount)
             reader.fail(where + " " + name + " has another count than POSITION");
     };
-    const int normalAccessor = attribute(primitive, "NORMAL"), tangentAccessor = attribute(primitive, "TANGENT"),
+    const int normalAccessor = attribute(primitive, "NORMAL"),
+              tangentAccessor = attribute(primitive, "TANGENT"),
               uvAccessor = attribute(primitive, "TEXCOORD_0");
     sameCount(normalAccessor, "NORMAL");
     sameCount(tangentAccessor, "TANGENT");
     sameCount(uvAccessor, "TEXCOORD_0");
     if (normalAccessor >= 0)
-        shape.normals = &reader.floats(normalAccessor, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
+        shape.normals =
+            &reader.floats(normalAccessor, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat}, false);
     if (tangentAccessor >= 0 && normalAccessor >= 0)  // 3.7.2.1: without normals, tangents are ignored
-        shape.tangents = &reader.floats(tangentAccessor, where + " TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat}, false);
+        shape.tangents =
+            &reader.floats(tangentAccessor, where + " TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat}, false);
     if (uvAccessor >= 0)
         shape.uvs = &reader.floats(
             uvAccessor, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
@@ -455,7 +465,8 @@ PrimitiveShape makeShape(const tinygltf::Primitive& primitive, GltfReader& reade
         for (uint32_t i = 0; i < vertexCount; ++i) identity[i] = i;
     }
     const std::vector<uint32_t>& corners =
-        primitive.indices >= 0 ? reader.indices(primitive.indices, vertexCount, where + " indices") : identity;
+        primitive.indices >= 0 ? reader.indices(primitive.indices, vertexCount, where + " indices")
+                               : identity;
     std::vector<uint32_t> triangles;
     if (primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == -1) {
         triangles.assign(corners.begin(), corners.end() - long(corners.size() % 3));
@@ -538,10 +549,13 @@ MeshData bakePrimitive(const PrimitiveShape& shape, const glm::dmat4& world, con
     if (!normals) {
         // Flat normals, from the transformed corners of each triangle.
         for (size_t k = 0; k + 2 < shape.source.size(); k += 3) {
-            Vertex a = vertex(shape.source[k]), b = vertex(shape.source[k + 1]), c = vertex(shape.source[k + 2]);
+            Vertex a = vertex(shape.source[k]), b = vertex(shape.source[k + 1]),
+                   c = vertex(shape.source[k + 2]);
             if (mirrored) std::swap(b, c);
-            glm::dvec3 n = glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
-            glm::vec3 flat = glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
+            glm::dvec3 n =
+                glm::cross(glm::dvec3(b.position - a.position), glm::dvec3(c.position - a.position));
+            glm::vec3 flat =
+                glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f, 1.0f, 0.0f);
             for (Vertex* v : {&a, &b, &c}) {
                 v->normal = flat;
                 mesh.vertices.push_back(*v);
@@ -552,7 +566,8 @@ MeshData bakePrimitive(const PrimitiveShape& shape, const glm::dmat4& world, con
         for (uint32_t i : shape.source) mesh.vertices.push_back(vertex(i));
         mesh.indices = shape.indices;
         if (mirrored)
-            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3) std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
+            for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
+                std::swap(mesh.indices[k + 1], mesh.indices[k + 2]);
     }
     // Tangents where the file has none (3.7.2.1 asks for MikkTSpace; ours: common/model.cpp), or
     // where one of its tangents is unusable.
@@ -591,14 +606,17 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& primitive = mesh.primitives[p];
             const std::string at = primitiveName(meshIndex, p);
-            if (primitive.material >= 0) reader.get(model.materials, primitive.material, at + ".material: material");
+            if (primitive.material >= 0)
+                reader.get(model.materials, primitive.material, at + ".material: material");
             if (!drawsTriangles(primitive, reader, at, skipped) || degenerate(instance.world)) continue;
             auto shape = shapes.find({meshIndex, p});
             if (shape == shapes.end())
-                shape = shapes.emplace(std::pair{meshIndex, p}, makeShape(primitive, reader, at, skipped)).first;
+                shape =
+                    shapes.emplace(std::pair{meshIndex, p}, makeShape(primitive, reader, at, skipped)).first;
             if (shape->second.indices.empty()) continue;
-            MeshData baked = bakePrimitive(shape->second, instance.world, reader, at,
-                                           primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial);
+            MeshData baked =
+                bakePrimitive(shape->second, instance.world, reader, at,
+                              primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial);
             for (const Vertex& v : baked.vertices) {
                 out.boundsMin = first ? v.position : glm::min(out.boundsMin, v.position);
                 out.boundsMax = first ? v.position : glm::max(out.boundsMax, v.position);
@@ -607,7 +625,8 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             out.meshes.push_back(std::move(baked));
         }
     }
-    if (out.meshes.empty()) throw InputError(document.origin + ": the model's default scene has no triangles");
+    if (out.meshes.empty())
+        throw InputError(document.origin + ": the model's default scene has no triangles");
     skipped.print();
     return out;
 }

@@ -172,8 +172,8 @@ private:
                 if (extent || source->empty()) continue;
                 std::error_code ec;
                 if (source->embedded)
-                    extent = readImageExtent(source->embedded->data(), source->embedded->size(), source->name(),
-                                             maxDimension);
+                    extent = readImageExtent(source->embedded->data(), source->embedded->size(),
+                                             source->name(), maxDimension);
                 else if (std::filesystem::exists(source->file, ec))
                     extent = readImageExtent(source->file, maxDimension);
             }
@@ -184,10 +184,12 @@ private:
             if (device_.memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
                 heap = std::max(heap, device_.memory.memoryHeaps[i].size);
         const uint64_t budget = heap / 4 * 3, need = saturatingAdd(meshBytes, texelBytes);
-        auto mib = [](uint64_t bytes) { return std::to_string(bytes / (1 << 20) + (bytes % (1 << 20) != 0)); };
+        auto mib = [](uint64_t bytes) {
+            return std::to_string(bytes / (1 << 20) + (bytes % (1 << 20) != 0));
+        };
         if (need > budget)
-            throw InputError("the scene needs " + mib(need) + " MiB of device memory (meshes " + mib(meshBytes) +
-                             " MiB, textures with their mip levels " + mib(texelBytes) +
+            throw InputError("the scene needs " + mib(need) + " MiB of device memory (meshes " +
+                             mib(meshBytes) + " MiB, textures with their mip levels " + mib(texelBytes) +
                              " MiB); this device's largest memory heap has " + std::to_string(heap >> 20) +
                              " MiB, of which a scene may use 3/4 (" + std::to_string(budget >> 20) + " MiB)");
     }

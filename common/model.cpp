@@ -336,6 +336,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
     const size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3,
                  uvs = attrib.texcoords.size() / 2;
 
+    uint64_t bakedVertices = 0, bakedIndices = 0;
     auto addCorner = [&](MeshData& out, uint32_t material, const tinyobj::index_t& index) {
         Key key{index.vertex_index, index.normal_index, index.texcoord_index};
         auto [it, inserted] = seen[material].try_emplace(key, uint32_t(out.vertices.size()));
@@ -356,6 +357,7 @@ ModelData loadObjModel(const std::filesystem::path& path) {
             if (!finite(v.position) || !finite(v.normal) || !std::isfinite(v.uv.x) || !std::isfinite(v.uv.y))
                 throw InputError(utf8(path) + ": a vertex has a non-finite coordinate");
             out.vertices.push_back(v);
+            ++bakedVertices;
         }
         out.indices.push_back(it->second);
     };
@@ -384,6 +386,16 @@ ModelData loadObjModel(const std::filesystem::path& path) {
             for (uint32_t corner : triangulate(corners))
                 addCorner(perMaterial[material], material, mesh.indices[offset + corner]);
             offset += count;
+            // The budget of common/model.hpp, as the faces are read (each is paid for by its
+            // bytes, so nothing before this can cost more than the file's size).
+            bakedIndices += 3 * (count - 2);
+            if (bakedIndices > kMaxModelIndices || bakedVertices > kMaxModelVertices)
+                throw InputError(utf8(path) + ": the model has more than " +
+                                 (bakedIndices > kMaxModelIndices
+                                      ? std::to_string(kMaxModelIndices) + " indices"
+                                      : std::to_string(kMaxModelVertices) + " vertices") +
+                                 " (face " + std::to_string(face + 1) + " of '" + shape.name +
+                                 "'); at most that many are loaded");
         }
     }
 

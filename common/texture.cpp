@@ -117,7 +117,8 @@ ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimen
     return {uint32_t(width), uint32_t(height)};
 }
 
-ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
+ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name,
+                            uint32_t maxDimension) {
     if (size == 0 || size > size_t(INT32_MAX))
         throw InputError(name + ": not a readable image (empty or too large)");
     int width = 0, height = 0, channels = 0;
@@ -131,7 +132,8 @@ ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string
 
 uint64_t mipChainBytes(ImageExtent extent) {
     uint64_t total = 0;
-    for (uint64_t w = extent.width, h = extent.height;; w = std::max<uint64_t>(w / 2, 1), h = std::max<uint64_t>(h / 2, 1)) {
+    for (uint64_t w = extent.width, h = extent.height;;
+         w = std::max<uint64_t>(w / 2, 1), h = std::max<uint64_t>(h / 2, 1)) {
         total += w * h * 4;  // at most 16384^2 x 4 per level: no wrap
         if (w == 1 && h == 1) return total;
     }

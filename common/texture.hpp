@@ -27,7 +27,8 @@ struct ImageExtent {
     uint32_t width = 0, height = 0;
 };
 ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimension);
-ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension);
+ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string& name,
+                            uint32_t maxDimension);
 
 // The bytes of an RGBA8 texture of that size with every mip level.
 uint64_t mipChainBytes(ImageExtent extent);

@@ -195,7 +195,8 @@ Profile parseProfile() {
             std::fprintf(stderr,
                          "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
     }
-    if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap) p.heapMib = std::strtoull(heap, nullptr, 10);
+    if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap)
+        p.heapMib = std::strtoull(heap, nullptr, 10);
     if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
         std::string list = hide;
         for (size_t start = 0; start <= list.size();) {
@@ -509,15 +510,15 @@ void shrinkHeaps(VkPhysicalDeviceMemoryProperties& memory) {
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties(VkPhysicalDevice physical,
                                                              VkPhysicalDeviceMemoryProperties* memory) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties>(physical, "vkGetPhysicalDeviceMemoryProperties")(
-        physical, memory);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties>(
+        physical, "vkGetPhysicalDeviceMemoryProperties")(physical, memory);
     shrinkHeaps(*memory);
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties2(VkPhysicalDevice physical,
                                                               VkPhysicalDeviceMemoryProperties2* memory) {
-    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties2>(physical, "vkGetPhysicalDeviceMemoryProperties2")(
-        physical, memory);
+    nextInstanceCall<PFN_vkGetPhysicalDeviceMemoryProperties2>(
+        physical, "vkGetPhysicalDeviceMemoryProperties2")(physical, memory);
     shrinkHeaps(memory->memoryProperties);
 }
 

@@ -25,10 +25,10 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string_view>
 
 #include "common/check.hpp"
@@ -45,19 +45,42 @@ using nlohmann::json;
 // Numbers at the edges: of the integer types a loader may compute in, of what a double holds
 // exactly, and of this loader's limits (2^25 elements, 2^31 - 1 bytes); 2^64 - k makes sums
 // with a few elements' bytes wrap to small numbers.
-const std::vector<json> kBoundaries = {
-    json(0), json(-1), json(1), json(3), json(4), json(252), json(256), json(65535), json(65536),
-    json(2147483647), json(2147483648ull), json(2147483649ull), json(4294967295ull), json(4294967296ull),
-    json(4294967297ull), json(33554432), json(33554433), json(16777216), json(16777217),
-    json(9007199254740992ull), json(9223372036854775807ull), json(9223372036854775808ull),
-    json(18446744073709551615ull), json(18446744073709551612ull), json(18446744073709551604ull),
-    json(18446744073709551580ull), json(18446744073608888320ull), json(-2147483648ll), json(1e300), json(-0.0)};
+const std::vector<json> kBoundaries = {json(0),
+                                       json(-1),
+                                       json(1),
+                                       json(3),
+                                       json(4),
+                                       json(252),
+                                       json(256),
+                                       json(65535),
+                                       json(65536),
+                                       json(2147483647),
+                                       json(2147483648ull),
+                                       json(2147483649ull),
+                                       json(4294967295ull),
+                                       json(4294967296ull),
+                                       json(4294967297ull),
+                                       json(33554432),
+                                       json(33554433),
+                                       json(16777216),
+                                       json(16777217),
+                                       json(9007199254740992ull),
+                                       json(9223372036854775807ull),
+                                       json(9223372036854775808ull),
+                                       json(18446744073709551615ull),
+                                       json(18446744073709551612ull),
+                                       json(18446744073709551604ull),
+                                       json(18446744073709551580ull),
+                                       json(18446744073608888320ull),
+                                       json(-2147483648ll),
+                                       json(1e300),
+                                       json(-0.0)};
 
 // Keys of glTF 2.0 whose values are numbers the loader sizes or indexes with.
-const char* const kNumberKeys[] = {"byteOffset", "byteLength", "byteStride", "count",    "bufferView",
-                                   "buffer",     "componentType", "mode",     "indices",  "material",
-                                   "mesh",       "scene",      "source",     "sampler",  "index",
-                                   "texCoord",   "POSITION",   "NORMAL",     "TEXCOORD_0", "TANGENT"};
+const char* const kNumberKeys[] = {"byteOffset", "byteLength",    "byteStride", "count",      "bufferView",
+                                   "buffer",     "componentType", "mode",       "indices",    "material",
+                                   "mesh",       "scene",         "source",     "sampler",    "index",
+                                   "texCoord",   "POSITION",      "NORMAL",     "TEXCOORD_0", "TANGENT"};
 
 // Every value in the document, for picking one (with its parent, to add keys or copies).
 void collect(json& value, std::vector<json*>& all) {

@@ -6,8 +6,8 @@
 #include <stb_image_write.h>
 
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -275,7 +275,8 @@ void writeHostile(const fs::path& dir) {
         int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
         f.root["accessors"][0]["sparse"] = {
             {"count", 1},
-            {"indices", {{"bufferView", indices}, {"byteOffset", indicesOffset}, {"componentType", gltf::kUnsignedInt}}},
+            {"indices",
+             {{"bufferView", indices}, {"byteOffset", indicesOffset}, {"componentType", gltf::kUnsignedInt}}},
             {"values", {{"bufferView", values}, {"byteOffset", valuesOffset}}}};
     };
     make("sparse_indices_wrap.gltf", [&](gltf::File& f) { sparseAt(f, kNearTop, 0); });
@@ -291,20 +292,20 @@ void writeHostile(const fs::path& dir) {
         std::vector<uint32_t> index{1};
         std::vector<float> value{1, 0, 0};
         int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
-        int positions = f.add("accessors", {{"componentType", gltf::kFloat},
-                                            {"count", 33554432},
-                                            {"type", "VEC3"},
-                                            {"sparse",
-                                             {{"count", 1},
-                                              {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
-                                              {"values", {{"bufferView", values}}}}}});
+        int positions = f.add(
+            "accessors", {{"componentType", gltf::kFloat},
+                          {"count", 33554432},
+                          {"type", "VEC3"},
+                          {"sparse",
+                           {{"count", 1},
+                            {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                            {"values", {{"bufferView", values}}}}}});
         std::vector<uint32_t> corners{0, 1, 2};
         json prim = {{"attributes", {{"POSITION", positions}}}};
         if (fewIndices) prim["indices"] = f.values(corners, gltf::kUnsignedInt, "SCALAR");
         int mesh = f.mesh(json::array({prim}));
         json roots = json::array();
-        for (int k = 0; k < nodes; ++k)
-            roots.push_back(f.node({{"mesh", mesh}, {"translation", {0, 0, k}}}));
+        for (int k = 0; k < nodes; ++k) roots.push_back(f.node({{"mesh", mesh}, {"translation", {0, 0, k}}}));
         f.root["scenes"][0]["nodes"] = roots;
     };
     make("shared_sparse.gltf", [&](gltf::File& f) { sharedSparse(f, 10000, false); });
@@ -318,14 +319,14 @@ void writeHostile(const fs::path& dir) {
         std::vector<float> value{1, 0, 0};
         int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
         json& primitive = f.root["meshes"][0]["primitives"][0];
-        primitive["attributes"]["POSITION"] =
-            f.add("accessors", {{"componentType", gltf::kFloat},
-                                {"count", count},
-                                {"type", "VEC3"},
-                                {"sparse",
-                                 {{"count", 1},
-                                  {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
-                                  {"values", {{"bufferView", values}}}}}});
+        primitive["attributes"]["POSITION"] = f.add(
+            "accessors", {{"componentType", gltf::kFloat},
+                          {"count", count},
+                          {"type", "VEC3"},
+                          {"sparse",
+                           {{"count", 1},
+                            {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                            {"values", {{"bufferView", values}}}}}});
         primitive.erase("indices");
         primitive["mode"] = mode;
     };
@@ -347,9 +348,11 @@ void writeHostile(const fs::path& dir) {
         writeText(dir / "deep_extras.gltf", text);
     }
     // Brackets inside strings are not nesting: a name of 100,000 '[' loads.
-    make("brackets_in_string.gltf", [](gltf::File& f) { f.root["nodes"][0]["name"] = std::string(100000, '['); });
+    make("brackets_in_string.gltf",
+         [](gltf::File& f) { f.root["nodes"][0]["name"] = std::string(100000, '['); });
     // data: URIs whose bytes disagree with the buffer's byteLength (both ways).
-    for (auto [name, length] : {std::pair{"data_uri_short.gltf", 2147483647ull}, std::pair{"data_uri_long.gltf", 4ull}})
+    for (auto [name, length] :
+         {std::pair{"data_uri_short.gltf", 2147483647ull}, std::pair{"data_uri_long.gltf", 4ull}})
         edit(name, [&](json& root) {
             root["buffers"][0]["uri"] = "data:application/octet-stream;base64,AAAAAAAAgD8AAAAAAAAAAAAAAAA=";
             root["buffers"][0]["byteLength"] = length;
