@@ -139,7 +139,11 @@ void checkWholeNumbers(const json& value, std::string& path, const std::string& 
         const size_t length = path.size();
         for (const auto& [key, item] : value.items()) {
             if (key == "extras" || key == "extensions") continue;
-            path += (path.empty() ? "" : ".") + key;
+            // A key is the file's text: at most 64 characters of it, control characters as '?'.
+            std::string shownKey = key.size() > 64 ? key.substr(0, 64) + "..." : key;
+            for (char& c : shownKey)
+                if (static_cast<unsigned char>(c) < 0x20) c = '?';
+            path += (path.empty() ? "" : ".") + shownKey;
             checkWholeNumbers(item, path, origin);
             path.resize(length);
         }

@@ -122,6 +122,8 @@ gltf_hostile(sparse-values-wrap 2 "${GH}/sparse_values_wrap.gltf: accessors\\[0\
     sparse_values_wrap.gltf)
 gltf_hostile(index-beyond-32-bits 2 "${GH}/index_beyond_32_bits.gltf: nodes\\[1\\].children\\[0\\] is 4294967296, beyond the 32-bit whole numbers glTF uses"
     index_beyond_32_bits.gltf)
+gltf_hostile(newline-key 2 "${GH}/newline_key.gltf: nodes\\[0\\].a[?]b is 4294967296, beyond the 32-bit whole numbers glTF uses"
+    newline_key.gltf)
 gltf_hostile(shared-sparse 2
     "${GH}/shared_sparse.gltf: the default scene bakes vertices: 335544300000 \\(in 10000 nodes\\); at most 16777216 are loaded"
     shared_sparse.gltf)

@@ -286,6 +286,8 @@ void writeHostile(const fs::path& dir) {
         f.root["nodes"].push_back({{"children", {4294967296ull}}});
         f.root["scenes"][0]["nodes"] = {1};
     });
+    // The same under a key with a line break: the message shows it as '?', on one line.
+    make("newline_key.gltf", [](gltf::File& f) { f.root["nodes"][0]["a\nb"] = 4294967296ull; });
     // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one
     // sparse value (no buffer view), drawn without indices: 2^25 vertices per node.
     auto sharedSparse = [](gltf::File& f, int nodes, bool fewIndices) {
