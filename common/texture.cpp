@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/check.hpp"
+#include "common/checked.hpp"
 #include "common/debug_names.hpp"
 #include "common/files.hpp"
 
@@ -132,9 +133,9 @@ ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string
 
 uint64_t mipChainBytes(ImageExtent extent) {
     uint64_t total = 0;
-    for (uint64_t w = extent.width, h = extent.height;;
+    for (uint64_t w = std::max(extent.width, 1u), h = std::max(extent.height, 1u);;
          w = std::max<uint64_t>(w / 2, 1), h = std::max<uint64_t>(h / 2, 1)) {
-        total += w * h * 4;  // at most 16384^2 x 4 per level: no wrap
+        total = saturatingAdd(total, saturatingMul(saturatingMul(w, h), 4));
         if (w == 1 && h == 1) return total;
     }
 }

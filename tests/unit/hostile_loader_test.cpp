@@ -142,3 +142,38 @@ TEST(HostileObj, MtllibNameWithEscapedSpace) {
             << error.what();
     }
 }
+
+namespace {
+
+// `faces` faces of 255 corners on one vertex (each "f" line 513 bytes, 253 triangles, 759
+// indices): flat, so they triangulate in linear time.
+common::ModelData loadFlatPolygons(size_t faces, const std::string& name) {
+    std::string polygon = "f";
+    for (int k = 0; k < 255; ++k) polygon += " 1";
+    polygon += "\n";
+    std::string text = "v 0 0 0\n";
+    text.reserve(text.size() + faces * polygon.size());
+    for (size_t k = 0; k < faces; ++k) text += polygon;
+    return common::loadObjModel(writeTemp(name, text));
+}
+
+}  // namespace
+
+TEST(HostileObj, IndexBudgetCheckedAsFacesAreRead) {
+    // common/model.hpp: at most 2^25 indices. 44,208 faces of 759 indices are 33,553,872, within
+    // it; one face more is 33,554,631, refused at that face.
+    static_assert(44208 * 759 <= common::kMaxModelIndices && 44209 * 759 > common::kMaxModelIndices);
+    try {
+        loadFlatPolygons(44209, "over_index_budget.obj");
+        FAIL() << "a model over the index budget loaded";
+    } catch (const common::InputError& error) {
+        EXPECT_NE(std::string(error.what())
+                      .find("over_index_budget.obj: the model has more than 33554432 indices "
+                            "(face 44209 of ''); at most that many are loaded"),
+                  std::string::npos)
+            << error.what();
+    }
+    common::ModelData model = loadFlatPolygons(44208, "at_index_budget.obj");
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].indices.size(), 44208u * 759);
+}

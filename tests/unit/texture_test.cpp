@@ -97,3 +97,15 @@ TEST(MipChain, ChainOf1024x1024) {
     EXPECT_EQ(chain.regions.size(), 11u);
     EXPECT_EQ(chain.bytes.size(), size_t(4) * 1398101);  // 4 bytes * (1024^2 + 512^2 + ... + 1) texels
 }
+
+// The device-memory budget counts each texture with every mip level, from its header's size.
+TEST(MipChainBytes, EveryLevelDownToOneTexel) {
+    EXPECT_EQ(common::mipChainBytes({1, 1}), 4u);
+    EXPECT_EQ(common::mipChainBytes({2, 2}), 4u * (4 + 1));
+    EXPECT_EQ(common::mipChainBytes({4, 1}), 4u * (4 + 2 + 1));
+    EXPECT_EQ(common::mipChainBytes({16384, 1}), 4u * 32767);
+    uint64_t levels = 0;
+    for (uint64_t side = 16384; side >= 1; side /= 2) levels += side * side * 4;
+    EXPECT_EQ(common::mipChainBytes({16384, 16384}), levels);  // 1.33 GiB: no 32-bit arithmetic
+    EXPECT_EQ(common::mipChainBytes({4294967295u, 4294967295u}) > (uint64_t{1} << 63), true);
+}
