@@ -394,8 +394,9 @@ ModelData loadObjModel(const std::filesystem::path& path) {
                                  (bakedIndices > kMaxModelIndices
                                       ? std::to_string(kMaxModelIndices) + " indices"
                                       : std::to_string(kMaxModelVertices) + " vertices") +
-                                 " (face " + std::to_string(face + 1) + " of '" + shape.name +
-                                 "'); at most that many are loaded");
+                                 " (at face " + std::to_string(face + 1) +
+                                 (shape.name.empty() ? std::string() : " of '" + shape.name + "'") +
+                                 "); at most that many are loaded");
         }
     }
 

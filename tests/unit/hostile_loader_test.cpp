@@ -169,7 +169,7 @@ TEST(HostileObj, IndexBudgetCheckedAsFacesAreRead) {
     } catch (const common::InputError& error) {
         EXPECT_NE(std::string(error.what())
                       .find("over_index_budget.obj: the model has more than 33554432 indices "
-                            "(face 44209 of ''); at most that many are loaded"),
+                            "(at face 44209); at most that many are loaded"),
                   std::string::npos)
             << error.what();
     }
