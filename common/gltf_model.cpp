@@ -62,9 +62,13 @@ public:
     void extension(const std::string& name, const std::string& what) {
         if (extensions_.insert(name).second) note(what);
     }
+    // One line each: names from the file (extensions) may hold control characters, shown as '?'.
     void print() const {
-        for (const std::string& what : notes_)
+        for (std::string what : notes_) {
+            for (char& c : what)
+                if (static_cast<unsigned char>(c) < 0x20) c = '?';
             std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
+        }
     }
 
 private:
@@ -310,7 +314,7 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
     while (!stack.empty()) {
         Pending pending = stack.back();
         stack.pop_back();
-        if (pending.depth > kMaxNodeDepth)
+        if (pending.depth >= kMaxNodeDepth)
             reader.fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " (a cycle?)");
         const tinygltf::Node& node = model.nodes[size_t(pending.node)];
         const std::string where = "nodes[" + std::to_string(pending.node) + "]";
@@ -356,20 +360,29 @@ std::string primitiveName(int mesh, size_t primitive) {
 }
 
 // What the default scene will cost, from the counts the document declares (checked by part 1):
-// refused here, before any accessor is decoded, when it exceeds the budget of common/model.hpp.
+// refused here, before any accessor is decoded or any vertex made, when it exceeds the budget of
+// common/model.hpp. Each mesh's cost is added up once, over its primitives; each node that draws
+// it then adds that sum, so this costs the nodes plus the primitives, never their product.
 void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& instances,
                  const GltfReader& reader, Skipped& skipped) {
-    uint64_t vertices = 0, indices = 0, valuesRead = 0;
-    std::set<std::pair<int, size_t>> primitivesSeen;
+    struct MeshCost {
+        bool known = false;
+        uint64_t vertices = 0, indices = 0;
+    };
+    std::vector<MeshCost> meshCosts(model.meshes.size());
+    uint64_t draws = 0, vertices = 0, indices = 0, valuesRead = 0;
     std::set<int> accessorsSeen;
     auto read = [&](int accessor, const std::string& what) {
         if (accessor >= 0 && accessorsSeen.insert(accessor).second)
             valuesRead = saturatingAdd(
                 valuesRead, saturatingMul(reader.count(accessor, what), reader.components(accessor)));
     };
-    for (const NodeInstance& instance : instances) {
-        if (degenerate(instance.world)) continue;
-        const int meshIndex = model.nodes[size_t(instance.node)].mesh;
+    // One mesh's primitives, the first time a node draws it; the accessors it reads are counted
+    // then (each once, however many meshes share it).
+    auto meshCost = [&](int meshIndex) -> const MeshCost& {
+        MeshCost& cost = meshCosts[size_t(meshIndex)];
+        if (cost.known) return cost;
+        cost.known = true;
         const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -385,21 +398,28 @@ void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& 
                     ? (corners >= 3 ? corners - 2 : 0)
                     : corners / 3;
             const bool normals = attribute(primitive, "NORMAL") >= 0;
-            // Flat normals give each triangle three vertices of its own; with normals, a vertex
-            // is baked once however many triangles use it.
-            vertices =
-                saturatingAdd(vertices, normals ? std::min(vertexCount, 3 * triangles) : 3 * triangles);
-            indices = saturatingAdd(indices, 3 * triangles);
-            if (primitivesSeen.insert({meshIndex, p}).second) {
-                // A primitive's corners are listed once, with a slot for each of its vertices.
-                valuesRead = saturatingAdd(valuesRead, vertexCount + 3 * triangles);
-                read(position, at + " POSITION");
-                read(attribute(primitive, "NORMAL"), at + " NORMAL");
-                if (normals) read(attribute(primitive, "TANGENT"), at + " TANGENT");
-                read(attribute(primitive, "TEXCOORD_0"), at + " TEXCOORD_0");
-                read(primitive.indices, at + " indices");
-            }
+            // At most: flat normals give each triangle three vertices of its own; with normals, a
+            // vertex is baked once however many triangles use it.
+            const uint64_t baked = 3 * triangles;  // counts are at most 2^25: no wrap
+            cost.vertices = saturatingAdd(cost.vertices, normals ? std::min(vertexCount, baked) : baked);
+            cost.indices = saturatingAdd(cost.indices, baked);
+            // A primitive's corner list: a slot for each of its vertices and each corner.
+            valuesRead = saturatingAdd(valuesRead, vertexCount + baked);
+            read(position, at + " POSITION");
+            read(attribute(primitive, "NORMAL"), at + " NORMAL");
+            if (normals) read(attribute(primitive, "TANGENT"), at + " TANGENT");
+            read(attribute(primitive, "TEXCOORD_0"), at + " TEXCOORD_0");
+            read(primitive.indices, at + " indices");
         }
+        return cost;
+    };
+    for (const NodeInstance& instance : instances) {
+        if (degenerate(instance.world)) continue;
+        const int meshIndex = model.nodes[size_t(instance.node)].mesh;
+        const MeshCost& cost = meshCost(meshIndex);
+        draws = saturatingAdd(draws, model.meshes[size_t(meshIndex)].primitives.size());
+        vertices = saturatingAdd(vertices, cost.vertices);
+        indices = saturatingAdd(indices, cost.indices);
     }
     auto limit = [&](uint64_t value, uint64_t max, const std::string& what) {
         if (value > max)
@@ -408,6 +428,7 @@ void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& 
                         std::to_string(instances.size()) + (instances.size() == 1 ? " node" : " nodes") +
                         "); at most " + std::to_string(max) + " are loaded");
     };
+    limit(draws, kMaxModelPrimitives, "draws primitives:");
     limit(vertices, kMaxModelVertices, "bakes vertices:");
     limit(indices, kMaxModelIndices, "bakes indices:");
     limit(valuesRead, kMaxModelValuesRead, "reads accessor values:");
@@ -601,6 +622,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     std::map<std::pair<int, size_t>, PrimitiveShape> shapes;
     bool first = true;
     for (const NodeInstance& instance : instances) {
+        if (degenerate(instance.world)) continue;
         const int meshIndex = model.nodes[size_t(instance.node)].mesh;
         const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -608,7 +630,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
             const std::string at = primitiveName(meshIndex, p);
             if (primitive.material >= 0)
                 reader.get(model.materials, primitive.material, at + ".material: material");
-            if (!drawsTriangles(primitive, reader, at, skipped) || degenerate(instance.world)) continue;
+            if (!drawsTriangles(primitive, reader, at, skipped)) continue;
             auto shape = shapes.find({meshIndex, p});
             if (shape == shapes.end())
                 shape =

@@ -190,8 +190,9 @@ private:
         if (need > budget)
             throw InputError("the scene needs " + mib(need) + " MiB of device memory (meshes " +
                              mib(meshBytes) + " MiB, textures with their mip levels " + mib(texelBytes) +
-                             " MiB); this device's largest memory heap has " + std::to_string(heap >> 20) +
-                             " MiB, of which a scene may use 3/4 (" + std::to_string(budget >> 20) + " MiB)");
+                             " MiB); this device's largest device-local memory heap has " +
+                             std::to_string(heap >> 20) + " MiB, of which a scene may use 3/4 (" +
+                             std::to_string(budget >> 20) + " MiB)");
     }
 
     PreparedTexture prepare(size_t index) {
@@ -388,6 +389,13 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
             }
         }
 
+        // Every draw is recorded each frame: a scene that places a model of many meshes many
+        // times is refused before the product is made.
+        if (gpu.draws.size() + model.meshes.size() > kMaxSceneDraws || pending.size() > kMaxSceneDraws)
+            throw InputError(
+                utf8(instance.file) + ": the scene places it as model " + std::to_string(instanceIndex + 1) +
+                ", past " + std::to_string(kMaxSceneDraws) +
+                " draws (or materials) in all, models times their meshes; at most that many are drawn");
         glm::mat4 matrix = instance.transform.matrix();
         for (size_t i = 0; i < model.meshes.size(); ++i) {
             gpu.draws.push_back(Draw{.mesh = firstMesh[instance.file] + uint32_t(i),

@@ -107,18 +107,20 @@ struct ModelData {
 };
 
 // What one model may cost (docs/reliability.md, "What a model may cost"). The glTF loader
-// decides it from the sizes the file declares, before it decodes or allocates anything, and
+// decides it from the sizes the file declares, before it decodes an accessor or makes a vertex, and
 // refuses a model beyond it in one line naming the limit and the value; an OBJ file pays for
-// each triangle with its own bytes, and is checked as it is read. Sized for the largest scenes a
-// reader opens: the book's Sponza has about 262,000 triangles, Amazon Lumberyard Bistro about
-// 2.8 M (8.4 M vertices even flat-shaded).
+// each triangle with its own bytes, and its faces are checked as they are converted. Sized for the largest
+// scenes a reader opens: the book's Sponza has about 262,000 triangles, Amazon Lumberyard Bistro about 2.8 M
+// (8.4 M vertices even flat-shaded). Primitives drawn, each once per node that draws its mesh (each becomes a
+// mesh and a draw): 100,000, as many as a scene file may place models.
+inline constexpr uint64_t kMaxModelPrimitives = 100000;
 // Vertices after baking (flat normals, strips and fans unrolled, every node instance): 16 Mi,
 // 56 bytes each, 896 MiB.
 inline constexpr uint64_t kMaxModelVertices = uint64_t{1} << 24;
 // Indices after baking: 32 Mi (11 M triangles), 128 MiB.
 inline constexpr uint64_t kMaxModelIndices = uint64_t{1} << 25;
-// Values decoded from glTF accessors (each accessor once) and vertex slots of the distinct
-// primitives: 256 Mi, about 1 GiB of floats.
+// Values decoded from glTF accessors (each accessor once) and the corner lists of the distinct
+// primitives (a slot per vertex and per corner): 256 Mi, about 1 GiB of floats.
 inline constexpr uint64_t kMaxModelValuesRead = uint64_t{1} << 28;
 
 // Loads an OBJ file and the MTL files it names. Throws InputError with a one-line message naming

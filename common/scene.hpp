@@ -83,6 +83,9 @@ struct Scene {
 // lights buffer (32 bytes a light) stays far below the smallest maxStorageBufferRange (128 MiB).
 inline constexpr size_t kMaxSceneModels = 100000;
 inline constexpr size_t kMaxSceneLights = 100000;
+// Draws in all: each placed model draws each of its meshes (a glTF model's primitives, once per
+// node). A million, each a few hundred bytes of CPU work and memory a frame.
+inline constexpr size_t kMaxSceneDraws = 1000000;
 
 // Parses scene JSON. `origin` names the file in error messages; relative model paths are taken
 // relative to `baseDir`. Throws InputError with one line naming the file and the offending key.

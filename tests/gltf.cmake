@@ -9,7 +9,7 @@ target_link_libraries(gltf_cases PRIVATE vkbook::stb glm::glm nlohmann_json::nlo
 vkbook_warnings(gltf_cases)
 set_target_properties(gltf_cases PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/bin)
 target_sources(unit_tests PRIVATE unit/gltf_test.cpp)
-target_link_libraries(unit_tests PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(unit_tests PRIVATE nlohmann_json::nlohmann_json vkbook::tinygltf)
 
 set(GLTF ${CMAKE_CURRENT_BINARY_DIR}/gltf)
 add_test(NAME gltf.generate-cases COMMAND gltf_cases ${GLTF})
@@ -122,6 +122,20 @@ gltf_hostile(sparse-values-wrap 2 "${GH}/sparse_values_wrap.gltf: accessors\\[0\
     sparse_values_wrap.gltf)
 gltf_hostile(index-beyond-32-bits 2 "${GH}/index_beyond_32_bits.gltf: nodes\\[1\\].children\\[0\\] is 4294967296, beyond the 32-bit whole numbers glTF uses"
     index_beyond_32_bits.gltf)
+gltf_hostile(chain-1025 2 "${GH}/chain_1025.gltf: the node hierarchy is deeper than 1024" chain_1025.gltf)
+gltf_hostile(chain-1024 0 "chapter-[0-9]+: 1 draws" chain_1024.gltf)
+gltf_hostile(index-budget 2
+    "${GH}/index_budget.gltf: the default scene bakes indices: 33600000 \\(in 11200 nodes\\); at most 33554432 are loaded"
+    index_budget.gltf)
+gltf_hostile(values-budget 2
+    "${GH}/values_budget.gltf: the default scene reads accessor values: 436207622 \\(in 1 node\\); at most 268435456 are loaded"
+    values_budget.gltf)
+gltf_hostile(primitive-product 2
+    "${GH}/primitive_product.gltf: the default scene draws primitives: 110000 \\(in 10000 nodes\\); at most 100000 are loaded"
+    primitive_product.gltf)
+gltf_hostile(newline-extension warn "${GH}/newline_extension.gltf: extension EXT_a[?]b is not used" newline_extension.gltf)
+gltf_hostile(big-numbers-in-extras warn "${GH}/big_numbers_in_extras.gltf: extension EXT_example is not used"
+    big_numbers_in_extras.gltf)
 gltf_hostile(newline-key 2 "${GH}/newline_key.gltf: nodes\\[0\\].a[?]b is 4294967296, beyond the 32-bit whole numbers glTF uses"
     newline_key.gltf)
 gltf_hostile(shared-sparse 2
@@ -146,7 +160,8 @@ gltf_hostile(data-uri-long 2 "${GH}/data_uri_long.gltf: bufferViews\\[0\\] \\(by
 gltf_hostile(count-at-limit 0 "chapter-[0-9]+: 1 draws" count_33554432.gltf)
 gltf_hostile(brackets-in-string 0 "chapter-[0-9]+: 1 draws" brackets_in_string.gltf)
 hostile_test(gltf-shared-sparse-indexed 15 0 "chapter-15: 1000 draws, 1000 triangles" --model ${GH}/shared_sparse_indexed.gltf)
-set_tests_properties(hostile.gltf-shared-sparse-indexed PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
+# A loose timeout: decoded once per node, the accessor would take about 70 s here.
+set_tests_properties(hostile.gltf-shared-sparse-indexed PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases" TIMEOUT 40)
 hostile_test(gltf-unknown-extension 15 2 "${DATA}/syntax_error.json: not a model file we read \\(.obj, .gltf or .glb\\)"
     --model ${DATA}/syntax_error.json)
 # Warnings: a missing image is a missing texture (the default one); BLEND is drawn as MASK.

@@ -139,6 +139,8 @@ hostile_test(json-100001-lights 15 2 "${H}/scene_lights_100001.json: lights: 100
 hostile_test(json-100000-models 15 0 "100000 draws" --scene ${H}/scene_models_100000.json)
 hostile_test(json-100001-models 15 2 "${H}/scene_models_100001.json: models: 100001 models, at most 100000"
     --scene ${H}/scene_models_100001.json)
+hostile_test(json-draws-over 15 2 "${H}/eleven.obj: the scene places it as model 90910, past 1000000 draws"
+    --scene ${H}/scene_draws_over.json)
 hostile_test(json-garbage-10 10 2 "${H}/scene_garbage.json: invalid JSON" --scene ${H}/scene_garbage.json)
 hostile_test(json-wrong-type-14 14 2 "${H}/scene_color_string.json: lights\\[0\\].color\\[1\\]: expected a number"
     --scene ${H}/scene_color_string.json)

@@ -286,6 +286,68 @@ void writeHostile(const fs::path& dir) {
         f.root["nodes"].push_back({{"children", {4294967296ull}}});
         f.root["scenes"][0]["nodes"] = {1};
     });
+    // Node chains at the depth limit (1,024 levels: loads) and one level past it.
+    for (int levels : {1024, 1025})
+        make("chain_" + std::to_string(levels) + ".gltf", [&](gltf::File& f) {
+            for (int k = 1; k < levels; ++k) f.root["nodes"].push_back({{"children", {k - 1}}});
+            f.root["scenes"][0]["nodes"] = {levels - 1};
+        });
+    // Numbers beyond 32 bits where glTF allows anything: application data and an extension's own
+    // fields (loaded: they are not read as numbers).
+    make("big_numbers_in_extras.gltf", [](gltf::File& f) {
+        f.root["nodes"][0]["extras"] = {{"id", 1099511627776ull}};
+        f.root["extensions"] = {{"EXT_example", {{"size", 18446744073709551615ull}}}};
+        f.root["extensionsUsed"] = {"EXT_example"};
+    });
+    // An extension's name with a line break: its warning is still one line.
+    make("newline_extension.gltf", [](gltf::File& f) { f.root["extensionsUsed"] = {"EXT_a\nb"}; });
+    // The index budget: 1,000 triangles over 3 vertices with normals (3,000 bytes of indices)
+    // under 11,200 nodes: 33,600,000 indices after baking, 33,600 vertices.
+    make("index_budget.gltf", [](gltf::File& f) {
+        std::vector<glm::vec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, n(3, glm::vec3(0, 0, 1));
+        std::vector<uint8_t> corners;
+        for (int k = 0; k < 1000; ++k) corners.insert(corners.end(), {0, 1, 2});
+        json prim = {
+            {"attributes", {{"POSITION", f.positions(p)}, {"NORMAL", f.values(n, gltf::kFloat, "VEC3")}}},
+            {"indices", f.values(corners, gltf::kUnsignedByte, "SCALAR")}};
+        int mesh = f.mesh(json::array({prim}));
+        json roots = json::array();
+        for (int k = 0; k < 11200; ++k) roots.push_back(f.node({{"mesh", mesh}}));
+        f.root["scenes"][0]["nodes"] = roots;
+    });
+    // The values budget: POSITION, NORMAL, TANGENT and TEXCOORD_0 of 2^25 sparse zeros each,
+    // drawn by 3 indices: 12 x 2^25 values to decode, 2^25 + 3 corner slots, for one triangle.
+    make("values_budget.gltf", [](gltf::File& f) {
+        std::vector<uint32_t> index{1};
+        std::vector<float> value{0, 0, 1, 1};
+        int indices = f.view(index.data(), 4), values = f.view(value.data(), 16);
+        auto zeros = [&](const char* type) {
+            return f.add("accessors",
+                         {{"componentType", gltf::kFloat},
+                          {"count", 33554432},
+                          {"type", type},
+                          {"sparse",
+                           {{"count", 1},
+                            {"indices", {{"bufferView", indices}, {"componentType", gltf::kUnsignedInt}}},
+                            {"values", {{"bufferView", values}}}}}});
+        };
+        json& primitive = f.root["meshes"][0]["primitives"][0];
+        primitive["attributes"] = {{"POSITION", zeros("VEC3")},
+                                   {"NORMAL", zeros("VEC3")},
+                                   {"TANGENT", zeros("VEC4")},
+                                   {"TEXCOORD_0", zeros("VEC2")}};
+    });
+    // Nodes times primitives: 10,000 nodes share a mesh of 11 primitives, 110,000 draws (past the
+    // 100,000 a model may make), refused before any is visited.
+    make("primitive_product.gltf", [](gltf::File& f) {
+        json prim = f.root["meshes"][0]["primitives"][0];
+        json primitives = json::array();
+        for (int k = 0; k < 11; ++k) primitives.push_back(prim);
+        f.root["meshes"][0]["primitives"] = primitives;
+        json roots = json::array();
+        for (int k = 0; k < 10000; ++k) roots.push_back(f.node({{"mesh", 0}}));
+        f.root["scenes"][0]["nodes"] = roots;
+    });
     // The same under a key with a line break: the message shows it as '?', on one line.
     make("newline_key.gltf", [](gltf::File& f) { f.root["nodes"][0]["a\nb"] = 4294967296ull; });
     // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one

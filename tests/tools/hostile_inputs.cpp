@@ -138,11 +138,11 @@ std::string manyLights(size_t lights) {
     return json + "]}\n";
 }
 
-std::string manyModels(size_t models) {
+std::string manyModels(size_t models, const std::string& file = "tri.obj") {
     std::string json = R"({"models": [)";
     for (size_t i = 0; i < models; ++i)
-        json += std::string(i ? "," : "") + R"({"file": "tri.obj", "position": [)" + std::to_string(i % 100) +
-                ", " + std::to_string(i / 100 % 100) + ", -5]}";
+        json += std::string(i ? "," : "") + R"({"file": ")" + file + R"(", "position": [)" +
+                std::to_string(i % 100) + ", " + std::to_string(i / 100 % 100) + ", -5]}";
     return json + "]}\n";
 }
 
@@ -250,6 +250,16 @@ int main(int argc, char** argv) {
         write("scene_lights_100001.json", manyLights(100001));
         write("scene_models_100000.json", manyModels(100000));
         write("scene_models_100001.json", manyModels(100001));
+        // A model of 11 meshes (one per material) placed 100,000 times: 1.1 million draws, past
+        // the million a scene may make; refused at the 90,910th placement.
+        std::string mtl, obj = "mtllib eleven.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+        for (int m = 0; m < 11; ++m) {
+            mtl += "newmtl m" + std::to_string(m) + "\nKd 1 1 1\n";
+            obj += "usemtl m" + std::to_string(m) + "\nf 1 2 3\n";
+        }
+        write("eleven.mtl", mtl);
+        write("eleven.obj", obj);
+        write("scene_draws_over.json", manyModels(100000, "eleven.obj"));
 
         // Not files at all, and a file too large to read: a directory, a named pipe (reading
         // one waits for a writer forever), and a sparse file of 3 GiB (no disk space used).

@@ -9,6 +9,8 @@
 #include "../../scenes/gltf_writer.hpp"
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/gltf_accessors.hpp"
+#include "common/gltf_document.hpp"
 #include "common/model.hpp"
 
 namespace {
@@ -438,6 +440,31 @@ TEST(GltfLoader, EmbeddedImagesAreKeptUndecoded) {
     ASSERT_TRUE(source.embedded);
     EXPECT_EQ(*source.embedded, png);
     EXPECT_EQ(source.name(), common::utf8(tempDir() / "image.glb") + " (image 0)");
+}
+
+TEST(GltfLoader, EachAccessorIsDecodedOnce) {
+    // Two primitives and two nodes read the same POSITION accessor: the reader hands out the
+    // values it decoded the first time (the same vector), so the work is once per accessor.
+    gltf::File file;
+    int mesh = addPrimitive(file, Primitive{});
+    file.node({{"mesh", mesh}});
+    file.node({{"mesh", mesh}, {"translation", {1, 0, 0}}});
+    file.scene({0, 1});
+    fs::path path = tempDir() / "decoded_once.gltf";
+    file.writeGltf(path);
+    common::GltfDocument document = common::readGltfDocument(path);
+    common::GltfReader reader(document);
+    const int position = document.model.meshes[0].primitives[0].attributes.at("POSITION");
+    const std::vector<float>& first =
+        reader.floats(position, "POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+    const std::vector<float>& second =
+        reader.floats(position, "POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+    EXPECT_EQ(&first, &second);
+    EXPECT_EQ(first.size(), 9u);
+    // The model itself: both nodes baked from it.
+    common::ModelData model = common::loadGltfModel(path);
+    ASSERT_EQ(model.meshes.size(), 2u);
+    expectNear(model.meshes[1].vertices[0].position, {1, 0, 0});
 }
 
 }  // namespace
