@@ -1,10 +1,11 @@
 // Arithmetic on numbers read from files (offsets, sizes, counts, indices) that cannot wrap.
 //
 // A file can say anything: an accessor's byteOffset of 2^64 - 8 plus a few elements wraps a
-// 64-bit sum to a small number, and a bounds check on that sum passes. Every offset, size and
-// count the loaders compute from file data goes through these functions, which say when the true
-// result does not fit instead of returning a wrapped one. Plain C++ (no compiler built-ins), so
-// MSVC builds them as GCC and Clang do.
+// 64-bit sum to a small number, and a bounds check on that sum passes. The loaders compute offsets,
+// sizes and counts from file data with these functions, which say when the true result does not
+// fit instead of returning a wrapped one, wherever an earlier check has not already bounded the
+// operands far below 2^64 (a count of at most 2^25 times 3, say). Plain C++ (no compiler
+// built-ins), so MSVC builds them as GCC and Clang do.
 #pragma once
 
 #include <cstdint>

@@ -58,8 +58,17 @@ constexpr uint64_t kMaxBytes = uint64_t(INT32_MAX);
 // A model reads only its own files: a URI is a data: URI or a relative path that stays inside
 // the model's directory. An absolute path, another scheme (http:, file:) or a path that climbs out
 // with ".." is refused.
+// The data: URIs tinygltf decodes (its IsDataURI); any other URI, "data:/..." included, is a
+// path to tinygltf.
+bool isDataUri(const std::string& uri) {
+    for (const char* type : {"application/octet-stream", "image/jpeg", "image/png", "image/bmp", "image/gif",
+                             "text/plain", "application/gltf-buffer"})
+        if (uri.starts_with(std::string("data:") + type + ";base64,")) return true;
+    return false;
+}
+
 void checkUri(const std::string& origin, const std::string& where, const std::string& uri) {
-    if (uri.rfind("data:", 0) == 0) return;
+    if (isDataUri(uri)) return;
     std::string decoded = percentDecoded(uri);
     auto fail = [&](const std::string& why) {
         throw InputError(origin + ": " + where + " " + shown(uri) + " " + why +
@@ -117,22 +126,46 @@ void checkNesting(const std::string& text, const std::string& origin) {
     }
 }
 
+// The fields glTF defines as indices, counts, enumerations or byte numbers (5 "Properties
+// Reference"): whole numbers, never negative. tinygltf takes a field written as a fraction
+// ("mode": 1.5) or below zero ("mesh": -5) as absent, which would draw another model than the
+// file describes; the values of "attributes" and of a morph target, and the elements of
+// "children", "nodes" and "joints", are indices too.
+bool isIndexKey(const std::string& key) {
+    static const std::set<std::string> keys = {
+        "buffer",        "bufferView", "byteLength", "byteOffset", "byteStride", "camera",
+        "componentType", "count",      "index",      "indices",    "input",      "inverseBindMatrices",
+        "magFilter",     "material",   "mesh",       "minFilter",  "mode",       "node",
+        "output",        "sampler",    "scene",      "skeleton",   "skin",       "source",
+        "target",        "texCoord",   "wrapS",      "wrapT"};
+    return keys.count(key) != 0;
+}
+bool holdsIndices(const std::string& key) {
+    return key == "children" || key == "nodes" || key == "joints" || key == "attributes";
+}  // and "targets", a primitive's morph targets: objects of indices
+
 // tinygltf reads every whole number of the document as a C int: 4294967297 would become 1, a
 // valid index. Any whole number beyond 32 bits is refused with its JSON path, except inside
 // "extras" and "extensions" (application data and extensions' own fields, which we do not read as
-// numbers). Recursion is bounded by checkNesting.
-void checkWholeNumbers(const json& value, std::string& path, const std::string& origin) {
+// numbers); so is a field that must be an index but is a fraction or negative. Recursion is
+// bounded by checkNesting.
+void checkWholeNumbers(const json& value, std::string& path, const std::string& origin, bool index) {
     if (value.is_number_integer()) {
         bool fits = value.is_number_unsigned()
                         ? value.get<uint64_t>() <= uint64_t(INT32_MAX)
                         : value.get<int64_t>() >= INT32_MIN && value.get<int64_t>() <= INT32_MAX;
         if (!fits)
             refuse(origin, path + " is " + value.dump() + ", beyond the 32-bit whole numbers glTF uses");
+        if (index && !value.is_number_unsigned() && value.get<int64_t>() < 0)
+            refuse(origin, path + " is " + value.dump() + "; it must be a whole number of at least 0");
+    } else if (value.is_number() && index) {
+        refuse(origin, path + " is " + value.dump() +
+                           "; it must be a whole number of at least 0, written without a fraction");
     } else if (value.is_array()) {
         const size_t length = path.size();
         for (size_t i = 0; i < value.size(); ++i) {
             path += "[" + std::to_string(i) + "]";
-            checkWholeNumbers(value[i], path, origin);
+            checkWholeNumbers(value[i], path, origin, index);
             path.resize(length);
         }
     } else if (value.is_object()) {
@@ -144,7 +177,13 @@ void checkWholeNumbers(const json& value, std::string& path, const std::string& 
             for (char& c : shownKey)
                 if (static_cast<unsigned char>(c) < 0x20) c = '?';
             path += (path.empty() ? "" : ".") + shownKey;
-            checkWholeNumbers(item, path, origin);
+            // An object of indices ("attributes", a morph target) passes the rule on to its
+            // values; the top-level "nodes" (objects) and an animation's "target" (an object)
+            // are not indices themselves.
+            const bool objects = item.is_array() && !item.empty() && item[0].is_object();
+            const bool indices = index || (isIndexKey(key) && !item.is_object()) ||
+                                 (holdsIndices(key) && !objects) || key == "targets";
+            checkWholeNumbers(item, path, origin, indices);
             path.resize(length);
         }
     }
@@ -321,7 +360,7 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
             if (!buffers[i]["uri"].is_string()) refuse(origin, where + ".uri is not a string");
             const std::string uri = buffers[i]["uri"].get<std::string>();
             checkUri(origin, where + ".uri", uri);
-            if (!uri.starts_with("data:")) files.buffers.push_back(uri);
+            if (!isDataUri(uri)) files.buffers.push_back(uri);
         } else if (!glb || i != 0) {
             refuse(origin, where + " has no uri (only a .glb's first buffer may omit it)");
         }
@@ -359,7 +398,7 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
             if (!images[i]["uri"].is_string()) refuse(origin, where + ".uri is not a string");
             const std::string uri = images[i]["uri"].get<std::string>();
             checkUri(origin, where + ".uri", uri);
-            if (!uri.starts_with("data:")) files.images.push_back(uri);
+            if (!isDataUri(uri)) files.images.push_back(uri);
         } else if (images[i].is_object() && images[i].contains("bufferView") &&
                    (views.empty() ||
                     !readIndex(images[i], "bufferView", views.size() - 1, &view, origin, where))) {
@@ -367,7 +406,7 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
         }
     }
     std::string path;
-    checkWholeNumbers(root, path, origin);
+    checkWholeNumbers(root, path, origin, false);
     return files;
 }
 

@@ -56,15 +56,21 @@ class Skipped {
 public:
     explicit Skipped(std::string origin) : origin_(std::move(origin)) {}
     void note(const std::string& what) {
-        if (std::find(notes_.begin(), notes_.end(), what) == notes_.end()) notes_.push_back(what);
+        if (seen_.insert(what).second) notes_.push_back(what);
     }
-    // An extension skipped: one warning per extension, however many places use it.
+    // An extension skipped: one warning per extension, however many places use it, for the first
+    // kMaxExtensionNotes; the rest are counted in one more line.
     void extension(const std::string& name, const std::string& what) {
-        if (extensions_.insert(name).second) note(what);
+        if (!extensions_.insert(name).second) return;
+        if (extensions_.size() <= kMaxExtensionNotes) note(what);
     }
     // One line each: names from the file (extensions) may hold control characters, shown as '?'.
     void print() const {
-        for (std::string what : notes_) {
+        std::vector<std::string> notes = notes_;
+        if (extensions_.size() > kMaxExtensionNotes)
+            notes.push_back(std::to_string(extensions_.size() - kMaxExtensionNotes) +
+                            " more extensions are skipped");
+        for (std::string what : notes) {
             for (char& c : what)
                 if (static_cast<unsigned char>(c) < 0x20) c = '?';
             std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
@@ -73,8 +79,9 @@ public:
 
 private:
     std::string origin_;
+    static constexpr size_t kMaxExtensionNotes = 16;
     std::vector<std::string> notes_;
-    std::set<std::string> extensions_;
+    std::set<std::string> seen_, extensions_;
 };
 
 // ---- Materials (3.9) -----------------------------------------------------------------------
@@ -290,8 +297,14 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
     if (!model.scenes.empty()) {
         int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
         roots = reader.get(model.scenes, scene, "scene").nodes;
+        std::vector<bool> listed(model.nodes.size(), false);
         for (int root : roots) {
             reader.get(model.nodes, root, "scenes[" + std::to_string(scene) + "].nodes: node");
+            // 5.25 "Scene": its nodes are unique (each listed twice would be walked twice).
+            if (listed[size_t(root)])
+                reader.fail("scenes[" + std::to_string(scene) + "].nodes lists node " + std::to_string(root) +
+                            " twice");
+            listed[size_t(root)] = true;
             if (parents[size_t(root)] >= 0)
                 reader.fail("node " + std::to_string(root) + " is a root and a child");
         }

@@ -239,9 +239,13 @@ private:
         std::error_code ec;
         if (!std::filesystem::exists(source.file, ec)) {
             std::lock_guard lock(mutex_);
-            if (warned_.insert(source.file).second)
+            if (warned_.insert(source.file).second) {
+                std::string shownName = utf8(source.file);  // one line, whatever the file's name holds
+                for (char& c : shownName)
+                    if (static_cast<unsigned char>(c) < 0x20) c = '?';
                 std::fprintf(stderr, "warning: texture '%s' not found; using the default texture\n",
-                             utf8(source.file).c_str());
+                             shownName.c_str());
+            }
             return std::nullopt;
         }
         return loadPixels(source.file, maxDimension);

@@ -450,9 +450,24 @@ ModelData loadModel(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });
-    if (extension == ".gltf" || extension == ".glb") return loadGltfModel(path);
-    if (extension == ".obj") return loadObjModel(path);
-    throw InputError(utf8(path) + ": not a model file we read (.obj, .gltf or .glb)");
+    ModelData model;
+    if (extension == ".gltf" || extension == ".glb")
+        model = loadGltfModel(path);
+    else if (extension == ".obj")
+        model = loadObjModel(path);
+    else
+        throw InputError(utf8(path) + ": not a model file we read (.obj, .gltf or .glb)");
+    // Every coordinate finite is not enough: a model from -3e38 to 3e38 has an infinite extent,
+    // and the camera framed on it, the bounds and the distances the renderer squares overflow.
+    for (const glm::vec3& corner : {model.boundsMin, model.boundsMax})
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(std::abs(corner[axis]) <= kMaxModelCoordinate)) {
+                char value[32];
+                std::snprintf(value, sizeof(value), "%g", double(corner[axis]));
+                throw InputError(utf8(path) + ": a vertex lies at " + value +
+                                 " on an axis; coordinates from -1e15 to 1e15 are drawn");
+            }
+    return model;
 }
 
 const ModelData& loadModelCached(ModelCache& cache, const std::filesystem::path& path) {

@@ -107,13 +107,15 @@ struct ModelData {
 };
 
 // What one model may cost (docs/reliability.md, "What a model may cost"). The glTF loader
-// decides it from the sizes the file declares, before it decodes an accessor or makes a vertex, and
-// refuses a model beyond it in one line naming the limit and the value; an OBJ file pays for
-// each triangle with its own bytes, and its faces are checked as they are converted. Sized for the largest
-// scenes a reader opens: the book's Sponza has about 262,000 triangles, Amazon Lumberyard Bistro about 2.8 M
-// (8.4 M vertices even flat-shaded). Primitives drawn, each once per node that draws its mesh (each becomes a
-// mesh and a draw): 100,000, as many as a scene file may place models.
-inline constexpr uint64_t kMaxModelPrimitives = 100000;
+// decides it from the sizes the file declares, before it decodes an accessor or makes a vertex,
+// and refuses a model beyond it in one line naming the limit and the value; an OBJ file pays for
+// each triangle with its own bytes, and its faces are checked as they are converted. Sized for
+// the largest scenes a reader opens: the book's Sponza has about 262,000 triangles in 103
+// primitives, Amazon Lumberyard Bistro about 2.8 M (8.4 M vertices even flat-shaded).
+//
+// Primitives drawn, each once per node that draws its mesh: 20,000. Each becomes a mesh of its
+// own, with two buffers and a draw (about 20 KB of host memory each on lavapipe).
+inline constexpr uint64_t kMaxModelPrimitives = 20000;
 // Vertices after baking (flat normals, strips and fans unrolled, every node instance): 16 Mi,
 // 56 bytes each, 896 MiB.
 inline constexpr uint64_t kMaxModelVertices = uint64_t{1} << 24;
@@ -122,6 +124,10 @@ inline constexpr uint64_t kMaxModelIndices = uint64_t{1} << 25;
 // Values decoded from glTF accessors (each accessor once) and the corner lists of the distinct
 // primitives (a slot per vertex and per corner): 256 Mi, about 1 GiB of floats.
 inline constexpr uint64_t kMaxModelValuesRead = uint64_t{1} << 28;
+
+// The largest distance from the origin along any axis that a vertex may have after baking: its
+// square, and sums of such squares, stay finite in 32-bit floats (loadModel refuses the rest).
+inline constexpr float kMaxModelCoordinate = 1e15f;
 
 // Loads an OBJ file and the MTL files it names. Throws InputError with a one-line message naming
 // the file on: a missing or unreadable file, an empty model, indices out of range, non-finite

@@ -89,11 +89,35 @@ void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool s
     }
 }
 
+// stb_image decodes more formats than a model's textures come in, and not all of its decoders
+// are safe on hostile input (its Radiance HDR reader loops forever on a truncated run,
+// CVE-2021-42715). Textures are PNG, JPEG, BMP or TGA: the others are refused by their magic
+// bytes before any decoder runs.
+void checkImageFormat(const uint8_t* head, size_t size, const std::string& name) {
+    auto starts = [&](const char* magic, size_t length) {
+        return size >= length && std::memcmp(head, magic, length) == 0;
+    };
+    const char* format = starts("#?RADIANCE", 10) || starts("#?RGBE", 6) ? "a Radiance HDR image"
+                         : starts("GIF8", 4)                             ? "a GIF image"
+                         : starts("8BPS", 4)                             ? "a Photoshop image"
+                         : starts("\x53\x80\xf6\x34", 4)                 ? "a Softimage PIC image"
+                         : size >= 2 && head[0] == 'P' && (head[1] == '5' || head[1] == '6') ? "a PNM image"
+                                                                                             : nullptr;
+    if (format)
+        throw InputError(name + ": " + format + "; textures are read from PNG, JPEG, BMP or TGA images");
+}
+
 }  // namespace
 
 ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimension) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(utf8(path) + ": no such image file");
+    {
+        unsigned char head[16] = {};
+        std::ifstream in(path, std::ios::binary);
+        in.read(reinterpret_cast<char*>(head), sizeof(head));
+        checkImageFormat(head, size_t(in.gcount()), utf8(path));
+    }
     int width = 0, height = 0, channels = 0;
     if (!stbi_info(utf8(path).c_str(), &width, &height, &channels)) {
         // stb_image refuses a PNG header of more than 2^30 bytes of pixels, then tries the other
@@ -122,6 +146,7 @@ ImageExtent readImageExtent(const uint8_t* bytes, size_t size, const std::string
                             uint32_t maxDimension) {
     if (size == 0 || size > size_t(INT32_MAX))
         throw InputError(name + ": not a readable image (empty or too large)");
+    checkImageFormat(bytes, size, name);
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw InputError(name + ": not a readable image (" + stbi_failure_reason() + ")");

@@ -142,7 +142,7 @@ endif()
 # is decoded, in one line naming the need and the heap; with enough memory, drawn.
 fault_test(fault.heap-too-small FAULT vkAllocateMemory:1000000 EXPECT_EXIT 2
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
-    EXPECT_STDERR "^chapter-15: error: the scene needs 12 MiB of device memory \\(meshes 1 MiB, textures with their mip levels 11 MiB\\); this device's largest device-local memory heap has 8 MiB, of which a scene may use 3/4 \\(6 MiB\\)\n$")
+    EXPECT_STDERR "^chapter-15: error: the scene needs 12 MiB of device memory \\(meshes 1 MiB, textures with their mip levels 11 MiB\\). this device's largest device-local memory heap has 8 MiB, of which a scene may use 3/4 \\(6 MiB\\)\n$")
 set_property(TEST fault.heap-too-small APPEND PROPERTY ENVIRONMENT VKBOOK_HEAP_MIB=8)
 fault_test(fault.heap-large-enough FAULT vkAllocateMemory:1000000 EXPECT_EXIT 0
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
@@ -153,6 +153,6 @@ set_property(TEST fault.heap-large-enough APPEND PROPERTY ENVIRONMENT VKBOOK_HEA
 fault_test(fault.heap-before-decoding FAULT vkAllocateMemory:1000000 EXPECT_EXIT 2
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
             --model ${HOSTILE}/tex_header_lies.obj
-    EXPECT_STDERR "^chapter-15: error: the scene needs [0-9]+ MiB of device memory \\(meshes 1 MiB, textures with their mip levels [0-9]+ MiB\\); this device's largest device-local memory heap has 64 MiB")
+    EXPECT_STDERR "^chapter-15: error: the scene needs [0-9]+ MiB of device memory \\(meshes 1 MiB, textures with their mip levels [0-9]+ MiB\\). this device's largest device-local memory heap has 64 MiB")
 set_property(TEST fault.heap-before-decoding APPEND PROPERTY ENVIRONMENT VKBOOK_HEAP_MIB=64)
 set_property(TEST fault.heap-before-decoding APPEND PROPERTY FIXTURES_REQUIRED hostile-inputs)

@@ -67,7 +67,7 @@ function(gltf_hostile name exit expected file)
     endforeach()
 endfunction()
 gltf_hostile(syntax 2 "${GH}/syntax.gltf: invalid JSON: parse error at line 1, column 41: syntax error" syntax.gltf)
-gltf_hostile(version-1 2 "${GH}/version1.gltf: glTF version '1.0'; only glTF 2.0 is read" version1.gltf)
+gltf_hostile(version-1 2 "${GH}/version1.gltf: glTF version '1.0'. only glTF 2.0 is read" version1.gltf)
 gltf_hostile(index-past-vertices 2
     "${GH}/index_past_vertices.gltf: meshes\\[0\\].primitives\\[0\\] indices \\(accessor 2\\) refers to vertex 7 of 3"
     index_past_vertices.gltf)
@@ -88,9 +88,9 @@ gltf_hostile(missing-bin 2 "${GH}/missing_bin.gltf: File not found : missing_bin
 gltf_hostile(nan-position 2 "${GH}/nan_position.gltf: meshes\\[0\\].primitives\\[0\\] POSITION \\(accessor 2\\) holds a non-finite number"
     nan_position.gltf)
 gltf_hostile(huge-count 2
-    "${GH}/huge_count.gltf: accessors\\[0\\].count is 2000000000; it must be a whole number from 1 to 33554432"
+    "${GH}/huge_count.gltf: accessors\\[0\\].count is 2000000000. it must be a whole number from 1 to 33554432"
     huge_count.gltf)
-gltf_hostile(huge-buffer 2 "${GH}/huge_buffer.gltf: buffers\\[0\\].byteLength is 1000000000000000000; it must be a whole number from 1 to 2147483647"
+gltf_hostile(huge-buffer 2 "${GH}/huge_buffer.gltf: buffers\\[0\\].byteLength is 1000000000000000000. it must be a whole number from 1 to 2147483647"
     huge_buffer.gltf)
 gltf_hostile(absolute-uri 2 "${GH}/absolute_uri.gltf: images\\[0\\].uri '/etc/passwd' is an absolute path \\(a model reads only files in its own directory\\)"
     absolute_uri.gltf)
@@ -107,7 +107,7 @@ gltf_hostile(lying-chunk-glb 2 "${GH}/lying_chunk.glb: the GLB's JSON chunk \\([
     lying_chunk.glb)
 # Offsets, sizes and counts that a wrapping sum would let through, each refused by its JSON
 # path; work a small file asks for, refused from its declared sizes before anything is decoded.
-gltf_hostile(offset-wrap 2 "${GH}/offset_wrap.gltf: accessors\\[0\\].byteOffset is 18446744073608888320; it must be a whole number from 0 to 2147483647"
+gltf_hostile(offset-wrap 2 "${GH}/offset_wrap.gltf: accessors\\[0\\].byteOffset is 18446744073608888320. it must be a whole number from 0 to 2147483647"
     offset_wrap.gltf)
 gltf_hostile(view-offset-wrap 2 "${GH}/view_offset_wrap.gltf: bufferViews\\[0\\].byteOffset is 18446744073608888320;"
     view_offset_wrap.gltf)
@@ -125,27 +125,40 @@ gltf_hostile(index-beyond-32-bits 2 "${GH}/index_beyond_32_bits.gltf: nodes\\[1\
 gltf_hostile(chain-1025 2 "${GH}/chain_1025.gltf: the node hierarchy is deeper than 1024" chain_1025.gltf)
 gltf_hostile(chain-1024 0 "chapter-[0-9]+: 1 draws" chain_1024.gltf)
 gltf_hostile(index-budget 2
-    "${GH}/index_budget.gltf: the default scene bakes indices: 33600000 \\(in 11200 nodes\\); at most 33554432 are loaded"
+    "${GH}/index_budget.gltf: the default scene bakes indices: 33600000 \\(in 11200 nodes\\). at most 33554432 are loaded"
     index_budget.gltf)
 gltf_hostile(values-budget 2
-    "${GH}/values_budget.gltf: the default scene reads accessor values: 436207622 \\(in 1 node\\); at most 268435456 are loaded"
+    "${GH}/values_budget.gltf: the default scene reads accessor values: 436207622 \\(in 1 node\\). at most 268435456 are loaded"
     values_budget.gltf)
 gltf_hostile(primitive-product 2
-    "${GH}/primitive_product.gltf: the default scene draws primitives: 110000 \\(in 10000 nodes\\); at most 100000 are loaded"
+    "${GH}/primitive_product.gltf: the default scene draws primitives: 110000 \\(in 10000 nodes\\). at most 20000 are loaded"
     primitive_product.gltf)
 gltf_hostile(newline-extension warn "${GH}/newline_extension.gltf: extension EXT_a[?]b is not used" newline_extension.gltf)
 gltf_hostile(big-numbers-in-extras warn "${GH}/big_numbers_in_extras.gltf: extension EXT_example is not used"
     big_numbers_in_extras.gltf)
+gltf_hostile(hdr-image 2 "${GH}/hdr_image.gltf \\(image 0\\): a Radiance HDR image. textures are read from PNG, JPEG, BMP or TGA images"
+    hdr_image.gltf)
+gltf_hostile(mode-fraction 2 "${GH}/mode_fraction.gltf: meshes\\[0\\].primitives\\[0\\].mode is 1.0. it must be a whole number of at least 0, written without a fraction"
+    mode_fraction.gltf)
+gltf_hostile(negative-mesh 2 "${GH}/negative_mesh.gltf: nodes\\[0\\].mesh is -5. it must be a whole number of at least 0"
+    negative_mesh.gltf)
+gltf_hostile(root-twice 2 "${GH}/root_twice.gltf: scenes\\[0\\].nodes lists node 0 twice" root_twice.gltf)
+gltf_hostile(huge-scale 2 "${GH}/huge_scale.gltf: a vertex lies at 3e\\+38 on an axis. coordinates from -1e15 to 1e15 are drawn"
+    huge_scale.gltf)
+gltf_hostile(data-folder-uri 2 "${GH}/data_folder_uri.gltf: images\\[0\\].uri 'data:/../outside.png' is not a relative path"
+    data_folder_uri.gltf)
+gltf_hostile(missing-newline warn "texture '${GH}/missing[?]line.png' not found. using the default texture"
+    missing_newline.gltf)
 gltf_hostile(newline-key 2 "${GH}/newline_key.gltf: nodes\\[0\\].a[?]b is 4294967296, beyond the 32-bit whole numbers glTF uses"
     newline_key.gltf)
 gltf_hostile(shared-sparse 2
-    "${GH}/shared_sparse.gltf: the default scene bakes vertices: 335544300000 \\(in 10000 nodes\\); at most 16777216 are loaded"
+    "${GH}/shared_sparse.gltf: the default scene bakes vertices: 335544300000 \\(in 10000 nodes\\). at most 16777216 are loaded"
     shared_sparse.gltf)
-gltf_hostile(strip-flat 2 "${GH}/strip_flat.gltf: the default scene bakes vertices: 100663290 \\(in 1 node\\); at most 16777216"
+gltf_hostile(strip-flat 2 "${GH}/strip_flat.gltf: the default scene bakes vertices: 100663290 \\(in 1 node\\). at most 16777216"
     strip_flat.gltf)
 gltf_hostile(budget-plus-one 2 "${GH}/budget_plus_one.gltf: the default scene bakes vertices: 16777218 \\(in 1 node\\)"
     budget_plus_one.gltf)
-gltf_hostile(count-over-limit 2 "${GH}/count_33554433.gltf: accessors\\[2\\].count is 33554433; it must be a whole number from 1 to 33554432"
+gltf_hostile(count-over-limit 2 "${GH}/count_33554433.gltf: accessors\\[2\\].count is 33554433. it must be a whole number from 1 to 33554432"
     count_33554433.gltf)
 gltf_hostile(deep-extras 2 "${GH}/deep_extras.gltf: the JSON nests arrays and objects more than 64 deep \\(at byte [0-9]+\\)"
     deep_extras.gltf)
@@ -165,7 +178,7 @@ set_tests_properties(hostile.gltf-shared-sparse-indexed PROPERTIES FIXTURES_REQU
 hostile_test(gltf-unknown-extension 15 2 "${DATA}/syntax_error.json: not a model file we read \\(.obj, .gltf or .glb\\)"
     --model ${DATA}/syntax_error.json)
 # Warnings: a missing image is a missing texture (the default one); BLEND is drawn as MASK.
-gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found; using the default texture" missing_image.gltf)
+gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found. using the default texture" missing_image.gltf)
 gltf_hostile(blend warn "${GH}/blend.gltf: alphaMode BLEND is drawn as MASK with a cutoff of 0.5 \\(a G-buffer holds one surface per pixel\\)"
     blend.gltf)
 gltf_hostile(emissive warn "${GH}/emissive.gltf: emissive light is not drawn" emissive.gltf)

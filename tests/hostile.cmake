@@ -49,7 +49,7 @@ hostile_test(mtl-garbage 15 2 "${H}/garbage.mtl:[0-9]+: not a text file \\(a NUL
 hostile_test(mtl-empty 15 warn
     "${H}/empty_mtl.obj:2: material 'm' is in none of its MTL files; using the default material"
     --model ${H}/empty_mtl.obj)
-hostile_test(obj-utf16 15 2 "${H}/utf16.obj: UTF-16 text; save it as UTF-8 or ASCII" --model ${H}/utf16.obj)
+hostile_test(obj-utf16 15 2 "${H}/utf16.obj: UTF-16 text. save it as UTF-8 or ASCII" --model ${H}/utf16.obj)
 hostile_test(obj-utf16-no-bom 15 2 "${H}/utf16_nobom.obj:1: not a text file" --model ${H}/utf16_nobom.obj)
 hostile_test(obj-utf8-bom 15 0 " 1 triangles" --model ${H}/utf8_bom.obj)
 hostile_test(obj-usemtl-only 15 2 "${H}/usemtl_only.obj: the model has no triangles" --model ${H}/usemtl_only.obj)
@@ -90,6 +90,8 @@ hostile_test(png-header-huge 15 2 "${H}/header_huge.png: image size 100000x10000
 hostile_test(png-truncated 15 2 "${H}/truncated.png: corrupt image" --model ${H}/tex_truncated.obj)
 hostile_test(png-empty 15 2 "${H}/empty.png: not a readable image \\(unknown image type\\)" --model ${H}/tex_empty.obj)
 hostile_test(png-garbage 15 2 "${H}/garbage.png: not a readable image" --model ${H}/tex_garbage.obj)
+hostile_test(png-hdr-loop 15 2 "${H}/loop.png: a Radiance HDR image. textures are read from PNG, JPEG, BMP or TGA images"
+    --model ${H}/tex_hdr.obj)
 hostile_test(png-16385x1-10 10 2 "${H}/16385x1.png: image size 16385x1 exceeds" --model ${H}/tex_16385x1.obj)
 hostile_test(png-header-lies-14 14 2 "${H}/header_lies.png: corrupt image" --model ${H}/tex_header_lies.obj)
 
@@ -98,7 +100,7 @@ hostile_test(json-empty 15 2 "${H}/scene_empty.json: invalid JSON: parse error a
     --scene ${H}/scene_empty.json)
 hostile_test(json-garbage 15 2 "${H}/scene_garbage.json: invalid JSON: parse error at line 1, column 1"
     --scene ${H}/scene_garbage.json)
-hostile_test(json-utf16 15 2 "${H}/scene_utf16.json: UTF-16 text; save it as UTF-8" --scene ${H}/scene_utf16.json)
+hostile_test(json-utf16 15 2 "${H}/scene_utf16.json: UTF-16 text. save it as UTF-8" --scene ${H}/scene_utf16.json)
 hostile_test(json-root-array 15 2 "${H}/scene_root_array.json: scene: expected an object" --scene ${H}/scene_root_array.json)
 hostile_test(json-models-object 15 2 "${H}/scene_models_object.json: models: expected a non-empty array"
     --scene ${H}/scene_models_object.json)

@@ -348,6 +348,30 @@ void writeHostile(const fs::path& dir) {
         for (int k = 0; k < 10000; ++k) roots.push_back(f.node({{"mesh", 0}}));
         f.root["scenes"][0]["nodes"] = roots;
     });
+    // A Radiance HDR image inside the model (stb_image's HDR reader loops forever on a truncated
+    // run, CVE-2021-42715): refused by its magic bytes before any decoder runs.
+    make("hdr_image.gltf", [](gltf::File& f) {
+        const std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\x02\x02\x00\x08";
+        json pbr = {
+            {"baseColorTexture",
+             {{"index", f.texture(f.image("data:image/png;base64," +
+                                          gltf::base64(std::vector<uint8_t>(hdr.begin(), hdr.end()))))}}}};
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
+    });
+    // Index fields that tinygltf would read as absent: a fraction, a negative index.
+    make("mode_fraction.gltf", [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["mode"] = 1.0; });
+    make("negative_mesh.gltf", [](gltf::File& f) { f.root["nodes"][0]["mesh"] = -5; });
+    // A scene that lists its root twice (its subtree would be walked, and drawn, twice).
+    make("root_twice.gltf", [](gltf::File& f) { f.root["scenes"][0]["nodes"] = {0, 0}; });
+    // A scale whose vertices are finite floats but whose extent is not.
+    make("huge_scale.gltf", [](gltf::File& f) { f.root["nodes"][0]["scale"] = {3e38, 3e38, 3e38}; });
+    // "data:" that is not a data: URI tinygltf decodes is a path to it: refused as one.
+    make("data_folder_uri.gltf", [](gltf::File& f) { f.image("data:/../outside.png"); });
+    // A missing image whose name holds a line break: its warning stays one line.
+    make("missing_newline.gltf", [](gltf::File& f) {
+        json pbr = {{"baseColorTexture", {{"index", f.texture(f.image("missing%0Aline.png"))}}}};
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
+    });
     // The same under a key with a line break: the message shows it as '?', on one line.
     make("newline_key.gltf", [](gltf::File& f) { f.root["nodes"][0]["a\nb"] = 4294967296ull; });
     // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one

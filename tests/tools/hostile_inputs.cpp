@@ -215,6 +215,11 @@ int main(int argc, char** argv) {
         for (const char* name : {"1x1", "16384x1", "16385x1", "grey", "grey_alpha", "rgb16", "header_lies",
                                  "header_huge", "header_at_limit", "truncated", "empty", "garbage"})
             texturedModel(name, std::string(name) + ".png");
+        // A Radiance HDR file with a truncated run (stb_image's reader would loop forever on it,
+        // CVE-2021-42715), even named .png.
+        write("loop.png",
+              std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\x02\x02\x00\x08", 49));
+        texturedModel("hdr", "loop.png");
 
         // Scenes (all place tri.obj).
         write("scene_empty.json", "");
