@@ -59,6 +59,22 @@ struct PreparedTexture {
     bool hasAlpha = false;
 };
 
+// Every buffer and image has a memory allocation of its own, and a device allows only so many
+// (maxMemoryAllocationCount: 4096 on many Windows drivers, however much memory they have): a
+// scene that would need more is refused before it allocates them, in one line, rather than
+// failing part-way. kRendererAllocations are kept for the renderer's own images and buffers.
+constexpr uint64_t kRendererAllocations = 64;
+void checkAllocationCount(const Device& device, uint64_t sceneAllocations,
+                          const std::filesystem::path& file) {
+    const uint64_t limit = device.properties.limits.maxMemoryAllocationCount;
+    if (saturatingAdd(sceneAllocations, kRendererAllocations) > limit)
+        throw InputError((file.empty() ? std::string() : utf8(file) + ": ") + "the scene needs " +
+                         std::to_string(sceneAllocations) +
+                         " memory allocations (one per mesh buffer and texture); this device allows " +
+                         std::to_string(limit) + ", of which the renderer keeps " +
+                         std::to_string(kRendererAllocations));
+}
+
 // Makes every requested texture: decoding and mip chains on worker threads (one per core), the
 // uploads on this thread, in staging batches of at most kStagingBudget bytes. At most
 // kReadyPerWorker textures per worker wait for their upload, so host memory holds a few textures
@@ -162,6 +178,7 @@ private:
     // largest device-local heap: refused beyond 3/4 of it (the rest is the G-buffer's, the
     // swapchain's and the driver's), in one line naming both.
     void checkMemoryBudget(const GpuScene& scene) {
+        checkAllocationCount(device_, 2 * scene.meshes.size() + scene.textures.size() + requests_.size(), {});
         const uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
         uint64_t meshBytes = 0, texelBytes = 0;
         for (const GpuMesh& mesh : scene.meshes)
@@ -319,6 +336,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
         const ModelData& model = loadModelCached(models, instance.file);
         if (!firstMesh.count(instance.file)) {
             firstMesh[instance.file] = uint32_t(gpu.meshes.size());
+            checkAllocationCount(device, 2 * (gpu.meshes.size() + model.meshes.size()), instance.file);
             for (const MeshData& mesh : model.meshes) {
                 GpuMesh out;
                 out.vertices =

@@ -156,3 +156,22 @@ fault_test(fault.heap-before-decoding FAULT vkAllocateMemory:1000000 EXPECT_EXIT
     EXPECT_STDERR "^chapter-15: error: the scene needs [0-9]+ MiB of device memory \\(meshes 1 MiB, textures with their mip levels [0-9]+ MiB\\). this device's largest device-local memory heap has 64 MiB")
 set_property(TEST fault.heap-before-decoding APPEND PROPERTY ENVIRONMENT VKBOOK_HEAP_MIB=64)
 set_property(TEST fault.heap-before-decoding APPEND PROPERTY FIXTURES_REQUIRED hostile-inputs)
+# A device that allows few memory allocations (VKBOOK_MAX_ALLOCATIONS: the layer reports the limit
+# and fails the allocation past it, as a driver does): a scene that needs more than the limit less
+# the renderer's 64 is refused before it allocates, in one line; at exactly the scene's 22 plus
+# those 64, every chapter runs without one failed allocation (the reserve is enough).
+fault_test(fault.allocations-too-few FAULT vkAllocateMemory:1000000 EXPECT_EXIT 2
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
+    EXPECT_STDERR "^chapter-15: error: .*the scene needs [0-9]+ memory allocations \\(one per mesh buffer and texture\\). this device allows 70, of which the renderer keeps 64\n$")
+set_property(TEST fault.allocations-too-few APPEND PROPERTY ENVIRONMENT VKBOOK_MAX_ALLOCATIONS=70)
+foreach(chapter 10 14 15 15-lab)
+    set(gui --gui)
+    if(chapter STREQUAL "10")
+        set(gui)  # chapter-10 has no overlay
+    endif()
+    fault_test(fault.allocations-at-the-reserve-${chapter} FAULT vkAllocateMemory:1000000 EXPECT_EXIT 0
+        COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless --width 64 --height 36
+                ${gui} --frames 3
+        EXPECT_STDOUT "chapter-${chapter}: 19 draws" QUIET_STDERR)
+    set_property(TEST fault.allocations-at-the-reserve-${chapter} APPEND PROPERTY ENVIRONMENT VKBOOK_MAX_ALLOCATIONS=86)
+endforeach()

@@ -22,6 +22,8 @@
 //                                   among a surface's formats).
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
+//   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
+//                                   drivers; lavapipe has no limit).
 //   VKBOOK_EMULATE=swapchain_maintenance1  offers VK_EXT_swapchain_maintenance1 (lavapipe 22.3 has
 //                                   none) and carries out its present fences: the fence of a
 //                                   presentation is signalled by an empty submission right after
@@ -111,10 +113,12 @@ struct InstanceData {
 
 struct DeviceData {
     PFN_vkGetDeviceProcAddr getProcAddr = nullptr;  // the next layer's
-    bool lost = false;  // once a loss is injected, everything that can report one does
-    struct {            // the next layer's functions that we call down to
+    bool lost = false;         // once a loss is injected, everything that can report one does
+    uint64_t allocations = 0;  // live VkDeviceMemory objects, for VKBOOK_MAX_ALLOCATIONS
+    struct {                   // the next layer's functions that we call down to
         PFN_vkDestroyDevice destroyDevice;
         PFN_vkAllocateMemory allocateMemory;
+        PFN_vkFreeMemory freeMemory;
         PFN_vkCreateImage createImage;
         PFN_vkCreateBuffer createBuffer;
         PFN_vkQueueSubmit queueSubmit;
@@ -159,6 +163,7 @@ struct Profile {
     uint32_t apiVersion = 0;    // 0: the device's own
     std::vector<std::string> hidden;
     unsigned long long heapMib = 0;  // 0: the device's own heap sizes
+    uint32_t maxAllocations = 0;     // 0: the device's own maxMemoryAllocationCount
 };
 
 const std::unordered_map<std::string, VkFormat>& formatNames() {
@@ -197,6 +202,8 @@ Profile parseProfile() {
     }
     if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap)
         p.heapMib = std::strtoull(heap, nullptr, 10);
+    if (const char* count = std::getenv("VKBOOK_MAX_ALLOCATIONS"); count && *count)
+        p.maxAllocations = uint32_t(std::strtoul(count, nullptr, 10));
     if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
         std::string list = hide;
         for (size_t start = 0; start <= list.size();) {
@@ -342,6 +349,7 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     data.getProcAddr = next;
     resolve(data.next.destroyDevice, next, *device, "vkDestroyDevice");
     resolve(data.next.allocateMemory, next, *device, "vkAllocateMemory");
+    resolve(data.next.freeMemory, next, *device, "vkFreeMemory");
     resolve(data.next.createImage, next, *device, "vkCreateImage");
     resolve(data.next.createBuffer, next, *device, "vkCreateBuffer");
     resolve(data.next.queueSubmit, next, *device, "vkQueueSubmit");
@@ -383,8 +391,36 @@ VKAPI_ATTR void VKAPI_CALL destroyDevice(VkDevice device, const VkAllocationCall
 VKAPI_ATTR VkResult VKAPI_CALL allocateMemory(VkDevice device, const VkMemoryAllocateInfo* info,
                                               const VkAllocationCallbacks* allocator,
                                               VkDeviceMemory* memory) {
-    FAIL_OR_PASS_DOWN("vkAllocateMemory", VK_ERROR_OUT_OF_DEVICE_MEMORY, allocateMemory, device, info,
-                      allocator, memory);
+    DeviceData& data = deviceData(device);
+    {
+        std::lock_guard lock(gLock);
+        if (failsNow("vkAllocateMemory")) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+        // A device that allows only so many allocations at a time (VKBOOK_MAX_ALLOCATIONS) fails
+        // the one past them, as a driver does (VK_ERROR_TOO_MANY_OBJECTS).
+        if (profile().maxAllocations != 0 && data.allocations >= profile().maxAllocations) {
+            std::fprintf(stderr,
+                         "VK_LAYER_VKBOOK_fault_injection: allocation %llu is past "
+                         "VKBOOK_MAX_ALLOCATIONS\n",
+                         (unsigned long long)data.allocations + 1);
+            return VK_ERROR_TOO_MANY_OBJECTS;
+        }
+    }
+    VkResult result = data.next.allocateMemory(device, info, allocator, memory);
+    if (result == VK_SUCCESS) {
+        std::lock_guard lock(gLock);
+        ++data.allocations;
+    }
+    return result;
+}
+
+VKAPI_ATTR void VKAPI_CALL freeMemory(VkDevice device, VkDeviceMemory memory,
+                                      const VkAllocationCallbacks* allocator) {
+    DeviceData& data = deviceData(device);
+    if (memory != VK_NULL_HANDLE) {
+        std::lock_guard lock(gLock);
+        --data.allocations;
+    }
+    data.next.freeMemory(device, memory, allocator);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createImage(VkDevice device, const VkImageCreateInfo* info,
@@ -485,6 +521,9 @@ Function nextInstanceCall(VkPhysicalDevice physical, const char* name) {
 void lowerVersion(VkPhysicalDeviceProperties& properties) {
     if (profile().apiVersion != 0 && profile().apiVersion < properties.apiVersion)
         properties.apiVersion = profile().apiVersion;
+    if (profile().maxAllocations != 0 &&
+        profile().maxAllocations < properties.limits.maxMemoryAllocationCount)
+        properties.limits.maxMemoryAllocationCount = profile().maxAllocations;
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties(VkPhysicalDevice physical,
@@ -608,6 +647,7 @@ PFN_vkVoidFunction interceptedDeviceCall(const char* name) {
         {"vkGetDeviceProcAddr", reinterpret_cast<PFN_vkVoidFunction>(getDeviceProcAddr)},
         {"vkDestroyDevice", reinterpret_cast<PFN_vkVoidFunction>(destroyDevice)},
         {"vkAllocateMemory", reinterpret_cast<PFN_vkVoidFunction>(allocateMemory)},
+        {"vkFreeMemory", reinterpret_cast<PFN_vkVoidFunction>(freeMemory)},
         {"vkCreateImage", reinterpret_cast<PFN_vkVoidFunction>(createImage)},
         {"vkCreateBuffer", reinterpret_cast<PFN_vkVoidFunction>(createBuffer)},
         {"vkQueueSubmit", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit)},
