@@ -147,7 +147,8 @@ bool holdsIndices(const std::string& key) {
 // tinygltf reads every whole number of the document as a C int: 4294967297 would become 1, a
 // valid index. Any whole number beyond 32 bits is refused with its JSON path, except inside
 // "extras" and "extensions" (application data and extensions' own fields, which we do not read as
-// numbers); so is a field that must be an index but is a fraction or negative. Recursion is
+// numbers) and an accessor's "min" and "max" (read as doubles: a 32-bit unsigned accessor's bound
+// may be 4294967295); so is a field that must be an index but is a fraction or negative. Recursion is
 // bounded by checkNesting.
 void checkWholeNumbers(const json& value, std::string& path, const std::string& origin, bool index) {
     if (value.is_number_integer()) {
@@ -172,6 +173,8 @@ void checkWholeNumbers(const json& value, std::string& path, const std::string& 
         const size_t length = path.size();
         for (const auto& [key, item] : value.items()) {
             if (key == "extras" || key == "extensions") continue;
+            if ((key == "min" || key == "max") && !index)
+                continue;  // accessor bounds: tinygltf reads doubles
             // A key is the file's text: at most 64 characters of it, control characters as '?'.
             std::string shownKey = key.size() > 64 ? key.substr(0, 64) + "..." : key;
             for (char& c : shownKey)

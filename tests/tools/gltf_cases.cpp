@@ -292,12 +292,14 @@ void writeHostile(const fs::path& dir) {
             for (int k = 1; k < levels; ++k) f.root["nodes"].push_back({{"children", {k - 1}}});
             f.root["scenes"][0]["nodes"] = {levels - 1};
         });
-    // Numbers beyond 32 bits where glTF allows anything: application data and an extension's own
-    // fields (loaded: they are not read as numbers).
+    // Numbers beyond 32 bits where glTF allows them: application data, an extension's own fields
+    // (not read as numbers) and an accessor's bounds (read as doubles): loaded.
     make("big_numbers_in_extras.gltf", [](gltf::File& f) {
         f.root["nodes"][0]["extras"] = {{"id", 1099511627776ull}};
         f.root["extensions"] = {{"EXT_example", {{"size", 18446744073709551615ull}}}};
         f.root["extensionsUsed"] = {"EXT_example"};
+        f.root["accessors"][1]["min"] = {0};  // an accessor's bounds are read as doubles
+        f.root["accessors"][1]["max"] = {4294967295ull};
     });
     // An extension's name with a line break: its warning is still one line.
     make("newline_extension.gltf", [](gltf::File& f) { f.root["extensionsUsed"] = {"EXT_a\nb"}; });
