@@ -2,6 +2,7 @@
 #include "common/gltf_document.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <set>
 #include <string>
@@ -58,13 +59,19 @@ constexpr uint64_t kMaxBytes = uint64_t(INT32_MAX);
 // A model reads only its own files: a URI is a data: URI or a relative path that stays inside
 // the model's directory. An absolute path, another scheme (http:, file:) or a path that climbs out
 // with ".." is refused.
-// The data: URIs tinygltf decodes (its IsDataURI); any other URI, "data:/..." included, is a
-// path to tinygltf.
+// A data: URI (RFC 2397) as glTF uses them: "data:" TYPE/SUBTYPE ";base64,". tinygltf decodes
+// some types (application/octet-stream, image/png, ...) and takes the others (image/webp, an
+// extension's) for file names, which our file callbacks then do not find; a URI that is not of
+// this form ("data:/../outside.png") is a path, checked as one.
 bool isDataUri(const std::string& uri) {
-    for (const char* type : {"application/octet-stream", "image/jpeg", "image/png", "image/bmp", "image/gif",
-                             "text/plain", "application/gltf-buffer"})
-        if (uri.starts_with(std::string("data:") + type + ";base64,")) return true;
-    return false;
+    const size_t comma = uri.find(";base64,");
+    if (!uri.starts_with("data:") || comma == std::string::npos) return false;
+    const std::string type = uri.substr(5, comma - 5);
+    const size_t slash = type.find('/');
+    if (slash == std::string::npos || slash == 0 || slash + 1 == type.size()) return false;
+    return std::all_of(type.begin(), type.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '/' || c == '+' || c == '-' || c == '.';
+    });
 }
 
 void checkUri(const std::string& origin, const std::string& where, const std::string& uri) {
@@ -144,24 +151,22 @@ bool holdsIndices(const std::string& key) {
     return key == "children" || key == "nodes" || key == "joints" || key == "attributes";
 }  // and "targets", a primitive's morph targets: objects of indices
 
-// tinygltf reads every whole number of the document as a C int: 4294967297 would become 1, a
-// valid index. Any whole number beyond 32 bits is refused with its JSON path, except inside
-// "extras" and "extensions" (application data and extensions' own fields, which we do not read as
-// numbers) and an accessor's "min" and "max" (read as doubles: a 32-bit unsigned accessor's bound
-// may be 4294967295); so is a field that must be an index but is a fraction or negative. Recursion is
-// bounded by checkNesting.
+// tinygltf reads the whole numbers of index fields as C ints: 4294967297 would become 1, a valid
+// index, and a fraction or a negative number would be no value at all. An index field beyond 32
+// bits, negative or written with a fraction or an exponent is refused with its JSON path. Other
+// numbers (translations, factors, an accessor's bounds) are read as doubles and may be anything
+// finite; "extras" and "extensions" (application data and extensions' own fields) are not read.
+// Recursion is bounded by checkNesting.
 void checkWholeNumbers(const json& value, std::string& path, const std::string& origin, bool index) {
-    if (value.is_number_integer()) {
-        bool fits = value.is_number_unsigned()
-                        ? value.get<uint64_t>() <= uint64_t(INT32_MAX)
-                        : value.get<int64_t>() >= INT32_MIN && value.get<int64_t>() <= INT32_MAX;
-        if (!fits)
+    if (value.is_number_integer() && index) {
+        if (value.is_number_unsigned() ? value.get<uint64_t>() > uint64_t(INT32_MAX)
+                                       : value.get<int64_t>() > INT32_MAX)
             refuse(origin, path + " is " + value.dump() + ", beyond the 32-bit whole numbers glTF uses");
-        if (index && !value.is_number_unsigned() && value.get<int64_t>() < 0)
+        if (!value.is_number_unsigned() && value.get<int64_t>() < 0)
             refuse(origin, path + " is " + value.dump() + "; it must be a whole number of at least 0");
     } else if (value.is_number() && index) {
-        refuse(origin, path + " is " + value.dump() +
-                           "; it must be a whole number of at least 0, written without a fraction");
+        refuse(origin, path + " is not written as a whole number (it reads as " + value.dump() +
+                           "): write it in digits only, as 1 rather than 1.0 or 1e0");
     } else if (value.is_array()) {
         const size_t length = path.size();
         for (size_t i = 0; i < value.size(); ++i) {
@@ -173,8 +178,6 @@ void checkWholeNumbers(const json& value, std::string& path, const std::string& 
         const size_t length = path.size();
         for (const auto& [key, item] : value.items()) {
             if (key == "extras" || key == "extensions") continue;
-            if ((key == "min" || key == "max") && !index)
-                continue;  // accessor bounds: tinygltf reads doubles
             // A key is the file's text: at most 64 characters of it, control characters as '?'.
             std::string shownKey = key.size() > 64 ? key.substr(0, 64) + "..." : key;
             for (char& c : shownKey)

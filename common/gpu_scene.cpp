@@ -75,6 +75,24 @@ void checkAllocationCount(const Device& device, uint64_t sceneAllocations,
                          std::to_string(kRendererAllocations));
 }
 
+// The largest device-local heap and the part of it a scene may use: 3/4 (the rest is the
+// G-buffer's, the swapchain's and the driver's).
+struct MemoryBudget {
+    VkDeviceSize heap = 0, scene = 0;
+};
+MemoryBudget memoryBudget(const Device& device) {
+    MemoryBudget budget;
+    for (uint32_t i = 0; i < device.memory.memoryHeapCount; ++i)
+        if (device.memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            budget.heap = std::max(budget.heap, device.memory.memoryHeaps[i].size);
+    budget.scene = budget.heap / 4 * 3;
+    return budget;
+}
+
+std::string mebibytes(uint64_t bytes) {  // rounded up
+    return std::to_string(bytes / (1 << 20) + (bytes % (1 << 20) != 0));
+}
+
 // Makes every requested texture: decoding and mip chains on worker threads (one per core), the
 // uploads on this thread, in staging batches of at most kStagingBudget bytes. At most
 // kReadyPerWorker textures per worker wait for their upload, so host memory holds a few textures
@@ -196,11 +214,9 @@ private:
             }
             if (extent) texelBytes = saturatingAdd(texelBytes, mipChainBytes(*extent));
         }
-        VkDeviceSize heap = 0;
-        for (uint32_t i = 0; i < device_.memory.memoryHeapCount; ++i)
-            if (device_.memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-                heap = std::max(heap, device_.memory.memoryHeaps[i].size);
-        const uint64_t budget = heap / 4 * 3, need = saturatingAdd(meshBytes, texelBytes);
+        const MemoryBudget memory = memoryBudget(device_);
+        const VkDeviceSize heap = memory.heap, budget = memory.scene;
+        const uint64_t need = saturatingAdd(meshBytes, texelBytes);
         auto mib = [](uint64_t bytes) {
             return std::to_string(bytes / (1 << 20) + (bytes % (1 << 20) != 0));
         };
@@ -330,13 +346,27 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
     std::map<std::filesystem::path, uint32_t> firstMesh;       // per model: its meshes' index in gpu.meshes
     std::map<std::filesystem::path, uint32_t> plainMaterials;  // per model without overrides: its materials
     bool firstBounds = true;
+    uint64_t meshBytes = 0;  // of the meshes uploaded so far
 
     for (uint32_t instanceIndex = 0; instanceIndex < scene.models.size(); ++instanceIndex) {
         const ModelInstance& instance = scene.models[instanceIndex];
         const ModelData& model = loadModelCached(models, instance.file);
-        if (!firstMesh.count(instance.file)) {
-            firstMesh[instance.file] = uint32_t(gpu.meshes.size());
+        const std::filesystem::path key = modelKey(instance.file);  // one upload per file, however spelled
+        if (!firstMesh.count(key)) {
+            firstMesh[key] = uint32_t(gpu.meshes.size());
             checkAllocationCount(device, 2 * (gpu.meshes.size() + model.meshes.size()), instance.file);
+            // The meshes' device memory, model by model before each is uploaded (the textures are
+            // added from their headers before they are decoded, in TextureBuilder).
+            for (const MeshData& mesh : model.meshes)
+                meshBytes = saturatingAdd(
+                    meshBytes, saturatingAdd(saturatingMul(mesh.vertices.size(), sizeof(Vertex)),
+                                             saturatingMul(mesh.indices.size(), sizeof(uint32_t))));
+            if (const MemoryBudget memory = memoryBudget(device); meshBytes > memory.scene)
+                throw InputError(
+                    utf8(instance.file) + ": the scene's meshes need " + mebibytes(meshBytes) +
+                    " MiB of device memory with it; this device's largest device-local memory heap has " +
+                    std::to_string(memory.heap >> 20) + " MiB, of which a scene may use 3/4 (" +
+                    std::to_string(memory.scene >> 20) + " MiB)");
             for (const MeshData& mesh : model.meshes) {
                 GpuMesh out;
                 out.vertices =
@@ -364,10 +394,10 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                                  "' (named in the scene's material overrides)");
         }
         uint32_t materialBase = uint32_t(pending.size());
-        if (instance.materials.empty() && plainMaterials.count(instance.file)) {
-            materialBase = plainMaterials[instance.file];
+        if (instance.materials.empty() && plainMaterials.count(key)) {
+            materialBase = plainMaterials[key];
         } else {
-            if (instance.materials.empty()) plainMaterials[instance.file] = materialBase;
+            if (instance.materials.empty()) plainMaterials[key] = materialBase;
             for (const MaterialData& m : model.materials) {
                 MaterialOverride o;
                 if (auto it = instance.materials.find(m.name); it != instance.materials.end()) o = it->second;
@@ -420,7 +450,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 " draws (or materials) in all, models times their meshes; at most that many are drawn");
         glm::mat4 matrix = instance.transform.matrix();
         for (size_t i = 0; i < model.meshes.size(); ++i) {
-            gpu.draws.push_back(Draw{.mesh = firstMesh[instance.file] + uint32_t(i),
+            gpu.draws.push_back(Draw{.mesh = firstMesh[key] + uint32_t(i),
                                      .material = materialBase + model.meshes[i].material,
                                      .instance = instanceIndex});
             setDrawModel(gpu, gpu.draws.back(), matrix);

@@ -59,7 +59,8 @@ void checkNumbers(const std::filesystem::path& file, int lineNumber, std::istrin
         }
         char* end = nullptr;
         double value = std::strtod(token.c_str(), &end);
-        if (*end != '\0' || !std::isfinite(value))
+        // strtod also reads hexadecimal ("0x1p3" is 8), which tinyobjloader reads as 0.
+        if (*end != '\0' || !std::isfinite(value) || token.find_first_of("xX") != std::string::npos)
             throw InputError(at(file, lineNumber) + "'" + key + "' has " + shortQuote(token) +
                              ", not a finite number");
     }
@@ -182,10 +183,14 @@ ObjText checkObjText(const std::filesystem::path& obj, const std::string& text) 
         // tinyobjloader's skin weights: it converts their joint ids to int unchecked (undefined
         // behaviour for 1e38), and we use no weights.
         if (key == "vw") throw InputError(at(obj, number) + "'vw' (vertex weights) is not supported");
+        // tinyobjloader's tags: "t name a/b/c" makes a, b and c ints, floats and strings of a
+        // megabyte each for a line of 20 characters; we use no tags.
+        if (key == "t") throw InputError(at(obj, number) + "'t' (tags) is not supported");
         if (key == "usemtl")
             if (std::string name; tokens >> name) result.usemtl.emplace_back(name, number);
         if (key == "mtllib")
             for (const std::string& file : mtllibNames(line)) {
+                if (result.libraries.count(file)) continue;  // named again: checked once
                 std::filesystem::path mtl = obj.parent_path() / file;
                 std::error_code ec;
                 if (!std::filesystem::is_regular_file(mtl, ec))
@@ -470,9 +475,16 @@ ModelData loadModel(const std::filesystem::path& path) {
     return model;
 }
 
+std::filesystem::path modelKey(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : canonical;
+}
+
 const ModelData& loadModelCached(ModelCache& cache, const std::filesystem::path& path) {
-    auto it = cache.find(path);
-    if (it == cache.end()) it = cache.emplace(path, loadModel(path)).first;
+    const std::filesystem::path key = modelKey(path);
+    auto it = cache.find(key);
+    if (it == cache.end()) it = cache.emplace(key, loadModel(path)).first;
     return it->second;
 }
 

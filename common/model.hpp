@@ -142,8 +142,10 @@ ModelData loadGltfModel(const std::filesystem::path& path);
 ModelData loadModel(const std::filesystem::path& path);
 
 // Models already read in this run, by path: a scene that places one model many times, or --model
-// (read once for its bounds, then uploaded), reads each file once.
+// (read once for its bounds, then uploaded), reads each file once, however its path is spelled
+// ("a.gltf", "./a.gltf", "dir/../a.gltf": the key is modelKey's).
 using ModelCache = std::map<std::filesystem::path, ModelData>;
+std::filesystem::path modelKey(const std::filesystem::path& path);
 const ModelData& loadModelCached(ModelCache& cache, const std::filesystem::path& path);
 
 // Computes per-vertex tangents and bitangents from positions, normals and UVs: per-triangle UV

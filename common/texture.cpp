@@ -107,6 +107,48 @@ void checkImageFormat(const uint8_t* head, size_t size, const std::string& name)
         throw InputError(name + ": " + format + "; textures are read from PNG, JPEG, BMP or TGA images");
 }
 
+// What the whole of an image's bytes must hold before stb_image decodes them. A progressive
+// JPEG's every scan walks the whole image again (a scan costs 14 bytes of file: 5,000 of them make
+// 50 KB take half a minute at 16384x16384); real files have about 10. An uncompressed BMP or
+// TGA shorter than its header's pixels is decoded by stb_image as if the rest were zeros.
+constexpr size_t kMaxJpegScans = 100;
+void checkImageBytes(const uint8_t* bytes, size_t size, const std::string& name) {
+    auto le = [&](size_t at, int n) {
+        uint64_t v = 0;
+        for (int i = n - 1; i >= 0; --i) v = v << 8 | bytes[at + size_t(i)];
+        return v;
+    };
+    if (size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) {
+        // 0xFF 0xDA starts a scan; inside a scan's data every 0xFF is followed by 0x00 or a
+        // restart marker, so each pair counts one scan.
+        size_t scans = 0;
+        for (size_t i = 0; i + 1 < size; ++i)
+            if (bytes[i] == 0xff && bytes[i + 1] == 0xda && ++scans > kMaxJpegScans)
+                throw InputError(name + ": a JPEG of more than " + std::to_string(kMaxJpegScans) +
+                                 " scans (each one decodes the whole image again)");
+    } else if (size >= 34 && bytes[0] == 'B' && bytes[1] == 'M') {
+        const uint64_t offset = le(10, 4), width = le(18, 4), bits = le(28, 2), compression = le(30, 4);
+        const int64_t height = int32_t(uint32_t(le(22, 4)));
+        if ((compression == 0 || compression == 3) && width <= (1u << 16) && bits <= 32) {
+            const uint64_t row = (width * bits + 31) / 32 * 4;
+            const uint64_t need =
+                saturatingAdd(offset, saturatingMul(row, uint64_t(height < 0 ? -height : height)));
+            if (need > size)
+                throw InputError(name + ": corrupt image (its pixels end at byte " + std::to_string(size) +
+                                 " of " + std::to_string(need) + ")");
+        }
+    } else if (size >= 18 && (bytes[2] == 2 || bytes[2] == 3) && bytes[1] <= 1) {
+        // An uncompressed TGA (type 2, true colour, or 3, grey); RLE types are not sized ahead.
+        const uint64_t colorMap = bytes[1] ? le(5, 2) * ((bytes[7] + 7) / 8) : 0;
+        const uint64_t need =
+            saturatingAdd(18 + uint64_t(bytes[0]) + colorMap,
+                          saturatingMul(le(12, 2) * le(14, 2), (uint64_t(bytes[16]) + 7) / 8));
+        if (need > size)
+            throw InputError(name + ": corrupt image (its pixels end at byte " + std::to_string(size) +
+                             " of " + std::to_string(need) + ")");
+    }
+}
+
 }  // namespace
 
 ImageExtent readImageExtent(const std::filesystem::path& path, uint32_t maxDimension) {
@@ -166,18 +208,15 @@ uint64_t mipChainBytes(ImageExtent extent) {
 }
 
 Pixels loadPixels(const std::filesystem::path& path, uint32_t maxDimension) {
-    readImageExtent(path, maxDimension);  // the header's size, checked before decoding
-    int width = 0, height = 0, channels = 0;
-    stbi_uc* data = stbi_load(utf8(path).c_str(), &width, &height, &channels, 4);
-    if (!data) throw InputError(utf8(path) + ": corrupt image (" + stbi_failure_reason() + ")");
-    Pixels pixels{uint32_t(width), uint32_t(height), {}};
-    pixels.rgba.assign(data, data + size_t(width) * size_t(height) * 4);
-    stbi_image_free(data);
-    return pixels;
+    readImageExtent(path, maxDimension);  // the header's size, checked before reading it whole
+    const std::string bytes = readInputFile(path);
+    return decodePixels(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), utf8(path),
+                        maxDimension);
 }
 
 Pixels decodePixels(const uint8_t* bytes, size_t size, const std::string& name, uint32_t maxDimension) {
     readImageExtent(bytes, size, name, maxDimension);  // the header's size, checked before decoding
+    checkImageBytes(bytes, size, name);
     int width = 0, height = 0, channels = 0;
     stbi_uc* data = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!data) throw InputError(name + ": corrupt image (" + stbi_failure_reason() + ")");

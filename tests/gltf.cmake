@@ -138,7 +138,7 @@ gltf_hostile(big-numbers-in-extras warn "${GH}/big_numbers_in_extras.gltf: exten
     big_numbers_in_extras.gltf)
 gltf_hostile(hdr-image 2 "${GH}/hdr_image.gltf \\(image 0\\): a Radiance HDR image. textures are read from PNG, JPEG, BMP or TGA images"
     hdr_image.gltf)
-gltf_hostile(mode-fraction 2 "${GH}/mode_fraction.gltf: meshes\\[0\\].primitives\\[0\\].mode is 1.0. it must be a whole number of at least 0, written without a fraction"
+gltf_hostile(mode-fraction 2 "${GH}/mode_fraction.gltf: meshes\\[0\\].primitives\\[0\\].mode is not written as a whole number \\(it reads as 1.0\\): write it in digits only, as 1 rather than 1.0 or 1e0"
     mode_fraction.gltf)
 gltf_hostile(negative-mesh 2 "${GH}/negative_mesh.gltf: nodes\\[0\\].mesh is -5. it must be a whole number of at least 0"
     negative_mesh.gltf)
@@ -149,7 +149,9 @@ gltf_hostile(data-folder-uri 2 "${GH}/data_folder_uri.gltf: images\\[0\\].uri 'd
     data_folder_uri.gltf)
 gltf_hostile(missing-newline warn "texture '${GH}/missing[?]line.png' not found. using the default texture"
     missing_newline.gltf)
-gltf_hostile(newline-key 2 "${GH}/newline_key.gltf: nodes\\[0\\].a[?]b is 4294967296, beyond the 32-bit whole numbers glTF uses"
+gltf_hostile(webp-fallback warn "${GH}/webp_fallback.gltf: texture extension EXT_texture_webp is skipped"
+    webp_fallback.gltf)
+gltf_hostile(newline-key 2 "${GH}/newline_key.gltf: meshes\\[0\\].primitives\\[0\\].attributes.a[?]b is 4294967296, beyond the 32-bit whole numbers glTF uses"
     newline_key.gltf)
 gltf_hostile(shared-sparse 2
     "${GH}/shared_sparse.gltf: the default scene bakes vertices: 335544300000 \\(in 10000 nodes\\). at most 16777216 are loaded"

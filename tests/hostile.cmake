@@ -92,6 +92,14 @@ hostile_test(png-empty 15 2 "${H}/empty.png: not a readable image \\(unknown ima
 hostile_test(png-garbage 15 2 "${H}/garbage.png: not a readable image" --model ${H}/tex_garbage.obj)
 hostile_test(png-hdr-loop 15 2 "${H}/loop.png: a Radiance HDR image. textures are read from PNG, JPEG, BMP or TGA images"
     --model ${H}/tex_hdr.obj)
+hostile_test(bmp-header-only 15 2 "${H}/header_only.bmp: corrupt image \\(its pixels end at byte 118 of 1073741878\\)"
+    --model ${H}/tex_bmp.obj)
+hostile_test(jpeg-scans 15 2 "${H}/scans.jpg: a JPEG of more than 100 scans \\(each one decodes the whole image again\\)"
+    --model ${H}/tex_scans.obj)
+hostile_test(obj-tags 15 2 "${H}/tags.obj:4: 't' \\(tags\\) is not supported" --model ${H}/tags.obj)
+hostile_test(obj-hex-number 15 2 "${H}/hex.obj:2: 'v' has '0x1p3', not a finite number" --model ${H}/hex.obj)
+hostile_test(obj-mtllib-repeated 15 0 " 1 triangles" --model ${H}/mtllib_repeated.obj)
+set_tests_properties(hostile.obj-mtllib-repeated PROPERTIES TIMEOUT 60)
 hostile_test(png-16385x1-10 10 2 "${H}/16385x1.png: image size 16385x1 exceeds" --model ${H}/tex_16385x1.obj)
 hostile_test(png-header-lies-14 14 2 "${H}/header_lies.png: corrupt image" --model ${H}/tex_header_lies.obj)
 

@@ -300,6 +300,7 @@ void writeHostile(const fs::path& dir) {
         f.root["extensionsUsed"] = {"EXT_example"};
         f.root["accessors"][1]["min"] = {0};  // an accessor's bounds are read as doubles
         f.root["accessors"][1]["max"] = {4294967295ull};
+        f.root["nodes"][0]["translation"] = {3000000000ull, 0, 0};  // so is a translation
     });
     // An extension's name with a line break: its warning is still one line.
     make("newline_extension.gltf", [](gltf::File& f) { f.root["extensionsUsed"] = {"EXT_a\nb"}; });
@@ -369,13 +370,26 @@ void writeHostile(const fs::path& dir) {
     make("huge_scale.gltf", [](gltf::File& f) { f.root["nodes"][0]["scale"] = {3e38, 3e38, 3e38}; });
     // "data:" that is not a data: URI tinygltf decodes is a path to it: refused as one.
     make("data_folder_uri.gltf", [](gltf::File& f) { f.image("data:/../outside.png"); });
+    // Legal: a WebP image (EXT_texture_webp, used but not required) with the PNG fallback the
+    // extension asks for as the texture's source; the WebP image is never decoded.
+    writePng(dir / "fallback.png", 1, 1, 4, {255, 255, 255, 255});
+    make("webp_fallback.gltf", [](gltf::File& f) {
+        int png = f.image("fallback.png");
+        int webp = f.image("data:image/webp;base64,UklGRgAAAABXRUJQ");
+        f.root["extensionsUsed"] = {"EXT_texture_webp"};
+        int texture =
+            f.add("textures", {{"source", png}, {"extensions", {{"EXT_texture_webp", {{"source", webp}}}}}});
+        json pbr = {{"baseColorTexture", {{"index", texture}}}};
+        f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
+    });
     // A missing image whose name holds a line break: its warning stays one line.
     make("missing_newline.gltf", [](gltf::File& f) {
         json pbr = {{"baseColorTexture", {{"index", f.texture(f.image("missing%0Aline.png"))}}}};
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
     });
     // The same under a key with a line break: the message shows it as '?', on one line.
-    make("newline_key.gltf", [](gltf::File& f) { f.root["nodes"][0]["a\nb"] = 4294967296ull; });
+    make("newline_key.gltf",
+         [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["attributes"]["a\nb"] = 4294967296ull; });
     // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one
     // sparse value (no buffer view), drawn without indices: 2^25 vertices per node.
     auto sharedSparse = [](gltf::File& f, int nodes, bool fewIndices) {

@@ -215,6 +215,49 @@ int main(int argc, char** argv) {
         for (const char* name : {"1x1", "16384x1", "16385x1", "grey", "grey_alpha", "rgb16", "header_lies",
                                  "header_huge", "header_at_limit", "truncated", "empty", "garbage"})
             texturedModel(name, std::string(name) + ".png");
+        // An uncompressed BMP header that claims 16384x16384 over 64 bytes of pixels (stb_image
+        // would decode 1 GiB of zeros), and a progressive JPEG of 101 scans (each scan decodes the
+        // whole image again; 5,000 of 14 bytes each take half a minute at 16384x16384).
+        {
+            std::string bmp = "BM";
+            auto le = [&](uint32_t v, int n) {
+                for (int i = 0; i < n; ++i) bmp += char((v >> (8 * i)) & 0xff);
+            };
+            le(0, 4), le(0, 4), le(54, 4);                               // file size, reserved, pixel offset
+            le(40, 4), le(16384, 4), le(16384, 4), le(1, 2), le(32, 2);  // BITMAPINFOHEADER
+            le(0, 4), le(0, 4), le(0, 4), le(0, 4), le(0, 4), le(0, 4);
+            bmp += std::string(64, '\0');
+            write("header_only.bmp", bmp);
+            texturedModel("bmp", "header_only.bmp");
+            auto segment = [](unsigned char marker, const std::string& payload) {
+                return std::string("\xff", 1) + char(marker) + char((payload.size() + 2) >> 8) +
+                       char((payload.size() + 2) & 0xff) + payload;
+            };
+            const std::string table = std::string(1, '\x01') + std::string(15, '\0');
+            std::string jpeg = std::string("\xff\xd8", 2) +
+                               segment(0xdb, std::string(1, '\0') + std::string(64, '\x01')) +
+                               segment(0xc2, std::string("\x08\x00\x10\x00\x10\x01\x01\x11\x00", 9)) +
+                               segment(0xc4, std::string(1, '\0') + table + std::string(1, '\0') +
+                                                 std::string(1, '\x10') + table + std::string(1, '\xe0'));
+            for (int scan = 0; scan < 101; ++scan)
+                jpeg += segment(0xda, std::string("\x01\x01\x00\x01\x3f\x00", 6));
+            jpeg += std::string("\xff\xd9", 2);
+            write("scans.jpg", jpeg);
+            texturedModel("scans", "scans.jpg");
+        }
+        // OBJ tags (tinyobjloader makes a megabyte of each for 20 characters), a hexadecimal
+        // number (strtod reads 0x1p3 as 8, tinyobjloader as 0), and an mtllib line naming one
+        // library 20,000 times (checked once, not 20,000 times).
+        write("tags.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nt a 8192/8192/8192\nf 1 2 3\n");
+        write("hex.obj", "v 0 0 0\nv 0x1p3 0 0\nv 0 1 0\nf 1 2 3\n");
+        {
+            std::string names, mtl = "newmtl m\n";
+            for (int k = 0; k < 20000; ++k) names += " many.mtl";
+            for (int k = 0; k < 5000; ++k) mtl += "Kd 1 1 1\n";
+            write("many.mtl", mtl);
+            write("mtllib_repeated.obj",
+                  "mtllib" + names + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+        }
         // A Radiance HDR file with a truncated run (stb_image's reader would loop forever on it,
         // CVE-2021-42715), even named .png.
         write("loop.png",
