@@ -46,7 +46,7 @@ set_tests_properties(chapter-10.model-image PROPERTIES FIXTURES_REQUIRED ch10-mo
 
 # A missing texture falls back to the default texture with a warning and still renders.
 chapter_test(chapter-10.missing-texture COMMAND ${CH10_RUN} --headless --model ${DATA}/missing_texture.obj
-    EXPECT_STDERR "^warning: texture '.*no_such_texture.png' not found; using the default texture\n$")
+    EXPECT_STDERR "^warning: texture '.*no_such_texture.png' not found. using the default texture\n$")
 
 # Bad input: exit 2 and one line naming the file (and the key or line where there is one).
 function(ch10_bad name expected)

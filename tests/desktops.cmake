@@ -149,16 +149,16 @@ foreach(chapter 06 10 14 15 15-lab)
         set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_DEVICE_API=1.1")
     else()
         desktop_device_test(${name} VKBOOK_DEVICE_API=1.1 COMMAND ${run}
-            EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.1; this chapter ${REFUSED_13}" ONE_LINE_STDERR)
+            EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.1. this chapter ${REFUSED_13}" ONE_LINE_STDERR)
         # Vulkan 1.2 without one or both extensions: refused, naming what is missing.
         desktop_device_test(desktop.vulkan-1.2-no-extensions.chapter-${chapter}
             "VKBOOK_DEVICE_API=1.2;VKBOOK_HIDE=VK_KHR_dynamic_rendering,VK_KHR_synchronization2" COMMAND ${run}
             EXPECT_EXIT 1
-            EXPECT_STDERR "it supports Vulkan 1.2 without VK_KHR_dynamic_rendering and VK_KHR_synchronization2; this chapter ${REFUSED_13}"
+            EXPECT_STDERR "it supports Vulkan 1.2 without VK_KHR_dynamic_rendering and VK_KHR_synchronization2. this chapter ${REFUSED_13}"
             ONE_LINE_STDERR)
         desktop_device_test(desktop.vulkan-1.2-no-synchronization2.chapter-${chapter}
             "VKBOOK_DEVICE_API=1.2;VKBOOK_HIDE=VK_KHR_synchronization2" COMMAND ${run}
-            EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.2 without VK_KHR_synchronization2; " ONE_LINE_STDERR)
+            EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.2 without VK_KHR_synchronization2. " ONE_LINE_STDERR)
     endif()
     # No D32_SFLOAT: a 24-bit depth buffer, the same image (chapter-06 has no depth).
     if(NOT chapter STREQUAL "06")

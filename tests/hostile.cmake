@@ -47,7 +47,7 @@ hostile_test(scene-fifo 14 2 "${H}/fifo.obj: not a regular file" --scene ${H}/fi
 hostile_test(obj-garbage 15 2 "${H}/garbage.obj:[0-9]+: not a text file \\(a NUL byte\\)" --model ${H}/garbage.obj)
 hostile_test(mtl-garbage 15 2 "${H}/garbage.mtl:[0-9]+: not a text file \\(a NUL byte\\)" --model ${H}/garbage_mtl.obj)
 hostile_test(mtl-empty 15 warn
-    "${H}/empty_mtl.obj:2: material 'm' is in none of its MTL files; using the default material"
+    "${H}/empty_mtl.obj:2: material 'm' is in none of its MTL files. using the default material"
     --model ${H}/empty_mtl.obj)
 hostile_test(obj-utf16 15 2 "${H}/utf16.obj: UTF-16 text. save it as UTF-8 or ASCII" --model ${H}/utf16.obj)
 hostile_test(obj-utf16-no-bom 15 2 "${H}/utf16_nobom.obj:1: not a text file" --model ${H}/utf16_nobom.obj)
