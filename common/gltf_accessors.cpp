@@ -11,22 +11,6 @@
 namespace common {
 namespace {
 
-size_t componentBytes(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return 4;
-        default:
-            return 0;
-    }
-}
-
 bool isIndexType(int componentType) {
     return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
            componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
@@ -126,6 +110,35 @@ GltfReader::Span GltfReader::view(int viewIndex, uint64_t byteOffset, uint64_t c
     return {buffer.data.data() + view.byteOffset + byteOffset, size_t(stride)};
 }
 
+// 3.6.2.3 "Sparse Accessors": calls substitute(target, value) for each of the accessor's sparse
+// substitutions, its target element checked to lie below `count`. Targets are read as integers:
+// through a float, indices above 2^24 would round.
+template <typename Substitute>
+void GltfReader::forEachSparse(const tinygltf::Accessor& accessor, size_t count, size_t components,
+                               const std::string& where, Substitute substitute) const {
+    if (!accessor.sparse.isSparse) return;
+    const auto& sparse = accessor.sparse;
+    if (sparse.count < 1 || size_t(sparse.count) > count)
+        fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
+             std::to_string(count) + " elements");
+    const int indexType = sparse.indices.componentType;
+    if (!isIndexType(indexType))
+        fail(where + " has sparse indices of component type " + std::to_string(indexType));
+    if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
+        fail(where + " has a negative sparse byteOffset");
+    Span targets = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset),
+                        uint64_t(sparse.count), indexType, 1, false, where + " sparse indices");
+    Span values = view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
+                       accessor.componentType, components, false, where + " sparse values");
+    for (size_t k = 0; k < size_t(sparse.count); ++k) {
+        const uint32_t target = integer(targets.data + k * targets.stride, indexType);
+        if (target >= count)
+            fail(where + " has a sparse index of " + std::to_string(target) + " for " +
+                 std::to_string(count) + " elements");
+        substitute(target, values.data + k * values.stride);
+    }
+}
+
 const std::vector<float>& GltfReader::floats(int index, const std::string& what,
                                              std::initializer_list<int> types,
                                              std::initializer_list<int> componentTypes,
@@ -153,32 +166,11 @@ const std::vector<float>& GltfReader::floats(int index, const std::string& what,
                 out[i * components + c] =
                     component(span.data + i * span.stride, c, accessor.componentType, accessor.normalized);
     }
-    if (accessor.sparse.isSparse) {
-        const auto& sparse = accessor.sparse;
-        if (sparse.count < 1 || size_t(sparse.count) > count)
-            fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
-                 std::to_string(count) + " elements");
-        const int indexType = sparse.indices.componentType;
-        if (!isIndexType(indexType))
-            fail(where + " has sparse indices of component type " + std::to_string(indexType));
-        if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
-            fail(where + " has a negative sparse byteOffset");
-        Span indices = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset),
-                            uint64_t(sparse.count), indexType, 1, false, where + " sparse indices");
-        Span values =
-            view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
-                 accessor.componentType, components, false, where + " sparse values");
-        for (size_t k = 0; k < size_t(sparse.count); ++k) {
-            // An integer, compared as one: through a float, indices above 2^24 would round.
-            const uint32_t target = integer(indices.data + k * indices.stride, indexType);
-            if (target >= count)
-                fail(where + " has a sparse index of " + std::to_string(target) + " for " +
-                     std::to_string(count) + " elements");
-            for (size_t c = 0; c < components; ++c)
-                out[size_t(target) * components + c] = component(values.data + k * values.stride, c,
-                                                                 accessor.componentType, accessor.normalized);
-        }
-    }
+    forEachSparse(accessor, count, components, where, [&](uint32_t target, const uint8_t* value) {
+        for (size_t c = 0; c < components; ++c)
+            out[size_t(target) * components + c] =
+                component(value, c, accessor.componentType, accessor.normalized);
+    });
     for (float value : out)
         if (!std::isfinite(value)) fail(where + " holds a non-finite number");
     return floats_.emplace(index, std::move(out)).first->second;
@@ -199,29 +191,9 @@ const std::vector<uint32_t>& GltfReader::indices(int index, size_t vertices, con
             for (size_t i = 0; i < count; ++i)
                 out[i] = integer(span.data + i * span.stride, accessor.componentType);
         }
-        if (accessor.sparse.isSparse) {
-            const auto& sparse = accessor.sparse;
-            if (sparse.count < 1 || size_t(sparse.count) > count)
-                fail(where + " has a sparse count of " + std::to_string(sparse.count) + " for " +
-                     std::to_string(count) + " elements");
-            const int indexType = sparse.indices.componentType;
-            if (!isIndexType(indexType))
-                fail(where + " has sparse indices of component type " + std::to_string(indexType));
-            if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
-                fail(where + " has a negative sparse byteOffset");
-            Span targets = view(sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset),
-                                uint64_t(sparse.count), indexType, 1, false, where + " sparse indices");
-            Span values =
-                view(sparse.values.bufferView, uint64_t(sparse.values.byteOffset), uint64_t(sparse.count),
-                     accessor.componentType, 1, false, where + " sparse values");
-            for (size_t k = 0; k < size_t(sparse.count); ++k) {
-                const uint32_t target = integer(targets.data + k * targets.stride, indexType);
-                if (target >= count)
-                    fail(where + " has a sparse index of " + std::to_string(target) + " for " +
-                         std::to_string(count) + " elements");
-                out[target] = integer(values.data + k * values.stride, accessor.componentType);
-            }
-        }
+        forEachSparse(accessor, count, 1, where, [&](uint32_t target, const uint8_t* value) {
+            out[target] = integer(value, accessor.componentType);
+        });
         it = indices_.emplace(index, std::move(out)).first;
     }
     for (uint32_t i : it->second)

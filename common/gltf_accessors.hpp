@@ -57,6 +57,9 @@ private:
     };
     Span view(int viewIndex, uint64_t byteOffset, uint64_t count, int componentType, uint64_t components,
               bool strided, const std::string& where) const;
+    template <typename Substitute>
+    void forEachSparse(const tinygltf::Accessor& accessor, size_t count, size_t components,
+                       const std::string& where, Substitute substitute) const;
 
     const GltfDocument& document_;
     const tinygltf::Model& model_;

@@ -225,23 +225,6 @@ struct ViewExtent {
     uint64_t length = 0, stride = 0;
 };
 
-// 3.6.2.2 "Accessor Data Types": the size of a component, and the components of an element.
-uint64_t componentSize(uint64_t componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return 4;
-        default:
-            return 0;
-    }
-}
-
 // Bytes of one element; 3.6.2.4: each column of a matrix starts on a 4-byte boundary.
 uint64_t elementSize(const std::string& type, uint64_t component) {
     if (type == "SCALAR") return component;
@@ -275,11 +258,11 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
     if (!readNumber(accessor, "count", 1, kMaxAccessorElements, &count, origin, where))
         refuse(origin, where + ".count is missing");
     if (!readNumber(accessor, "componentType", 0, UINT32_MAX, &componentType, origin, where) ||
-        componentSize(componentType) == 0)
+        componentBytes(componentType) == 0)
         refuse(origin, where + ".componentType is missing or not one of glTF's (3.6.2.2)");
     const std::string type =
         accessor.contains("type") && accessor["type"].is_string() ? accessor["type"].get<std::string>() : "";
-    const uint64_t component = componentSize(componentType), element = elementSize(type, component);
+    const uint64_t component = componentBytes(componentType), element = elementSize(type, component);
     if (element == 0) refuse(origin, where + ".type " + shown(type) + " is not one of glTF's (3.6.2.2)");
     readIndex(accessor, "byteOffset", kMaxBytes, &offset, origin, where);
     if (offset % component != 0)
@@ -317,7 +300,7 @@ void checkAccessor(const json& accessor, const std::vector<ViewExtent>& views, c
                  partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
                  partType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
                 refuse(origin, in + ".componentType must be unsigned byte, short or int (5121, 5123, 5125)");
-            partElement = componentSize(partType);
+            partElement = componentBytes(partType);
         }
         if (partOffset % (indices ? partElement : component) != 0)
             refuse(origin, in + ".byteOffset " + std::to_string(partOffset) +

@@ -47,6 +47,23 @@ struct GltfDocument {
 // field.
 GltfDocument readGltfDocument(const std::filesystem::path& path);
 
+// 3.6.2.2 "Accessor Data Types": the bytes of one component (0 for a type glTF does not define).
+constexpr uint64_t componentBytes(uint64_t componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
 // Helpers the other parts share.
 std::filesystem::path pathFromUtf8(const std::string& text);
 std::string percentDecoded(const std::string& uri);  // %XX escapes decoded (2.8 "URIs")
