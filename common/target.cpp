@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <string>
 
+#if defined(_WIN32)
+#include <windows.h>
+#endif
+
 #include "common/check.hpp"
 #include "common/commands.hpp"
 #include "common/debug_names.hpp"
@@ -17,6 +21,18 @@ namespace {
 // may move; a new size is noticed by pollTarget.
 void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
+// GLFW loads xinput1_4.dll for gamepads and frees it in glfwTerminate. Wine's xinput1_4 (Wine 8)
+// polls HID devices on a thread of its own that can still be running when the library is freed,
+// and then faults at exit, in a run that did everything right. Keeping the library loaded until
+// the process ends (the DLL pinned) avoids that; on Windows itself it only keeps one DLL mapped.
+void keepXInputLoaded() {
+#if defined(_WIN32)
+    HMODULE module = nullptr;
+    if (LoadLibraryW(L"xinput1_4.dll"))
+        GetModuleHandleExW(GET_MODULE_HANDLE_EX_FLAG_PIN, L"xinput1_4.dll", &module);
+#endif
 }
 
 std::string glfwErrorText() {
@@ -265,6 +281,7 @@ Target openTarget(const Options& options, const char* title) {
     target.wantedFormat = options.targetFormat;
     if (options.headless) return target;
 
+    keepXInputLoaded();
     if (!glfwInit()) throw Failure("cannot open a window (" + glfwErrorText() + "); run with --headless");
     if (!glfwVulkanSupported()) {
         glfwTerminate();
