@@ -21,7 +21,7 @@
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/run_control.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/target.hpp"
 #include "mesh.hpp"
 #include "pipeline.hpp"
@@ -217,13 +217,23 @@ bool recreateTarget(Chapter& c) {
 //< resize
 
 //> reload
-// Live reload: a shader was edited and compiles (common/shader_compiler.hpp). Between two frames,
-// once the GPU is done with every frame in flight, the pipeline is made again from the new code.
+// Live reload: an edited shader compiled and checked (common/shader_watch.hpp). The new pipeline
+// is made from that code while the frames in flight still draw with the old one; once the GPU is
+// done with them, it takes the old one's place. If it cannot be made, the old one keeps drawing
+// and the error is shown.
 void reloadShaders(Chapter& c) {
+    Pipeline pipeline;
+    try {
+        pipeline =
+            createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
+    } catch (const std::exception& e) {
+        common::finishShaderReload(e.what());
+        return;
+    }
     VK_CHECK(vkDeviceWaitIdle(c.device.handle));
     destroyPipeline(c.device, c.pipeline);
-    c.pipeline =
-        createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
+    c.pipeline = pipeline;
+    common::finishShaderReload();
 }
 //< reload
 
@@ -231,7 +241,7 @@ void reloadShaders(Chapter& c) {
 void frameLoop(Chapter& c, const common::Options& options) {
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
-        if (common::shaderSourcesChanged()) reloadShaders(c);
+        if (common::pollShaderSources()) reloadShaders(c);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
 

@@ -153,12 +153,15 @@ Pipeline createPipeline(const common::Device& device, VkPipelineCache cache, VkR
         .renderPass = renderPass,  // the pipeline renders in subpass 0 of this render pass
         .subpass = 0,
     };
-    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline.handle));
-    common::nameObject(device.handle, pipeline.handle, "triangle");
+    VkResult result = vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline.handle);
 
-    // The pipeline keeps what it needs; the modules can go.
+    // The pipeline keeps what it needs; the modules can go. If it could not be made, the layout
+    // goes too (a failed live reload leaves nothing behind).
     vkDestroyShaderModule(device.handle, fragment, nullptr);
     vkDestroyShaderModule(device.handle, vertex, nullptr);
+    if (result != VK_SUCCESS) vkDestroyPipelineLayout(device.handle, pipeline.layout, nullptr);
+    VK_CHECK_RESULT(result, "vkCreateGraphicsPipelines");
+    common::nameObject(device.handle, pipeline.handle, "triangle");
     return pipeline;
 }
 //< pipeline

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -109,6 +110,9 @@ std::vector<uint32_t> compileShader(const common::ShaderSource& source) {
 
 //> compile-if-changed
 std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
+    // While the chapter runs, an edit is compiled and checked once, by live reload; its pipeline
+    // is made from that code, not from the file again.
+    if (std::optional<std::vector<uint32_t>> reloaded = common::reloadedShaderCode(name)) return *reloaded;
     common::ShaderSource source = common::findShaderSource(name);
     if (!source.found) return buildSpirv(source);  // no sources here: the build's SPIR-V
 
@@ -125,7 +129,7 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
     std::fflush(stdout);
     std::vector<uint32_t> spirv = ::compileShader(source);  // ours, not common::compileShader
     // The pipeline is made for the build's shader: an edit that needs another layout is refused.
-    if (std::string change = common::shaderInterfaceChange(source, spirv); !change.empty())
+    if (std::string change = common::checkShaderInterface(source, spirv); !change.empty())
         throw common::InputError(change);
     return spirv;
 }

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 
 // The book's compileShader: one GLSL file (with its macro definitions and #includes) to SPIR-V
 // words. A compile error throws common::InputError with the compiler's "file:line: error: ..."

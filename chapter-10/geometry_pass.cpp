@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "common/check.hpp"
 #include "common/debug_names.hpp"
@@ -10,7 +12,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/texture.hpp"
 
 namespace {
@@ -196,6 +198,30 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     //< materials
 }
 
+const std::vector<std::string> kGeometryShaders{"chapter-10/geometry.vert", "chapter-10/geometry.frag"};
+
+// The pipeline from the shaders' current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const GeometryPass& pass) {
+    common::ShaderModule vertex(device, kGeometryShaders[0]);
+    common::ShaderModule fragment(device, kGeometryShaders[1]);
+    common::SceneVertexInput vertexInput;
+    common::describeSceneVertexInput(vertexInput,
+                                     common::kPosition | common::kUv);  // all geometry.vert reads
+    return common::createGraphicsPipeline(
+        device, cache,
+        {
+            .name = "geometry",
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+            .vertexInput = &vertexInput.state,
+            .depthTest = true,
+            .depthWrite = true,
+            .colorAttachmentCount = 1,
+            .layout = pass.pipelineLayout,
+            .renderPass = pass.renderPass,
+        });
+}
+
 void createPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass) {
     std::array<VkDescriptorSetLayout, 4> layouts{pass.matrixLayout, pass.matrixLayout, pass.textureLayout,
                                                  pass.materialLayout};
@@ -211,26 +237,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, Geometr
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "geometry");
 
-    VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/geometry.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/geometry.frag");
-    common::SceneVertexInput vertexInput;
-    common::describeSceneVertexInput(vertexInput,
-                                     common::kPosition | common::kUv);  // all geometry.vert reads
-    pass.pipeline = common::createGraphicsPipeline(
-        device, cache,
-        {
-            .name = "geometry",
-            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
-            .vertexInput = &vertexInput.state,
-            .depthTest = true,
-            .depthWrite = true,
-            .colorAttachmentCount = 1,
-            .layout = pass.pipelineLayout,
-            .renderPass = pass.renderPass,
-        });
-    vkDestroyShaderModule(device.handle, fragment, nullptr);
-    vkDestroyShaderModule(device.handle, vertex, nullptr);
+    pass.pipeline = makePipeline(device, cache, pass);
 }
 
 }  // namespace
@@ -306,6 +313,12 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
     vkCmdEndRenderPass(cmd);
 }
 //< record-geometry
+
+void remakeGeometryPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass,
+                            const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (reload.changed(kGeometryShaders))
+        common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass); });
+}
 
 void destroyGeometryPass(const common::Device& device, GeometryPass& pass) {
     vkDestroyPipeline(device.handle, pass.pipeline, nullptr);

@@ -13,6 +13,8 @@
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/image.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 
 // The G-buffer: one set of attachments shared by all frames in flight (the subpass
 // dependencies keep one frame's writes from overtaking the previous frame's reads).
@@ -69,4 +71,7 @@ void setProjection(GeometryPass& pass, const glm::mat4& projection);
 void setView(GeometryPass& pass, uint32_t frame, const glm::mat4& view);
 void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const common::GpuScene& scene,
                         uint32_t frame);
+// Live reload: a new pipeline into `swap` when the reload changed geometry.vert or geometry.frag.
+void remakeGeometryPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass,
+                            const common::ShaderReload& reload, common::PipelineSwap& swap);
 void destroyGeometryPass(const common::Device& device, GeometryPass& pass);

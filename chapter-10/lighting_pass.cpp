@@ -1,13 +1,16 @@
 // chapter-10: the lighting pass.
 #include "lighting_pass.hpp"
 
+#include <string>
+#include <vector>
+
 #include "common/check.hpp"
 #include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/texture.hpp"
 
 namespace {
@@ -70,6 +73,37 @@ void writeAttachments(const common::Device& device, LightingPass& pass, const GB
 
 }  // namespace
 
+namespace {
+
+const std::vector<std::string> kLightingShaders{"chapter-10/lighting.vert", "chapter-10/lighting.frag"};
+
+// The pipeline from the shaders' current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const LightingPass& pass,
+                        VkFormat targetFormat) {
+    common::ShaderModule vertex(device, kLightingShaders[0]);
+    common::ShaderModule fragment(device, kLightingShaders[1]);
+    // The shader writes the target image: it sRGB-encodes its colour itself where the image's
+    // format does not (constant_id 0; chapter-06 introduces the same constant).
+    VkBool32 encodeSrgb = common::encodesSrgb(targetFormat) ? VK_FALSE : VK_TRUE;
+    VkSpecializationMapEntry encodeEntry{0, 0, sizeof(VkBool32)};
+    VkSpecializationInfo fragmentConstants{1, &encodeEntry, sizeof(encodeSrgb), &encodeSrgb};
+    // No vertex input at all (the book's EmptyVertexBufferStructure): the vertex shader makes
+    // the triangle from gl_VertexIndex. No depth test either.
+    return common::createGraphicsPipeline(
+        device, cache,
+        {
+            .name = "lighting",
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &fragmentConstants)},
+            .vertexInput = nullptr,
+            .colorAttachmentCount = 1,
+            .layout = pass.pipelineLayout,
+            .renderPass = pass.renderPass,
+        });
+}
+
+}  // namespace
+
 LightingPass createLightingPass(const common::Device& device, VkPipelineCache cache,
                                 const common::Target& target, const GBuffer& gbuffer) {
     LightingPass pass;
@@ -102,28 +136,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     };
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "lighting");
-    VkShaderModule vertex = common::loadShaderModule(device, "chapter-10/lighting.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, "chapter-10/lighting.frag");
-    // The shader writes the target image: it sRGB-encodes its colour itself where the image's
-    // format does not (constant_id 0; chapter-06 introduces the same constant).
-    VkBool32 encodeSrgb = common::encodesSrgb(target.format) ? VK_FALSE : VK_TRUE;
-    VkSpecializationMapEntry encodeEntry{0, 0, sizeof(VkBool32)};
-    VkSpecializationInfo fragmentConstants{1, &encodeEntry, sizeof(encodeSrgb), &encodeSrgb};
-    // No vertex input at all (the book's EmptyVertexBufferStructure): the vertex shader makes
-    // the triangle from gl_VertexIndex. No depth test either.
-    pass.pipeline = common::createGraphicsPipeline(
-        device, cache,
-        {
-            .name = "lighting",
-            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &fragmentConstants)},
-            .vertexInput = nullptr,
-            .colorAttachmentCount = 1,
-            .layout = pass.pipelineLayout,
-            .renderPass = pass.renderPass,
-        });
-    vkDestroyShaderModule(device.handle, fragment, nullptr);
-    vkDestroyShaderModule(device.handle, vertex, nullptr);
+    pass.pipeline = makePipeline(device, cache, pass, target.format);
 
     VkCommandPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
                                      .queueFamilyIndex = device.queueFamily};
@@ -137,6 +150,14 @@ void resizeLightingPass(const common::Device& device, LightingPass& pass, const 
     common::destroyFramebuffers(device, pass.framebuffers);
     pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
     writeAttachments(device, pass, gbuffer);
+}
+
+bool remakeLightingPipeline(const common::Device& device, VkPipelineCache cache, LightingPass& pass,
+                            const common::Target& target, const common::ShaderReload& reload,
+                            common::PipelineSwap& swap) {
+    if (!reload.changed(kLightingShaders)) return false;
+    common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass, target.format); });
+    return true;
 }
 
 //> record-lighting

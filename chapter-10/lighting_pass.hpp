@@ -45,6 +45,11 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
 void resizeLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
                         const GBuffer& gbuffer);
 // (Re-)records every target image's command buffer. The device must be idle.
+// Live reload: a new pipeline into `swap` when the reload changed lighting.vert or lighting.frag;
+// true when so (the command buffers must be recorded again once it is in place).
+bool remakeLightingPipeline(const common::Device& device, VkPipelineCache cache, LightingPass& pass,
+                            const common::Target& target, const common::ShaderReload& reload,
+                            common::PipelineSwap& swap);
 void recordLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
                         const LightingView& view);
 void destroyLightingPass(const common::Device& device, LightingPass& pass);

@@ -24,7 +24,7 @@
 #include "common/pipeline.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/target.hpp"
 #include "geometry_pass.hpp"
 #include "lighting_pass.hpp"
@@ -107,9 +107,8 @@ struct Chapter {
 //< chapter-state
 
 //> passes
-// The two passes: made at start-up, and again when an edited shader is reloaded (reloadShaders),
-// so that both pipelines are rebuilt from the new code. The lighting pass's command buffers are
-// recorded once here, the geometry pass's every frame.
+// The two passes. The lighting pass's command buffers are recorded once here, the geometry pass's
+// every frame.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
     c.geometryPass =
         createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
@@ -124,12 +123,26 @@ void destroyPasses(Chapter& c) {
     destroyGeometryPass(c.device, c.geometryPass);
 }
 
-// Live reload: a shader was edited and compiled (common/shader_compiler.hpp). Between two frames,
-// once the GPU is done with every frame in flight, the passes are made again with the new code.
-void reloadShaders(Chapter& c, const common::Options& options) {
-    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
-    destroyPasses(c);
-    createPasses(c, options.framesInFlight);
+// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// the passes that use them are made from the new code while the frames in flight still draw
+// with the old ones; once the GPU is done with those frames, the new ones take their place (and
+// the lighting command buffers, which name the pipeline, are recorded again). If one cannot be
+// made, none does: the old pipelines keep drawing, and the error is shown.
+void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
+    VkPipelineCache cache = c.pipelineCache.handle;
+    common::PipelineSwap swap;
+    bool lighting = false;
+    try {
+        remakeGeometryPipeline(c.device, cache, c.geometryPass, reload, swap);
+        lighting = remakeLightingPipeline(c.device, cache, c.lightingPass, c.target, reload, swap);
+    } catch (const std::exception& e) {
+        common::discardPipelines(c.device, swap);
+        common::finishShaderReload(e.what());
+        return;
+    }
+    common::swapPipelines(c.device, swap);
+    if (lighting) recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
+    common::finishShaderReload();
 }
 //< passes
 
@@ -183,7 +196,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
-        if (common::shaderSourcesChanged()) reloadShaders(c, options);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload);
         uint32_t slot = frame % options.framesInFlight;
         Frame& inFlight = c.frames[slot];
         common::FrameSync& sync = inFlight.sync;

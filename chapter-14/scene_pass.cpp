@@ -1,13 +1,16 @@
 // chapter-14: the scene pass.
 #include "scene_pass.hpp"
 
+#include <string>
+#include <vector>
+
 #include "common/check.hpp"
 #include "common/debug_names.hpp"
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/texture.hpp"
 
 namespace {
@@ -75,6 +78,38 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
 }
 
 //> scene-pipeline
+const std::vector<std::string> kSceneShaders{"chapter-14/scene.vert", "chapter-14/scene.frag"};
+
+// The pipeline from the shaders' current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const ScenePass& pass) {
+    // Without a render pass, the pipeline is told the formats it will render to: one per colour
+    // attachment (each gets its own blend state), plus depth.
+    VkPipelineRenderingCreateInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+        .colorAttachmentCount = 1,
+        .pColorAttachmentFormats = &kAlbedoFormat,
+        .depthAttachmentFormat = pass.gbuffer.depth.format,
+    };
+    common::ShaderModule vertex(device, kSceneShaders[0]);
+    common::ShaderModule fragment(device, kSceneShaders[1]);
+    common::SceneVertexInput vertexInput;
+    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
+    return common::createGraphicsPipeline(
+        device, cache,
+        {
+            .name = "scene",
+            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+            .vertexInput = &vertexInput.state,
+            .depthTest = true,
+            .depthWrite = true,
+            .colorAttachmentCount = 1,
+            .layout = pass.pipelineLayout,
+            .renderPass = VK_NULL_HANDLE,
+            .pNext = &rendering,
+        });
+}
+
 void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass) {
     std::array<VkDescriptorSetLayout, 3> layouts{pass.cameraLayout, pass.materialsLayout, pass.textureLayout};
     std::array<VkPushConstantRange, 2> pushConstants{{
@@ -93,34 +128,7 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "scene");
 
-    // Without a render pass, the pipeline is told the formats it will render to: one per colour
-    // attachment (each gets its own blend state), plus depth.
-    VkPipelineRenderingCreateInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = 1,
-        .pColorAttachmentFormats = &kAlbedoFormat,
-        .depthAttachmentFormat = pass.gbuffer.depth.format,
-    };
-    VkShaderModule vertex = common::loadShaderModule(device, "chapter-14/scene.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, "chapter-14/scene.frag");
-    common::SceneVertexInput vertexInput;
-    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
-    pass.pipeline = common::createGraphicsPipeline(
-        device, cache,
-        {
-            .name = "scene",
-            .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
-            .vertexInput = &vertexInput.state,
-            .depthTest = true,
-            .depthWrite = true,
-            .colorAttachmentCount = 1,
-            .layout = pass.pipelineLayout,
-            .renderPass = VK_NULL_HANDLE,
-            .pNext = &rendering,
-        });
-    vkDestroyShaderModule(device.handle, fragment, nullptr);
-    vkDestroyShaderModule(device.handle, vertex, nullptr);
+    pass.pipeline = makePipeline(device, cache, pass);
 }
 //< scene-pipeline
 
@@ -298,6 +306,12 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     renderFinish(cmd, pass.gbuffer);
 }
 //< record-scene
+
+void remakeScenePipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass,
+                         const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (reload.changed(kSceneShaders))
+        common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass); });
+}
 
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
     vkDestroyPipeline(device.handle, pass.pipeline, nullptr);

@@ -15,6 +15,8 @@
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/image.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 
 //> gbuffer
 // This chapter's G-buffer: albedo and depth (chapter-15 adds position, normal and PBR data). One,
@@ -59,4 +61,7 @@ void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D e
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame);
+// Live reload: a new pipeline into `swap` when the reload changed scene.vert or scene.frag.
+void remakeScenePipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass,
+                         const common::ShaderReload& reload, common::PipelineSwap& swap);
 void destroyScenePass(const common::Device& device, ScenePass& pass);

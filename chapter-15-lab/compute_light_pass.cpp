@@ -9,7 +9,7 @@
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 
 LightPassSetup computeLightPassSetup(VkShaderStageFlags alsoStages) {
     return {.fragmentShader = "",
@@ -28,6 +28,30 @@ void writeComputeOutput(const common::Device& device, const ComputeLightPass& pa
                                .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                .pImageInfo = &image};
     vkUpdateDescriptorSets(device.handle, 1, &write, 0, nullptr);
+}
+
+namespace {
+
+// The pipeline from the shader's current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const ComputeLightPass& pass) {
+    common::ShaderModule module(device, pass.shader);
+    VkComputePipelineCreateInfo pipelineInfo{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
+        .layout = pass.pipelineLayout,
+    };
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &pipelineInfo, nullptr, &pipeline));
+    common::nameObject(device.handle, pipeline, pass.shader);
+    return pipeline;
+}
+
+}  // namespace
+
+void remakeComputeLightPipeline(const common::Device& device, VkPipelineCache cache, ComputeLightPass& pass,
+                                const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (pass.pipeline == VK_NULL_HANDLE || !reload.changed({pass.shader})) return;
+    common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass); });
 }
 
 //> compute-pipeline
@@ -56,15 +80,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
                                           .pPushConstantRanges = &pushRange};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "compute light");
-    VkShaderModule module = common::loadShaderModule(device, shader);
-    VkComputePipelineCreateInfo pipelineInfo{
-        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
-        .layout = pass.pipelineLayout,
-    };
-    VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &pipelineInfo, nullptr, &pass.pipeline));
-    common::nameObject(device.handle, pass.pipeline, shader);
-    vkDestroyShaderModule(device.handle, module, nullptr);
+    pass.shader = shader;
+    pass.pipeline = makePipeline(device, cache, pass);
     return pass;
 }
 //< compute-pipeline

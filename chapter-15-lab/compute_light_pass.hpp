@@ -10,6 +10,8 @@
 #include <string>
 
 #include "common/device.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 #include "light_pass.hpp"
 
 // How the light pass runs: chapter-15's full-screen triangle, or a compute dispatch.
@@ -21,6 +23,7 @@ struct ComputeLightPass {
     VkDescriptorSet outputSet = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    std::string shader;  // what the pipeline is made from
     bool tiled = false;  // set 4: the tile lists
 };
 
@@ -36,4 +39,7 @@ void writeComputeOutput(const common::Device& device, const ComputeLightPass& pa
 // `tileLists`: --light-culling tiled's set, else VK_NULL_HANDLE.
 void recordComputeLightPass(VkCommandBuffer cmd, const ComputeLightPass& pass, const LightPass& lightPass,
                             uint32_t frame, const LightView& view, VkDescriptorSet tileLists);
+// Live reload: a new pipeline into `swap` when the reload changed the pass's shader.
+void remakeComputeLightPipeline(const common::Device& device, VkPipelineCache cache, ComputeLightPass& pass,
+                                const common::ShaderReload& reload, common::PipelineSwap& swap);
 void destroyComputeLightPass(const common::Device& device, ComputeLightPass& pass);

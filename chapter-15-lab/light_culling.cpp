@@ -14,7 +14,7 @@
 #include "common/descriptors.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "light_pass.hpp"
 
 namespace {
@@ -139,7 +139,7 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
 VkPipeline createComputePipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
                                  const std::string& shader,
                                  const VkSpecializationInfo* specialization = nullptr) {
-    VkShaderModule module = common::loadShaderModule(device, shader);
+    common::ShaderModule module(device, shader);
     VkComputePipelineCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
         .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module, specialization),
@@ -147,8 +147,19 @@ VkPipeline createComputePipeline(const common::Device& device, VkPipelineCache c
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
     common::nameObject(device.handle, pipeline, std::string(shader));
-    vkDestroyShaderModule(device.handle, module, nullptr);
     return pipeline;
+}
+
+const char* const kCullShader = "chapter-15-lab/light_cull.comp";
+const char* const kScanShader = "chapter-15-lab/light_cull_scan.comp";
+
+// light_cull.comp with its FILL and LARGE constants.
+VkPipeline createCullPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
+                              bool fill, bool large) {
+    VkBool32 constants[2] = {fill ? VK_TRUE : VK_FALSE, large ? VK_TRUE : VK_FALSE};
+    VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}};
+    VkSpecializationInfo specialization{2, entries, sizeof(constants), constants};
+    return createComputePipeline(device, cache, layout, kCullShader, &specialization);
 }
 
 }  // namespace
@@ -215,18 +226,31 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
                                     .pPushConstantRanges = &push};
     VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &c.pipelineLayout));
     common::nameObject(device.handle, c.pipelineLayout, "cull");
+    c.boundsShader = boundsShader;
     c.bounds = createComputePipeline(device, cache, c.pipelineLayout, boundsShader);
-    // light_cull.comp's FILL and LARGE.
-    VkBool32 constants[2] = {VK_FALSE, VK_FALSE};
-    VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}};
-    VkSpecializationInfo specialization{2, entries, sizeof(constants), constants};
-    for (VkPipeline* pipeline : {&c.count, &c.countLarge, &c.fill, &c.fillLarge}) {
-        constants[0] = pipeline == &c.fill || pipeline == &c.fillLarge;
-        constants[1] = pipeline == &c.countLarge || pipeline == &c.fillLarge;
-        *pipeline = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15-lab/light_cull.comp",
-                                          &specialization);
+    c.count = createCullPipeline(device, cache, c.pipelineLayout, false, false);
+    c.countLarge = createCullPipeline(device, cache, c.pipelineLayout, false, true);
+    c.fill = createCullPipeline(device, cache, c.pipelineLayout, true, false);
+    c.fillLarge = createCullPipeline(device, cache, c.pipelineLayout, true, true);
+    c.scan = createComputePipeline(device, cache, c.pipelineLayout, kScanShader);
+}
+
+void remakeLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& c,
+                                 const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (c.pipelineLayout == VK_NULL_HANDLE) return;
+    VkPipelineLayout layout = c.pipelineLayout;
+    if (reload.changed({c.boundsShader}))
+        common::replacePipeline(swap, c.bounds,
+                                [&] { return createComputePipeline(device, cache, layout, c.boundsShader); });
+    if (reload.changed({kCullShader})) {
+        common::replacePipeline(swap, c.count, [&] { return createCullPipeline(device, cache, layout, false, false); });
+        common::replacePipeline(swap, c.countLarge,
+                                [&] { return createCullPipeline(device, cache, layout, false, true); });
+        common::replacePipeline(swap, c.fill, [&] { return createCullPipeline(device, cache, layout, true, false); });
+        common::replacePipeline(swap, c.fillLarge, [&] { return createCullPipeline(device, cache, layout, true, true); });
     }
-    c.scan = createComputePipeline(device, cache, c.pipelineLayout, "chapter-15-lab/light_cull_scan.comp");
+    if (reload.changed({kScanShader}))
+        common::replacePipeline(swap, c.scan, [&] { return createComputePipeline(device, cache, layout, kScanShader); });
 }
 
 void resizeLightCulling(const common::Device& device, LightCullingPass& c, VkExtent2D extent) {

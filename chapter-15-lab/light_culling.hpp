@@ -24,6 +24,8 @@
 #include "common/buffer.hpp"
 #include "common/cli.hpp"
 #include "common/device.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 #include "common/scene.hpp"
 #include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
@@ -95,6 +97,7 @@ struct LightCullingPass {
     uint32_t boundedLights = 0;  // lights with a range
     float margin = 0.0f;         // CullView::margin, from the G-buffer layout and the scene's size
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    std::string boundsShader;  // the bounds pipeline's shader (the G-buffer layout's variant)
     VkPipeline bounds = VK_NULL_HANDLE, count = VK_NULL_HANDLE, countLarge = VK_NULL_HANDLE,
                scan = VK_NULL_HANDLE, fill = VK_NULL_HANDLE, fillLarge = VK_NULL_HANDLE;
 };
@@ -109,6 +112,9 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
                                  LightCullingPass& culling, const LightPass& lightPass,
                                  const std::string& boundsShader);
 // The tile grid and lists follow the window.
+// Live reload: new pipelines into `swap` where the reload changed their shaders.
+void remakeLightCullingPipelines(const common::Device& device, VkPipelineCache cache, LightCullingPass& c,
+                                 const common::ShaderReload& reload, common::PipelineSwap& swap);
 void resizeLightCulling(const common::Device& device, LightCullingPass& culling, VkExtent2D extent);
 // This frame's camera: view matrix without its translation, projection, near plane; and how many
 // lights come first without a range (putUnboundedFirst).

@@ -32,7 +32,7 @@
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/target.hpp"
 #include "compute_light_pass.hpp"
 #include "forward_shading.hpp"
@@ -363,18 +363,27 @@ void run(const common::Options& options) {
                     lightKind == LightPassKind::Compute ? "compute" : "fragment");
     };
 
-    // Live reload (common/shader_compiler.hpp): an edited shader compiled; every pass is made again
-    // with the new code, the GUI pass too.
-    auto reloadShaders = [&] {
-        VK_CHECK(vkDeviceWaitIdle(device.handle));
-        if (gui.enabled) common::destroyGuiPass(device, guiPass);
-        common::destroyPostPass(device, postPass);
-        destroyPasses();
-        createPasses();
-        postPass = common::createPostPass(device, pipelineCache.handle, target.format, light.pass.output);
-        if (gui.enabled)
-            guiPass = common::createGuiPass(device, pipelineCache.handle, target.encodedFormat,
-                                            options.framesInFlight);
+    // Live reload (common/shader_watch.hpp): edited shaders compiled and checked; new pipelines for
+    // the passes that use them, made while the frames in flight still draw with the old ones,
+    // take their place once the GPU is done with those frames. If one cannot be made, none does.
+    auto reloadShaders = [&](const common::ShaderReload& reload) {
+        VkPipelineCache cache = pipelineCache.handle;
+        common::PipelineSwap swap;
+        try {
+            remakeScenePipelines(device, cache, scenePass.pipelines, reload, swap);
+            if (forward) remakeScenePipelines(device, cache, forwardPass.pipelines, reload, swap);
+            if (tiled) remakeLightCullingPipelines(device, cache, culling, reload, swap);
+            common::remakeFullscreenPipeline(device, cache, light.pass.pipeline, reload, swap);
+            remakeComputeLightPipeline(device, cache, light.compute, reload, swap);
+            common::remakePostPipelines(device, cache, postPass, reload, swap);
+            if (gui.enabled) common::remakeGuiPipeline(device, cache, guiPass, target.encodedFormat, reload, swap);
+        } catch (const std::exception& e) {
+            common::discardPipelines(device, swap);
+            common::finishShaderReload(e.what());
+            return;
+        }
+        common::swapPipelines(device, swap);
+        common::finishShaderReload();
     };
     //< switch-renderer
 
@@ -384,7 +393,7 @@ void run(const common::Options& options) {
     float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(run, target, frame);
-        if (common::shaderSourcesChanged()) reloadShaders();
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(reload);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 

@@ -32,7 +32,7 @@
 #include "common/post_pass.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/target.hpp"
 #include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
@@ -184,8 +184,7 @@ struct Chapter {
 //< chapter-state
 
 //> passes
-// The passes, in the order a frame records them: made at start-up, and again when an edited
-// shader is reloaded (reloadShaders), so that every pipeline is rebuilt from the new code.
+// The passes, in the order a frame records them.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
     c.scenePass =
         createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
@@ -205,12 +204,25 @@ void destroyPasses(Chapter& c) {
     destroyScenePass(c.device, c.scenePass);
 }
 
-// Live reload: a shader was edited and compiled (common/shader_compiler.hpp). Between two frames,
-// once the GPU is done with every frame in flight, the passes are made again with the new code.
-void reloadShaders(Chapter& c, const common::Options& options) {
-    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
-    destroyPasses(c);
-    createPasses(c, options.framesInFlight);
+// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// the passes that use them are made from the new code while the frames in flight still draw
+// with the old ones; once the GPU is done with those frames, the new ones take their place. If
+// one cannot be made, none does: the old pipelines keep drawing, and the error is shown.
+void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
+    VkPipelineCache cache = c.pipelineCache.handle;
+    common::PipelineSwap swap;
+    try {
+        remakeScenePipelines(c.device, cache, c.scenePass.pipelines, reload, swap);
+        common::remakeFullscreenPipeline(c.device, cache, c.lightPass.pipeline, reload, swap);
+        common::remakePostPipelines(c.device, cache, c.postPass, reload, swap);
+        if (c.gui.enabled) common::remakeGuiPipeline(c.device, cache, c.guiPass, c.target.encodedFormat, reload, swap);
+    } catch (const std::exception& e) {
+        common::discardPipelines(c.device, swap);
+        common::finishShaderReload(e.what());
+        return;
+    }
+    common::swapPipelines(c.device, swap);
+    common::finishShaderReload();
 }
 //< passes
 
@@ -327,7 +339,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
-        if (common::shaderSourcesChanged()) reloadShaders(c, options);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
         ImDrawData* overlay = common::drawGui(c.gui, c.target, frame, [&] {

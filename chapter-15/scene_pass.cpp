@@ -11,7 +11,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/texture.hpp"
 #include "gpu_types.hpp"
 
@@ -79,6 +79,64 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                   pass.materials.handle, VK_WHOLE_SIZE);
 }
 
+// The four pipelines of a scene pipeline layout (opaque, cutout, then both double-sided), from the
+// target's shaders; none left behind when one fails.
+std::array<VkPipeline, 4> makeScenePipelineSet(const common::Device& device, VkPipelineCache cache,
+                                               VkPipelineLayout layout, const ScenePipelineTarget& target) {
+    //> scene-pipeline
+    // The G-buffer's four colour attachments: as many formats and blend states.
+    VkPipelineRenderingCreateInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+        .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+        .pColorAttachmentFormats = target.colorFormats.data(),
+        .depthAttachmentFormat = target.depthFormat,
+    };
+    common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
+    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
+                                                      common::kBitangent | common::kUv);
+    //< scene-pipeline
+    common::ShaderModule vertex(device, target.shaders.vertex);
+    common::ShaderModule fragment(device, target.shaders.fragment);
+    std::array<VkPipeline, 4> made{};
+    try {
+        for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
+            for (bool doubleSided : {false, true}) {
+                VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+                VkSpecializationInfo specialization{
+                    .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
+                made[(doubleSided ? 2 : 0) + (alphaTest ? 1 : 0)] = common::createGraphicsPipeline(
+                    device, cache,
+                    {
+                        .name = std::string("scene ") + (alphaTest ? "cutout" : "opaque") +
+                                (doubleSided ? ", double-sided" : ""),
+                        .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                                   common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
+                        .vertexInput = &vertexInput.state,
+                        // Back faces are never seen on closed meshes (the book culls none): culling them saves
+                        // their fragments, and removes depth ties where a back face meets a front face at a
+                        // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
+                        // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
+                        // Double-sided materials show both faces.
+                        .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
+                                                : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
+                        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+                        .depthTest = true,
+                        .depthWrite = true,
+                        // Reversed-Z: nearer is larger.
+                        .depthCompare =
+                            target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                        .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+                        .layout = layout,
+                        .pNext = &rendering,
+                    });
+            }
+    } catch (...) {
+        for (VkPipeline pipeline : made) vkDestroyPipeline(device.handle, pipeline, nullptr);
+        throw;
+    }
+    return made;
+}
+
 }  // namespace
 
 ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCache cache,
@@ -102,57 +160,22 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelines.layout));
     common::nameObject(device.handle, pipelines.layout, "scene");
 
-    //> scene-pipeline
-    // The G-buffer's four colour attachments: as many formats and blend states.
-    VkPipelineRenderingCreateInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = uint32_t(target.colorFormats.size()),
-        .pColorAttachmentFormats = target.colorFormats.data(),
-        .depthAttachmentFormat = target.depthFormat,
-    };
-    common::SceneVertexInput vertexInput;  // every attribute: normal mapping needs the tangent frame
-    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
-                                                      common::kBitangent | common::kUv);
-    //< scene-pipeline
-    VkShaderModule vertex = common::loadShaderModule(device, target.shaders.vertex);
-    VkShaderModule fragment = common::loadShaderModule(device, target.shaders.fragment);
-    for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
-        for (bool doubleSided : {false, true}) {
-            VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-            VkSpecializationInfo specialization{
-                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
-            VkPipeline& pipeline =
-                doubleSided ? (alphaTest ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
-                            : (alphaTest ? pipelines.cutout : pipelines.opaque);
-            pipeline = common::createGraphicsPipeline(
-                device, cache,
-                {
-                    .name = std::string("scene ") + (alphaTest ? "cutout" : "opaque") +
-                            (doubleSided ? ", double-sided" : ""),
-                    .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                               common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
-                    .vertexInput = &vertexInput.state,
-                    // Back faces are never seen on closed meshes (the book culls none): culling them saves
-                    // their fragments, and removes depth ties where a back face meets a front face at a
-                    // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
-                    // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
-                    // Double-sided materials show both faces.
-                    .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
-                                            : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
-                    .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-                    .depthTest = true,
-                    .depthWrite = true,
-                    // Reversed-Z: nearer is larger.
-                    .depthCompare =
-                        target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
-                    .colorAttachmentCount = uint32_t(target.colorFormats.size()),
-                    .layout = pipelines.layout,
-                    .pNext = &rendering,
-                });
-        }
-    vkDestroyShaderModule(device.handle, fragment, nullptr);
-    vkDestroyShaderModule(device.handle, vertex, nullptr);
+    pipelines.target = target;
+    std::array<VkPipeline, 4> made = makeScenePipelineSet(device, cache, pipelines.layout, target);
+    pipelines.opaque = made[0], pipelines.cutout = made[1];
+    pipelines.opaqueDoubleSided = made[2], pipelines.cutoutDoubleSided = made[3];
     return pipelines;
+}
+
+void remakeScenePipelines(const common::Device& device, VkPipelineCache cache, ScenePipelines& pipelines,
+                          const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (pipelines.layout == VK_NULL_HANDLE ||
+        !reload.changed({pipelines.target.shaders.vertex, pipelines.target.shaders.fragment}))
+        return;
+    std::array<VkPipeline, 4> made = makeScenePipelineSet(device, cache, pipelines.layout, pipelines.target);
+    VkPipeline* places[] = {&pipelines.opaque, &pipelines.cutout, &pipelines.opaqueDoubleSided,
+                            &pipelines.cutoutDoubleSided};
+    for (size_t i = 0; i < made.size(); ++i) swap.pipelines.emplace_back(places[i], made[i]);
 }
 
 void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines) {

@@ -18,18 +18,9 @@
 #include "common/device.hpp"
 #include "common/gbuffer.hpp"
 #include "common/gpu_scene.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 #include "gbuffer_layout.hpp"
-
-// The scene's pipelines from one fragment shader: without the alpha test (opaque materials:
-// early depth testing) and with it (cut-outs); each with back faces culled, and without culling
-// for double-sided materials (glTF's doubleSided).
-struct ScenePipelines {
-    VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
-    VkPipeline opaque = VK_NULL_HANDLE;
-    VkPipeline cutout = VK_NULL_HANDLE;
-    VkPipeline opaqueDoubleSided = VK_NULL_HANDLE;
-    VkPipeline cutoutDoubleSided = VK_NULL_HANDLE;
-};
 
 // The compiled shaders of a scene pipeline, files under <build>/bin/shaders/: the book's by
 // default. A fragment shader starts from scene_surface.glsl's sceneSurface().
@@ -45,6 +36,18 @@ struct ScenePipelineTarget {
     VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
     bool reversedZ = false;
     std::vector<VkDescriptorSetLayout> moreSets;  // sets 3.. after the scene pass's own
+};
+
+// The scene's pipelines from one fragment shader: without the alpha test (opaque materials:
+// early depth testing) and with it (cut-outs); each with back faces culled, and without culling
+// for double-sided materials (glTF's doubleSided).
+struct ScenePipelines {
+    VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
+    VkPipeline opaque = VK_NULL_HANDLE;
+    VkPipeline cutout = VK_NULL_HANDLE;
+    VkPipeline opaqueDoubleSided = VK_NULL_HANDLE;
+    VkPipeline cutoutDoubleSided = VK_NULL_HANDLE;
+    ScenePipelineTarget target;  // what they were made for, to make them again on a reload
 };
 
 struct ScenePass {
@@ -84,3 +87,6 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
 void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines& pipelines,
                       const common::GpuScene& scene, glm::vec3 cameraPosition);
 void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines);
+// Live reload: new pipelines into `swap` when the reload changed their shaders.
+void remakeScenePipelines(const common::Device& device, VkPipelineCache cache, ScenePipelines& pipelines,
+                          const common::ShaderReload& reload, common::PipelineSwap& swap);

@@ -5,9 +5,44 @@
 #include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 
 namespace common {
+namespace {
+
+std::vector<std::string> shadersOf(const FullscreenPipeline& pipeline) {
+    return {"common/fullscreen.vert", pipeline.fragment};
+}
+
+VkPipeline makePipeline(const Device& device, VkPipelineCache cache, const FullscreenPipeline& made) {
+    VkPipelineRenderingCreateInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+        .colorAttachmentCount = 1,
+        .pColorAttachmentFormats = &made.outputFormat,
+    };
+    VkSpecializationInfo specialization{
+        .mapEntryCount = uint32_t(made.constants.size()),
+        .pMapEntries = made.constants.data(),
+        .dataSize = made.constantData.size(),
+        .pData = made.constantData.data(),
+    };
+    ShaderModule vertex(device, "common/fullscreen.vert");
+    ShaderModule fragment(device, made.fragment);
+    return createGraphicsPipeline(
+        device, cache,
+        {
+            .name = made.fragment,
+            .stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                       shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment,
+                                   made.constants.empty() ? nullptr : &specialization)},
+            .vertexInput = nullptr,  // the triangle comes from gl_VertexIndex
+            .colorAttachmentCount = 1,
+            .layout = made.layout,
+            .pNext = &rendering,
+        });
+}
+
+}  // namespace
 
 FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCache cache, const char* fragment,
                                             VkFormat outputFormat,
@@ -27,26 +62,15 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &result.layout));
     nameObject(device.handle, result.layout, fragment);
 
-    VkPipelineRenderingCreateInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .colorAttachmentCount = 1,
-        .pColorAttachmentFormats = &outputFormat,
-    };
-    VkShaderModule vertexModule = loadShaderModule(device, "common/fullscreen.vert");
-    VkShaderModule fragmentModule = loadShaderModule(device, fragment);
-    result.pipeline = createGraphicsPipeline(
-        device, cache,
-        {
-            .name = fragment,
-            .stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertexModule),
-                       shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragmentModule, specialization)},
-            .vertexInput = nullptr,  // the triangle comes from gl_VertexIndex
-            .colorAttachmentCount = 1,
-            .layout = result.layout,
-            .pNext = &rendering,
-        });
-    vkDestroyShaderModule(device.handle, fragmentModule, nullptr);
-    vkDestroyShaderModule(device.handle, vertexModule, nullptr);
+    result.fragment = fragment;
+    result.outputFormat = outputFormat;
+    if (specialization) {
+        result.constants.assign(specialization->pMapEntries,
+                                specialization->pMapEntries + specialization->mapEntryCount);
+        const auto* data = static_cast<const uint8_t*>(specialization->pData);
+        result.constantData.assign(data, data + specialization->dataSize);
+    }
+    result.pipeline = makePipeline(device, cache, result);
     return result;
 }
 
@@ -54,6 +78,12 @@ void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipelin
     vkDestroyPipeline(device.handle, pipeline.pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pipeline.layout, nullptr);
     pipeline = {};
+}
+
+void remakeFullscreenPipeline(const Device& device, VkPipelineCache cache, FullscreenPipeline& pipeline,
+                              const ShaderReload& reload, PipelineSwap& swap) {
+    if (pipeline.pipeline == VK_NULL_HANDLE || !reload.changed(shadersOf(pipeline))) return;
+    replacePipeline(swap, pipeline.pipeline, [&] { return makePipeline(device, cache, pipeline); });
 }
 
 void beginFullscreen(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent) {

@@ -4,15 +4,24 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "common/device.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 
 namespace common {
 
 struct FullscreenPipeline {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    // What the pipeline is made from, to make it again when a shader is reloaded.
+    std::string fragment;
+    VkFormat outputFormat = VK_FORMAT_UNDEFINED;
+    std::vector<VkSpecializationMapEntry> constants;
+    std::vector<uint8_t> constantData;
 };
 
 // `fragment` names a shader under shaders/ (e.g. "chapter-14/light.frag"); the vertex shader is
@@ -24,6 +33,11 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
                                             uint32_t pushConstantSize,
                                             const VkSpecializationInfo* specialization = nullptr);
 void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline);
+
+// Live reload: when `reload` changed fullscreen.vert or the pipeline's fragment shader, a new
+// pipeline from the new code into `swap` (same layout, format and constants).
+void remakeFullscreenPipeline(const Device& device, VkPipelineCache cache, FullscreenPipeline& pipeline,
+                              const ShaderReload& reload, PipelineSwap& swap);
 
 // Begins rendering into `view` (contents not loaded: the triangle covers every pixel) and sets
 // the flipped viewport and the scissor.

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "common/check.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 
 namespace common {
 namespace {

@@ -14,7 +14,7 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_compiler.hpp"
+#include "common/shader_watch.hpp"
 #include "common/texture.hpp"
 
 namespace common {
@@ -38,8 +38,8 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
     VkBool32 decodeSrgb = common::encodesSrgb(format) ? VK_TRUE : VK_FALSE;
     VkSpecializationMapEntry decodeEntry{0, 0, sizeof(VkBool32)};
     VkSpecializationInfo vertexConstants{1, &decodeEntry, sizeof(decodeSrgb), &decodeSrgb};
-    VkShaderModule vertex = common::loadShaderModule(device, "common/gui.vert");
-    VkShaderModule fragment = common::loadShaderModule(device, "common/gui.frag");
+    common::ShaderModule vertex(device, "common/gui.vert");
+    common::ShaderModule fragment(device, "common/gui.frag");
     VkVertexInputBindingDescription binding{0, sizeof(ImDrawVert), VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription attributes[] = {
         {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, pos)},
@@ -68,8 +68,6 @@ VkPipeline createGuiPipeline(const common::Device& device, VkPipelineCache cache
          .alphaBlend = true,
          .layout = layout,
          .pNext = &rendering});
-    vkDestroyShaderModule(device.handle, fragment, nullptr);
-    vkDestroyShaderModule(device.handle, vertex, nullptr);
     return pipeline;
 }
 //< gui-pipeline
@@ -100,6 +98,13 @@ void reserve(const common::Device& device, GuiPass& pass, GuiFrame& frame, const
 }
 
 }  // namespace
+
+void remakeGuiPipeline(const common::Device& device, VkPipelineCache cache, GuiPass& pass, VkFormat format,
+                       const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (!reload.changed({"common/gui.vert", "common/gui.frag"})) return;
+    common::replacePipeline(swap, pass.pipeline,
+                            [&] { return createGuiPipeline(device, cache, pass.pipelineLayout, format); });
+}
 
 GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFormat format,
                       uint32_t framesInFlight) {

@@ -12,6 +12,8 @@
 #include "common/buffer.hpp"
 #include "common/device.hpp"
 #include "common/image.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 #include "common/target.hpp"
 
 namespace common {
@@ -43,6 +45,9 @@ struct GuiPass {
 // be viewed so, else the image's own).
 GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFormat format,
                       uint32_t framesInFlight);
+// Live reload: a new pipeline into `swap` when the reload changed gui.vert or gui.frag.
+void remakeGuiPipeline(const common::Device& device, VkPipelineCache cache, GuiPass& pass, VkFormat format,
+                       const common::ShaderReload& reload, common::PipelineSwap& swap);
 // Copies this frame's draw data (nullptr: none) into its buffers, growing them if needed. After
 // the frame's fence.
 void updateGuiBuffers(const common::Device& device, GuiPass& pass, uint32_t frame, const ImDrawData* draw);

@@ -215,4 +215,19 @@ VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
     return pipeline;
 }
 
+void discardPipelines(const Device& device, PipelineSwap& swap) {
+    for (auto& [place, made] : swap.pipelines) vkDestroyPipeline(device.handle, made, nullptr);
+    swap = {};
+}
+
+void swapPipelines(const Device& device, PipelineSwap& swap) {
+    if (swap.pipelines.empty()) return;
+    VK_CHECK(vkDeviceWaitIdle(device.handle));  // the frames in flight are done with the old ones
+    for (auto& [place, made] : swap.pipelines) {
+        vkDestroyPipeline(device.handle, *place, nullptr);
+        *place = made;
+    }
+    swap = {};
+}
+
 }  // namespace common

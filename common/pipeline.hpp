@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/device.hpp"
@@ -61,5 +62,25 @@ struct GraphicsPipelineDesc {
 
 VkPipeline createGraphicsPipeline(const Device& device, VkPipelineCache cache,
                                   const GraphicsPipelineDesc& desc);
+
+// Live reload's build-then-swap (common/shader_watch.hpp): pipelines made from new shader code,
+// each with the place of the one it replaces, while the old ones keep drawing. The layouts stay:
+// a reload changes code only. Either all of them
+// go in (swapPipelines) or none (discardPipelines).
+struct PipelineSwap {
+    std::vector<std::pair<VkPipeline*, VkPipeline>> pipelines;  // the place, the new pipeline
+};
+// Makes a pipeline with `make` and keeps it for `place` (make may throw: what was kept stays
+// in the swap, for discardPipelines).
+template <typename Make>
+void replacePipeline(PipelineSwap& swap, VkPipeline& place, Make&& make) {
+    swap.pipelines.emplace_back(&place, VK_NULL_HANDLE);
+    swap.pipelines.back().second = make();
+}
+// The reload failed: destroys the new pipelines; the old ones stay.
+void discardPipelines(const Device& device, PipelineSwap& swap);
+// Waits until no frame in flight uses the old pipelines, destroys them and puts the new ones in
+// their place.
+void swapPipelines(const Device& device, PipelineSwap& swap);
 
 }  // namespace common

@@ -103,6 +103,11 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& tar
 }
 //< record-post
 
+void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass, const ShaderReload& reload,
+                         PipelineSwap& swap) {
+    for (FullscreenPipeline& pipeline : pass.pipelines) remakeFullscreenPipeline(device, cache, pipeline, reload, swap);
+}
+
 void destroyPostPass(const Device& device, PostPass& pass) {
     for (FullscreenPipeline& pipeline : pass.pipelines) destroyFullscreenPipeline(device, pipeline);
     vkDestroySampler(device.handle, pass.sampler, nullptr);

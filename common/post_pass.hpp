@@ -29,5 +29,8 @@ void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutp
 void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
                     bool fxaa, bool guiFollows = false);
 void destroyPostPass(const Device& device, PostPass& pass);
+// Live reload: new pipelines into `swap` where the reload changed their shaders.
+void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass, const ShaderReload& reload,
+                         PipelineSwap& swap);
 
 }  // namespace common

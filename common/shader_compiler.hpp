@@ -1,26 +1,22 @@
 // Shaders compiled while a chapter runs: the book's ShaderCompiler (written out in chapter-06,
-// chapter-06/shader_compiler.cpp) for the later chapters, and live reload.
+// chapter-06/shader_compiler.cpp) for the later chapters. Three modules: this one finds the
+// sources and compiles them; shader_interface.hpp checks that compiled code fits its pipeline;
+// shader_watch.hpp hands out each shader's code and watches the files for live reload.
 //
 // The build compiles every shader (cmake/VulkanBook.cmake), so a GLSL error stays a build error.
 // When the sources are found at run time -- the build's shaders/ directory, named in
 // <bin>/shaders/source-dir.txt, or --shader-dir DIR -- a shader whose source or any file it
 // includes is newer than the build's .spv is compiled again with shaderc when the chapter loads
 // it, and from then on edits of those files are noticed while the chapter runs
-// (shaderSourcesChanged). A copied bin/ whose source tree is gone uses the build's SPIR-V.
-//
-// One table for the whole process, keyed by shader name ("chapter-15/light.frag"): the shader
-// modules are made deep inside the passes (loadShaderModule), and each of them asks it.
+// (shader_watch.hpp). A copied bin/ whose source tree is gone uses the build's SPIR-V.
 #pragma once
-
-#include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "common/device.hpp"
 
 namespace common {
 
@@ -48,12 +44,20 @@ struct ShaderSource {
 };
 ShaderSource findShaderSource(std::string_view name);
 
+// A file a shader is made from, and its modification time taken just before it was read (none:
+// it was not there), so that a save landing during a compile is seen by the next look.
+struct ShaderFile {
+    std::filesystem::path path;
+    std::optional<std::filesystem::file_time_type> time;
+};
+std::optional<std::filesystem::file_time_type> modificationTime(const std::filesystem::path& path);
+
 // The outcome of one shaderc compilation: SPIR-V words, or the compiler's message (every line of
-// it "file:line: error: ..."); every file the source included, for the modification times.
+// it "file:line: error: ..."); every file the source included (or looked for), with its time.
 struct ShaderCompilation {
     std::vector<uint32_t> spirv;
     std::string error;
-    std::vector<std::filesystem::path> files;  // the source, then what it included
+    std::vector<ShaderFile> files;  // the source, then what it included
 };
 ShaderCompilation compileShader(const ShaderSource& source);
 
@@ -63,33 +67,16 @@ ShaderCompilation compileShader(const ShaderSource& source);
 std::vector<std::filesystem::path> shaderFiles(const ShaderSource& source);
 
 // Empty when SPIR-V compiled from `source` fits the pipeline the code makes for the build's
-// shader (the rules: Interface in shader_compiler.cpp); else "file: interface changed: why".
-std::string shaderInterfaceChange(const ShaderSource& source, const std::vector<uint32_t>& spirv);
+// shader (common/shader_interface.hpp); else "file: interface changed: why (...)".
+std::string checkShaderInterface(const ShaderSource& source, const std::vector<uint32_t>& spirv);
 
-// The SPIR-V for a shader name: compiled from its source when the source or a file it includes is
-// newer than the build's .spv (the book's rule), else the build's .spv. A compile error throws
-// InputError "file:line: error: ..." and a compiled shader whose interface no longer fits the
-// pipeline the code makes for it "file: interface changed: ..." (exit code 2). Remembers the
-// shader for shaderSourcesChanged.
-std::vector<uint32_t> shaderCode(std::string_view name);
+// The words of a SPIR-V file (Failure when it is not one).
+std::vector<uint32_t> readSpirv(const std::filesystem::path& path);
 
-// shaderCode, then vkCreateShaderModule (written out in chapter-06, which introduces it), the
-// module named after the shader for graphics debuggers.
-VkShaderModule loadShaderModule(const Device& device, std::string_view name);
+// Whether this run has shader sources (shaderSourcesSummary says where).
+bool shaderSourcesFound();
 
-// Remembers a shader a chapter compiled itself (chapter-06), so its edits are noticed too.
-void watchShader(std::string_view name);
-
-// Live reload, called once a frame: looks at the modification times of every file the loaded
-// shaders came from (at most four times a second) and recompiles the shaders whose files changed.
-// True when at least one changed and every loaded shader now compiles and fits its pipelines: the
-// caller then rebuilds its pipelines at this frame boundary, and shaderCode returns the new code.
-// While any shader fails, nothing changes and false is returned; each failure is printed once
-// and kept (shaderReloadError) until its file is fixed. Also prints the last reload's latency,
-// at the start of the frame after the first one that used it.
-bool shaderSourcesChanged();
-
-// The error of the last failed reload, empty when every shader compiled (the --gui overlay shows it).
-const std::string& shaderReloadError();
+// The first line of a compiler message, and how many more errors it has.
+std::string firstErrorLine(const std::string& message);
 
 }  // namespace common

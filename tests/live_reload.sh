@@ -142,7 +142,7 @@ EOF
     target=$edited_file
     mv "$work/staged" "$target"
     wait_for "$work/stderr" "did not reload"
-    grep -q "interface changed: it uses set 6 binding 0 (uniform buffer), which the shader its pipeline was made for does not declare" \
+    grep -q "interface changed: it uses set 6 binding 0 (uniform block LiveReloadExtra), which the shader its pipeline was made for does not declare" \
         "$work/stderr" || fail "not reported as an interface change"
     ;;
 leak)

@@ -74,7 +74,7 @@ EOF
     status=$?
     [ $status = 2 ] || fail "exit code $status, expected 2"
     [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
-    grep -q "$FILE: interface changed: it uses set 6 binding 0 (uniform buffer)" "$work/stderr" ||
+    grep -q "$FILE: interface changed: it uses set 6 binding 0 (uniform block ExtraInput)" "$work/stderr" ||
         fail "not refused as an interface change: $(cat "$work/stderr")"
     cat "$work/stderr"
     ;;

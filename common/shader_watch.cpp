@@ -1,0 +1,249 @@
+// The shaders a chapter loaded, and live reload (shader_watch.hpp).
+#include "common/shader_watch.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include "common/check.hpp"
+#include "common/debug_names.hpp"
+#include "common/files.hpp"
+#include "common/shader_interface.hpp"
+
+namespace common {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A shader a chapter loaded: where its code came from, and the files to watch.
+struct Entry {
+    ShaderSource source;
+    std::vector<uint32_t> spirv;                   // what shaderCode returns now
+    std::vector<uint32_t> reference;               // the build's: the interface its pipeline was made for
+    std::vector<ShaderFile> files;                 // each file it came from, and its time when read
+    std::optional<std::vector<uint32_t>> pending;  // compiled and checked, not yet every pipeline's
+    std::string error;                             // why the last compile of it failed
+    bool reloaded = false;                         // spirv came from a reload
+};
+
+struct State {
+    std::map<std::string, Entry, std::less<>> shaders;
+    std::chrono::steady_clock::time_point lastPoll{};
+    std::string buildError;   // why the last reload's pipelines could not be made
+    std::string reloadError;  // every shader's error, then buildError
+    // The reload being built or just made, reported at the next frame: its shaders, the edit's
+    // time, the compile's and the pipelines' durations.
+    std::string reloaded;
+    fs::file_time_type editTime{};
+    std::chrono::steady_clock::time_point compiled{};
+    double compileMs = 0.0, pipelinesMs = 0.0;
+};
+State gState;
+
+std::vector<ShaderFile> withTimes(const std::vector<fs::path>& files) {
+    std::vector<ShaderFile> result;
+    for (const fs::path& file : files) result.push_back({file, modificationTime(file)});
+    return result;
+}
+
+std::string withNewline(const std::string& text) {
+    return text.ends_with('\n') ? text : text + "\n";
+}
+
+// Compiled code against the build's; the error message, or empty.
+std::string checkInterface(const Entry& entry, const std::vector<uint32_t>& spirv) {
+    if (entry.reference.empty()) return {};
+    std::string change = shaderInterfaceChange(entry.reference, spirv);
+    if (change.empty()) return {};
+    return utf8(entry.source.glsl) + ": interface changed: " + change +
+           " (a reload changes shader code only; a new interface needs the C++ that makes the pipeline)";
+}
+
+void collectErrors() {
+    gState.reloadError.clear();
+    for (const auto& [name, entry] : gState.shaders)
+        if (!entry.error.empty()) gState.reloadError += withNewline(entry.error);
+    if (!gState.buildError.empty()) gState.reloadError += withNewline(gState.buildError);
+}
+
+}  // namespace
+
+std::vector<uint32_t> shaderCode(std::string_view name) {
+    if (auto known = gState.shaders.find(name); known != gState.shaders.end()) {
+        if (known->second.pending) return *known->second.pending;
+        if (!known->second.spirv.empty()) return known->second.spirv;
+    }
+    Entry entry;
+    entry.source = findShaderSource(name);
+    bool built = fs::exists(entry.source.spv);
+    if (built) entry.reference = readSpirv(entry.source.spv);
+    if (!entry.source.found) {
+        if (!built) throw Failure("missing shader '" + utf8(entry.source.spv) + "' (is the build complete?)");
+        entry.spirv = entry.reference;
+        return gState.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
+    }
+    // The book's rule, followed through the included files: compile when a file is newer than
+    // the build's SPIR-V. shaderFiles tells which files those are; their times are taken now,
+    // before anything is read.
+    entry.files = withTimes(shaderFiles(entry.source));
+    bool newer = !built;
+    if (built) {
+        std::optional<fs::file_time_type> spvTime = modificationTime(entry.source.spv);
+        for (const ShaderFile& file : entry.files)
+            newer = newer || !spvTime || (file.time && *file.time > *spvTime);
+    }
+    if (newer) {
+        ShaderCompilation compilation = compileShader(entry.source);
+        if (!compilation.error.empty()) throw InputError(firstErrorLine(compilation.error));
+        if (std::string change = checkInterface(entry, compilation.spirv); !change.empty())
+            throw InputError(change);
+        std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
+                    std::string(name).c_str());
+        std::fflush(stdout);
+        entry.spirv = std::move(compilation.spirv);
+        entry.files = std::move(compilation.files);
+    } else {
+        entry.spirv = entry.reference;
+    }
+    return gState.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
+}
+
+VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
+    std::vector<uint32_t> code = shaderCode(name);  // the build's, compiled from a newer source, or a reload's
+    VkShaderModuleCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+        .codeSize = code.size() * sizeof(uint32_t),
+        .pCode = code.data(),
+    };
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
+    nameObject(device.handle, module, std::string(name));
+    return module;
+}
+
+void watchShader(std::string_view name) {
+    if (!shaderSourcesFound() || gState.shaders.count(name)) return;
+    Entry entry;
+    entry.source = findShaderSource(name);
+    if (!entry.source.found) return;
+    if (fs::exists(entry.source.spv)) entry.reference = readSpirv(entry.source.spv);
+    entry.files = withTimes(shaderFiles(entry.source));
+    gState.shaders.emplace(std::string(name), std::move(entry));
+}
+
+std::optional<std::vector<uint32_t>> reloadedShaderCode(std::string_view name) {
+    auto known = gState.shaders.find(name);
+    if (known == gState.shaders.end()) return std::nullopt;
+    if (known->second.pending) return known->second.pending;
+    if (known->second.reloaded) return known->second.spirv;
+    return std::nullopt;
+}
+
+bool ShaderReload::changed(const std::vector<std::string>& names) const {
+    for (const std::string& name : names)
+        if (std::find(shaders.begin(), shaders.end(), name) != shaders.end()) return true;
+    return false;
+}
+
+ShaderReload pollShaderSources() {
+    if (!shaderSourcesFound()) return {};
+    // The last reload's report, now that a frame has been recorded and submitted with it: how long
+    // from the edit (the newest changed file's modification time) to that frame.
+    if (!gState.reloaded.empty()) {
+        auto latency =
+            std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
+        std::printf("shaders: reloaded %s (compiled in %.0f ms, pipelines made in %.0f ms; first frame with it "
+                    "%.0f ms after the edit)\n",
+                    gState.reloaded.c_str(), gState.compileMs, gState.pipelinesMs, latency.count());
+        std::fflush(stdout);
+        gState.reloaded.clear();
+    }
+    auto now = std::chrono::steady_clock::now();
+    if (now - gState.lastPoll < std::chrono::milliseconds(250)) return {};
+    gState.lastPoll = now;
+
+    // Which shaders' files changed since they were read. While the source itself is missing (an
+    // editor replacing it), the shader is looked at again on the next poll.
+    std::vector<std::pair<const std::string*, Entry*>> changed;
+    fs::file_time_type editTime = fs::file_time_type::min();
+    for (auto& [name, entry] : gState.shaders) {
+        if (!entry.source.found) continue;
+        bool edited = false;
+        for (const ShaderFile& file : entry.files) {
+            std::optional<fs::file_time_type> current = modificationTime(file.path);
+            if (current != file.time) {
+                edited = true;
+                if (current) editTime = std::max(editTime, *current);
+            }
+        }
+        if (edited && modificationTime(entry.source.glsl)) changed.emplace_back(&name, &entry);
+    }
+    if (changed.empty()) return {};
+
+    gState.buildError.clear();
+    for (auto& [name, entry] : changed) {
+        ShaderCompilation compilation;
+        try {
+            compilation = compileShader(entry->source);
+        } catch (const std::exception& e) {
+            // The file went away or changed size while it was read: its times stay as they were,
+            // so the next poll compiles it again. Said once, not at every poll.
+            std::string error = std::string(e.what());
+            if (error != entry->error)
+                std::fprintf(stderr, "shaders: %s did not reload: %s\n", name->c_str(), error.c_str());
+            entry->error = error;
+            continue;
+        }
+        entry->files = std::move(compilation.files);  // the times taken before each file was read
+        entry->error = compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
+        if (entry->error.empty())
+            entry->pending = std::move(compilation.spirv);
+        else
+            std::fprintf(stderr, "shaders: %s did not reload: %s", name->c_str(), withNewline(entry->error).c_str());
+    }
+    // Every shader must be good before any pipeline changes.
+    collectErrors();
+    if (!gState.reloadError.empty()) {
+        std::fflush(stderr);
+        return {};
+    }
+    ShaderReload reload;
+    for (auto& [name, entry] : gState.shaders)
+        if (entry.pending) reload.shaders.push_back(name);
+    if (reload.shaders.empty()) return {};
+    gState.editTime = editTime;
+    gState.compiled = std::chrono::steady_clock::now();
+    gState.compileMs = std::chrono::duration<double, std::milli>(gState.compiled - now).count();
+    return reload;
+}
+
+void finishShaderReload(const std::string& error) {
+    std::string names;
+    for (auto& [name, entry] : gState.shaders)
+        if (entry.pending) {
+            if (error.empty()) {
+                entry.spirv = std::move(*entry.pending);
+                entry.reloaded = true;
+            }
+            entry.pending.reset();
+            names += (names.empty() ? "" : ", ") + name;
+        }
+    if (!error.empty()) {
+        gState.buildError = "shaders: " + names + " did not reload: " + error;
+        std::fprintf(stderr, "%s", withNewline(gState.buildError).c_str());
+        std::fflush(stderr);
+        collectErrors();
+        return;
+    }
+    gState.reloaded = names;
+    gState.pipelinesMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - gState.compiled).count();
+}
+
+const std::string& shaderReloadError() {
+    return gState.reloadError;
+}
+
+}  // namespace common
