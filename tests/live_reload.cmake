@@ -75,6 +75,16 @@ live_test(live-reload.chapter-06.broken broken chapter-06/triangle.frag COMMAND 
 live_test(live-reload.chapter-15.broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-15.fix fix chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-15.interface interface chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+# Every rule of the interface check (tests/live_reload_rules.py): refused, the image unchanged.
+foreach(rule block-grown member-moved image-type array-size push-grown output-moved)
+    live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+    set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
+endforeach()
+live_test(live-reload.chapter-15.rule-constant-type rule chapter-15/scene.frag COMMAND $<TARGET_FILE:chapter-15>)
+set_property(TEST live-reload.chapter-15.rule-constant-type APPEND PROPERTY ENVIRONMENT RULE=constant-type)
+live_test(live-reload.chapter-15-lab.rule-local-size rule chapter-15-lab/light.comp
+    COMMAND $<TARGET_FILE:chapter-15-lab> --light-pass compute)
+set_property(TEST live-reload.chapter-15-lab.rule-local-size APPEND PROPERTY ENVIRONMENT RULE=local-size)
 live_test(live-reload.chapter-15.gui-broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15> --gui)
 live_test(live-reload.chapter-06.leak leak chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
 live_test(live-reload.chapter-15.leak leak chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)

@@ -18,6 +18,8 @@
 #   fix        broken, then the line corrected: the fix is picked up (the last frame is the edit's);
 #   interface  the shader reads a descriptor its pipeline layout does not have: refused as an
 #              interface change, the running pipelines stay;
+#   rule       an interface change of the kind $RULE names (tests/live_reload_rules.py), saved by
+#              renaming: refused with the rule's message, the running pipelines stay;
 #   leak       the edited file touched RELOADS times (default 50), each a full reload; the anonymous
 #              resident memory is read every 5th and its least-squares slope must stay under
 #              SLOPE_LIMIT_KB per reload (tests/window_life.sh's method); the exit code covers
@@ -145,6 +147,13 @@ EOF
     grep -q "interface changed: it uses set 6 binding 0 (uniform block LiveReloadExtra), which the shader its pipeline was made for does not declare" \
         "$work/stderr" || fail "not reported as an interface change"
     ;;
+rule)
+    expected=$(python3 "$(dirname "$0")/live_reload_rules.py" "$work/edited" "${RULE:-}") ||
+        fail "rule '${RULE:-}' could not be applied"
+    wait_for "$work/stderr" "did not reload"
+    sleep 0.6  # an include saved first may be compiled on its own: the next poll sees the rest
+    grep -Eq -- "$expected" "$work/stderr" || fail "not refused with: $expected"
+    ;;
 leak)
     readings=()
     for i in $(seq "$RELOADS"); do
@@ -186,7 +195,7 @@ edit | fix)
     "$image_compare" "$work/last.png" --golden "$work/original.png" --max-diff 2 --max-fraction 0.001 \
         > /dev/null 2>&1 && fail "the last frame is the unedited shader's"
     ;;
-broken | interface)
+broken | interface | rule)
     if [ $gui = 1 ]; then  # the overlay shows the error over the unedited image
         "$image_compare" "$work/last.png" --golden "$work/original.png" --max-diff 2 --max-fraction 0.001 \
             > /dev/null 2>&1 && fail "the overlay does not show the error"

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""The interface changes tests/live_reload.sh makes under a running chapter (scenario 'rule').
+
+    live_reload_rules.py SHADERS RULE
+
+Edits the copy of the shader sources SHADERS as the rule says, saving each file as many editors
+do (a new file renamed over the old one, included files first), and prints the message the
+chapter must refuse the change with (an extended regular expression). Each rule is one thing the
+C++ relies on that a reload must not change (docs/live-shaders.md, "What a reload cannot change").
+"""
+import os
+import sys
+
+INPUTS = 'chapter-15/light_inputs.glsl'
+GBUFFER = 'chapter-15/gbuffer_read.glsl'
+
+# rule: ([(file, old text, new text)], message). "END" as the old text puts the new line before
+# the file's last '}'.
+RULES = {
+    # The issue a reader hits first: a uniform block grown past what the C++ binds.
+    'block-grown': ([(INPUTS, '    ShaderSceneInfo scene;\n};', '    ShaderSceneInfo scene;\n    vec4 extraTint[64];\n};'),
+                     ('chapter-15/light.frag', 'END', '    outColor += extraTint[63];')],
+                    r'set 2 binding 0 \(uniform block Scene\): member extraTint \(vec4\[64\], bytes [0-9]+\.\.[0-9]+\) '
+                    r'reads past the [0-9]+ bytes the shader its pipeline was made for declares'),
+    'member-moved': ([(INPUTS, 'uniform Scene {\n', 'uniform Scene {\n    vec4 movedBy;\n')],
+                     r'\(uniform block Scene\): member scene \(struct ShaderSceneInfo, bytes 16\.\.'),
+    'image-type': ([(GBUFFER, 'uniform sampler2D depthAttachment;', 'uniform sampler2DArray depthAttachment;'),
+                    (GBUFFER, 'textureLod(depthAttachment, uv, 0.0)', 'textureLod(depthAttachment, vec3(uv, 0.0), 0.0)')],
+                   r'set 0 binding 4 \(depthAttachment\) is a sampler2DArray now; the shader its pipeline was made '
+                   r'for has a sampler2D'),
+    'array-size': ([(GBUFFER, 'uniform sampler2D depthAttachment;', 'uniform sampler2D depthAttachment[2];'),
+                    (GBUFFER, 'textureLod(depthAttachment, uv, 0.0)', 'textureLod(depthAttachment[1], uv, 0.0)')],
+                   r'set 0 binding 4 \(depthAttachment\) is an array of 2 now; the shader its pipeline was made '
+                   r'for declares 1'),
+    'push-grown': ([(INPUTS, '    LightView show;  // gpu_types.glsl\n', '    LightView show;\n    vec4 pushedTint;\n'),
+                    ('chapter-15/light.frag', 'END', '    outColor += pushedTint;')],
+                   r'push constants \(LightViewBlock\): member pushedTint \(vec4, bytes [0-9]+\.\.[0-9]+\) reads past'),
+    'output-moved': ([('chapter-15/light.frag', 'layout(location = 0) out vec4 outColor;',
+                       'layout(location = 1) out vec4 outColor;')],
+                     r'it no longer writes output location 0 \(outColor, vec4\)'),
+    'constant-type': ([('chapter-15/scene_surface.glsl', 'layout(constant_id = 0) const bool ALPHA_TEST = true;',
+                        'layout(constant_id = 0) const int ALPHA_TEST_VALUE = 1;\n'
+                        'const bool ALPHA_TEST = ALPHA_TEST_VALUE != 0;')],
+                      r'specialization constant 0 \(ALPHA_TEST_VALUE\) is int now; the C\+\+ sets it as bool'),
+    'local-size': ([('chapter-15-lab/light.comp', 'local_size_x = 8, local_size_y = 8',
+                     'local_size_x = 4, local_size_y = 4')],
+                   r'local size is 4 x 4 x 1 now; the dispatch is sized for 8 x 8 x 1'),
+}
+
+
+def main():
+    root, rule = sys.argv[1], sys.argv[2]
+    edits, message = RULES[rule]
+    texts = {}
+    for name, old, new in edits:
+        text = texts.get(name) or open(os.path.join(root, name)).read()
+        if old == 'END':
+            end = text.rindex('}')
+            start = text.rindex('\n', 0, end) + 1
+            text = text[:start] + new + '\n' + text[start:]
+        else:
+            if old not in text:
+                sys.exit(f'live_reload_rules: {name} has no {old!r}')
+            text = text.replace(old, new, 1)
+        texts[name] = text
+    for name, text in sorted(texts.items(), key=lambda item: item[0].endswith(('.frag', '.comp', '.vert'))):
+        path = os.path.join(root, name)
+        with open(path + '.new', 'w') as out:
+            out.write(text)
+        os.replace(path + '.new', path)
+    print(message)
+
+
+if __name__ == '__main__':
+    main()
