@@ -86,6 +86,18 @@ live_test(live-reload.chapter-15-lab.rule-local-size rule chapter-15-lab/light.c
     COMMAND $<TARGET_FILE:chapter-15-lab> --light-pass compute)
 set_property(TEST live-reload.chapter-15-lab.rule-local-size APPEND PROPERTY ENVIRONMENT RULE=local-size)
 live_test(live-reload.chapter-15.gui-broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15> --gui)
+# A pipeline that cannot be made on reload (the fault-injection layer, tests/fault.cmake): the old
+# ones keep drawing, the same edit saved again is picked up.
+foreach(case "chapter-06;chapter-06/triangle.frag;Graphics" "chapter-10;chapter-10/lighting.frag;Graphics"
+             "chapter-14;chapter-14/light.frag;Graphics" "chapter-15;chapter-15/light.frag;Graphics"
+             "chapter-15-lab;chapter-15-lab/light.frag;Graphics")
+    list(GET case 0 program)
+    list(GET case 1 file)
+    list(GET case 2 kind)
+    live_test(live-reload.${program}.pipeline-fails fault ${file} COMMAND $<TARGET_FILE:${program}> --device llvmpipe)
+    set_property(TEST live-reload.${program}.pipeline-fails APPEND PROPERTY ENVIRONMENT
+                 XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 PIPELINE_KIND=${kind})
+endforeach()
 live_test(live-reload.chapter-06.leak leak chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
 live_test(live-reload.chapter-15.leak leak chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-06.window-fix fix chapter-06/triangle.frag WINDOW COMMAND $<TARGET_FILE:chapter-06>)

@@ -20,6 +20,10 @@
 #              interface change, the running pipelines stay;
 #   rule       an interface change of the kind $RULE names (tests/live_reload_rules.py), saved by
 #              renaming: refused with the rule's message, the running pipelines stay;
+#   fault      the edit of 'edit', but the first pipeline the reload makes fails to be made
+#              (VKBOOK_FAULT=vkCreate<PIPELINE_KIND>Pipelines:n+1 of the fault-injection layer, n
+#              the pipelines made at start-up): refused, the old pipelines keep drawing; the same
+#              edit saved again is picked up (the last frame is the edit's);
 #   leak       the edited file touched RELOADS times (default 50), each a full reload; the anonymous
 #              resident memory is read every 5th and its least-squares slope must stay under
 #              SLOPE_LIMIT_KB per reload (tests/window_life.sh's method); the exit code covers
@@ -95,6 +99,14 @@ chapter_options=()
 for arg in "$@"; do [ "$arg" != --headless ] && [ "$arg" != --validation ] && chapter_options+=("$arg"); done
 
 # The run.
+if [ "$scenario" = fault ]; then
+    # How many pipelines the chapter makes at start-up, so that the reload's first one fails.
+    call=vkCreate${PIPELINE_KIND:-Graphics}Pipelines
+    made=$(VKBOOK_FAULT_TRACE=1 "$chapter" "${chapter_options[@]}" --validation --headless --frames 1 --shader-dir "$work/edited" \
+        2>&1 > /dev/null | grep -c "fault_injection: $call #")
+    [ "$made" -gt 0 ] || fail "the fault-injection layer is not loaded (no $call counted)"
+    export VKBOOK_FAULT=$call:$((made + 1))
+fi
 run_options=(--shader-dir "$work/edited" --screenshot "$work/last.png")
 [ $headless = 1 ] && run_options+=(--frames 10000000)
 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=131072 MALLOC_ARENA_MAX=1 \
@@ -154,6 +166,15 @@ rule)
     sleep 0.6  # an include saved first may be compiled on its own: the next poll sees the rest
     grep -Eq -- "$expected" "$work/stderr" || fail "not refused with: $expected"
     ;;
+fault)
+    insert "$good" > /dev/null
+    wait_for "$work/stderr" "did not reload"
+    grep -q "did not reload: .*VK_ERROR_OUT_OF_DEVICE_MEMORY" "$work/stderr" || fail "the failure is not reported"
+    grep -q "^shaders: reloaded" "$work/stdout" && fail "reported as reloaded"
+    sleep 0.5
+    touch "$target"  # saved again: this time the pipelines are made
+    wait_for "$work/stdout" "^shaders: reloaded .*first frame with it"
+    ;;
 leak)
     readings=()
     for i in $(seq "$RELOADS"); do
@@ -186,9 +207,10 @@ status=$?
 grep "^shaders: reloaded" "$work/stdout" | tail -1
 
 # What the last frame shows.
+unset VKBOOK_FAULT VKBOOK_FAULT_LAYER  # the references are rendered without the layer
 reference "$work/original" "$work/original.png"
 case $scenario in
-edit | fix)
+edit | fix | fault)
     reference "$work/edited" "$work/edited.png"
     "$image_compare" "$work/last.png" --golden "$work/edited.png" --max-diff 2 --max-fraction 0.001 ||
         fail "the last frame is not the edited shader's"

@@ -7,6 +7,9 @@
 // VKBOOK_FAULT=<call>:<n> fails the n-th call (counting from 1) of <call>:
 //   vkAllocateMemory                  -> VK_ERROR_OUT_OF_DEVICE_MEMORY (that call only)
 //   vkCreateImage, vkCreateBuffer     -> VK_ERROR_OUT_OF_HOST_MEMORY (that call only)
+//   vkCreateGraphicsPipelines, vkCreateComputePipelines
+//                                     -> VK_ERROR_OUT_OF_DEVICE_MEMORY (that call only; every
+//                                        pipeline it was to make is VK_NULL_HANDLE)
 //   vkQueueSubmit, vkQueueSubmit2, vkWaitForFences, vkGetFenceStatus, vkDeviceWaitIdle,
 //   vkQueueWaitIdle, vkAcquireNextImageKHR, vkQueuePresentKHR, vkGetQueryPoolResults
 //                                     -> VK_ERROR_DEVICE_LOST, and from then on every one of these
@@ -121,6 +124,8 @@ struct DeviceData {
         PFN_vkFreeMemory freeMemory;
         PFN_vkCreateImage createImage;
         PFN_vkCreateBuffer createBuffer;
+        PFN_vkCreateGraphicsPipelines createGraphicsPipelines;
+        PFN_vkCreateComputePipelines createComputePipelines;
         PFN_vkQueueSubmit queueSubmit;
         PFN_vkQueueSubmit2 queueSubmit2;
         PFN_vkWaitForFences waitForFences;
@@ -352,6 +357,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     resolve(data.next.freeMemory, next, *device, "vkFreeMemory");
     resolve(data.next.createImage, next, *device, "vkCreateImage");
     resolve(data.next.createBuffer, next, *device, "vkCreateBuffer");
+    resolve(data.next.createGraphicsPipelines, next, *device, "vkCreateGraphicsPipelines");
+    resolve(data.next.createComputePipelines, next, *device, "vkCreateComputePipelines");
     resolve(data.next.queueSubmit, next, *device, "vkQueueSubmit");
     resolve(data.next.queueSubmit2, next, *device, "vkQueueSubmit2");
     resolve(data.next.waitForFences, next, *device, "vkWaitForFences");
@@ -433,6 +440,35 @@ VKAPI_ATTR VkResult VKAPI_CALL createBuffer(VkDevice device, const VkBufferCreat
                                             const VkAllocationCallbacks* allocator, VkBuffer* buffer) {
     FAIL_OR_PASS_DOWN("vkCreateBuffer", VK_ERROR_OUT_OF_HOST_MEMORY, createBuffer, device, info, allocator,
                       buffer);
+}
+
+// A pipeline the driver could not make: every handle VK_NULL_HANDLE, as the specification asks
+// of a failed creation.
+template <typename Info, typename Next>
+VkResult createPipelines(const char* call, VkDevice device, VkPipelineCache cache, uint32_t count, const Info* infos,
+                         const VkAllocationCallbacks* allocator, VkPipeline* pipelines, Next next) {
+    {
+        std::lock_guard lock(gLock);
+        if (failsNow(call)) {
+            for (uint32_t i = 0; i < count; ++i) pipelines[i] = VK_NULL_HANDLE;
+            return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+        }
+    }
+    return next(device, cache, count, infos, allocator, pipelines);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createGraphicsPipelines(VkDevice device, VkPipelineCache cache, uint32_t count,
+                                                       const VkGraphicsPipelineCreateInfo* infos,
+                                                       const VkAllocationCallbacks* allocator, VkPipeline* pipelines) {
+    return createPipelines("vkCreateGraphicsPipelines", device, cache, count, infos, allocator, pipelines,
+                           deviceData(device).next.createGraphicsPipelines);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL createComputePipelines(VkDevice device, VkPipelineCache cache, uint32_t count,
+                                                      const VkComputePipelineCreateInfo* infos,
+                                                      const VkAllocationCallbacks* allocator, VkPipeline* pipelines) {
+    return createPipelines("vkCreateComputePipelines", device, cache, count, infos, allocator, pipelines,
+                           deviceData(device).next.createComputePipelines);
 }
 
 // The calls that report a device loss: each returns it instead of reaching the driver once the
@@ -650,6 +686,8 @@ PFN_vkVoidFunction interceptedDeviceCall(const char* name) {
         {"vkFreeMemory", reinterpret_cast<PFN_vkVoidFunction>(freeMemory)},
         {"vkCreateImage", reinterpret_cast<PFN_vkVoidFunction>(createImage)},
         {"vkCreateBuffer", reinterpret_cast<PFN_vkVoidFunction>(createBuffer)},
+        {"vkCreateGraphicsPipelines", reinterpret_cast<PFN_vkVoidFunction>(createGraphicsPipelines)},
+        {"vkCreateComputePipelines", reinterpret_cast<PFN_vkVoidFunction>(createComputePipelines)},
         {"vkQueueSubmit", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit)},
         {"vkQueueSubmit2", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit2)},
         {"vkQueueSubmit2KHR", reinterpret_cast<PFN_vkVoidFunction>(queueSubmit2)},
