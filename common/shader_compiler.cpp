@@ -3,11 +3,14 @@
 // for the book's chapter 6.
 #include "common/shader_compiler.hpp"
 
+#include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <system_error>
+#include <thread>
 
 #include "common/check.hpp"
 #include "common/files.hpp"
@@ -187,6 +190,10 @@ ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
     std::optional<fs::file_time_type> time = modificationTime(source.glsl);  // before reading
     std::string text = readInputFile(source.glsl);
     compilation.files.push_back({source.glsl, time});
+    // A test's slow compile (tests/live_reload.sh, "during-compile"): an edit saved while a
+    // compile runs must be compiled next.
+    if (const char* delay = std::getenv("VKBOOK_TEST_COMPILE_DELAY_MS"); delay && !preprocessOnly)
+        std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(delay)));
     shaderc_compiler_t compiler = shaderc_compiler_initialize();
     shaderc_compile_options_t options = shaderc_compile_options_initialize();
     for (const std::string& define : source.defines) {

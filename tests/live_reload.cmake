@@ -98,6 +98,17 @@ foreach(case "chapter-06;chapter-06/triangle.frag;Graphics" "chapter-10;chapter-
     set_property(TEST live-reload.${program}.pipeline-fails APPEND PROPERTY ENVIRONMENT
                  XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 PIPELINE_KIND=${kind})
 endforeach()
+# Every way an editor saves, and an edit saved during a (slow) compile: nothing lost, the run goes on.
+foreach(style in-place truncate rename-new rename-old delete)
+    live_test(live-reload.chapter-15.save-${style} save-${style} chapter-15/light.frag
+        COMMAND $<TARGET_FILE:chapter-15>)
+endforeach()
+live_test(live-reload.chapter-06.save-rename-old save-rename-old chapter-06/triangle.frag
+    COMMAND $<TARGET_FILE:chapter-06>)
+live_test(live-reload.chapter-15.during-compile during-compile chapter-15/light.frag
+    COMMAND $<TARGET_FILE:chapter-15>)
+set_property(TEST live-reload.chapter-15.during-compile APPEND PROPERTY ENVIRONMENT
+             VKBOOK_TEST_COMPILE_DELAY_MS=1500)
 live_test(live-reload.chapter-06.leak leak chapter-06/triangle.frag COMMAND $<TARGET_FILE:chapter-06>)
 live_test(live-reload.chapter-15.leak leak chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-06.window-fix fix chapter-06/triangle.frag WINDOW COMMAND $<TARGET_FILE:chapter-06>)

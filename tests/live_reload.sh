@@ -24,6 +24,12 @@
 #              (VKBOOK_FAULT=vkCreate<PIPELINE_KIND>Pipelines:n+1 of the fault-injection layer, n
 #              the pipelines made at start-up): refused, the old pipelines keep drawing; the same
 #              edit saved again is picked up (the last frame is the edit's);
+#   save-STYLE the edit of 'edit' saved as an editor does (tests/live_reload_save.py: in-place,
+#              truncate, rename-new, rename-old, delete), with pauses between the steps so that a
+#              poll may see the file in between: picked up, the chapter never ends (a step in
+#              between is at most a reported error);
+#   during-compile  every compile made slow (VKBOOK_TEST_COMPILE_DELAY_MS), a second edit saved
+#              while the first one compiles: both picked up, the last frame is the second's;
 #   leak       the edited file touched RELOADS times (default 50), each a full reload; the anonymous
 #              resident memory is read every 5th and its least-squares slope must stay under
 #              SLOPE_LIMIT_KB per reload (tests/window_life.sh's method); the exit code covers
@@ -55,6 +61,7 @@ cp -r "$shaders" "$work/original"
 target="$work/edited/$shader"
 [ -f "$target" ] || fail "no $shader in $shaders"
 good='    outColor = vec4(1.0, 0.0, 1.0, 1.0);  // live_reload.sh'
+second='    outColor = vec4(0.0, 1.0, 1.0, 1.0);  // live_reload.sh'
 broken='    outColor = vec4(1.0, 0.0, 1.0 1.0);  // live_reload.sh'
 interface='    outColor = liveReloadExtra.color;  // live_reload.sh'
 # Puts LINE before the last '}' of the file (a new line of its own); prints its line number.
@@ -166,6 +173,18 @@ rule)
     sleep 0.6  # an include saved first may be compiled on its own: the next poll sees the rest
     grep -Eq -- "$expected" "$work/stderr" || fail "not refused with: $expected"
     ;;
+save-*)
+    python3 "$(dirname "$0")/live_reload_save.py" "$target" "$good" "${scenario#save-}" ||
+        fail "save style ${scenario#save-} failed"
+    wait_for "$work/stdout" "^shaders: reloaded .*first frame with it"
+    sleep 0.6  # what a later poll makes of it: still the edit
+    ;;
+during-compile)
+    insert "$good" > /dev/null
+    sleep 0.6  # polled (every 250 ms), now compiling (VKBOOK_TEST_COMPILE_DELAY_MS)
+    replace "$second"
+    wait_for "$work/stdout" "^shaders: reloaded .*first frame with it" 2
+    ;;
 fault)
     insert "$good" > /dev/null
     wait_for "$work/stderr" "did not reload"
@@ -210,7 +229,7 @@ grep "^shaders: reloaded" "$work/stdout" | tail -1
 unset VKBOOK_FAULT VKBOOK_FAULT_LAYER  # the references are rendered without the layer
 reference "$work/original" "$work/original.png"
 case $scenario in
-edit | fix | fault)
+edit | fix | fault | save-* | during-compile)
     reference "$work/edited" "$work/edited.png"
     "$image_compare" "$work/last.png" --golden "$work/edited.png" --max-diff 2 --max-fraction 0.001 ||
         fail "the last frame is not the edited shader's"
