@@ -155,7 +155,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     pass.projection = common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            hostVisible, "geometry: projection");
-    pass.projectionSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
+    pass.projectionSet =
+        common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout, "geometry: projection");
     common::writeBufferDescriptor(device, pass.projectionSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                   pass.projection.handle, sizeof(glm::mat4));
     // One view matrix per frame in flight: the CPU writes frame N+1's while the GPU may still
@@ -164,15 +165,16 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
     for (ViewFrame& view : pass.views) {
         view.buffer = common::createBuffer(device, sizeof(glm::mat4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            hostVisible, "geometry: view");
-        view.set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout);
+        view.set =
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.matrixLayout, "geometry: view");
         common::writeBufferDescriptor(device, view.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       view.buffer.handle, sizeof(glm::mat4));
     }
 
     // A set per material: its albedo texture, with the sampler its model gives it.
     for (const common::GpuMaterial& material : scene.materials) {
-        pass.textureSets.push_back(
-            common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
+        pass.textureSets.push_back(common::allocateDescriptorSet(device, pass.descriptorPool,
+                                                                 pass.textureLayout, "geometry: texture"));
         common::writeImageDescriptor(
             device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
             scene.textures[material.albedo.image].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
@@ -192,7 +194,8 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
         std::memcpy(static_cast<char*>(pass.materials.mapped) + i * pass.materialStride, &material,
                     sizeof(material));
     }
-    pass.materialSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialLayout);
+    pass.materialSet =
+        common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialLayout, "geometry: material");
     common::writeBufferDescriptor(device, pass.materialSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
                                   pass.materials.handle, sizeof(GeometryMaterial));
     //< materials

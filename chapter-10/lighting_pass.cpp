@@ -118,7 +118,8 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
         "lighting: G-buffer attachments");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}, "lighting");
-    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout,
+                                                        "lighting: attachments");
     // Attachments are read one texel per pixel: nearest filtering, which every depth format
     // supports (linear filtering of D32_SFLOAT is optional).
     pass.sampler =
@@ -156,7 +157,8 @@ bool remakeLightingPipeline(const common::Device& device, VkPipelineCache cache,
                             const common::Target& target, const common::ShaderReload& reload,
                             common::PipelineSwap& swap) {
     if (!reload.changed(kLightingShaders)) return false;
-    common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass, target.format); });
+    common::replacePipeline(swap, pass.pipeline,
+                            [&] { return makePipeline(device, cache, pass, target.format); });
     return true;
 }
 

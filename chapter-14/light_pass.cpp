@@ -35,7 +35,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
         "light: G-buffer attachments");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}, "light");
-    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout,
+                                                        "light: G-buffer attachments");
     // One texel per pixel: nearest filtering, which depth formats always support.
     pass.sampler =
         common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);

@@ -63,14 +63,15 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
         common::uploadStaged(device, batch, materialData.data(), materialData.size() * sizeof(SceneMaterial),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
     common::endStaging(device, batch);
-    pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
+    pass.materialsSet =
+        common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout, "scene: materials");
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                   pass.materials.handle, VK_WHOLE_SIZE);
 
     // A set per material: its albedo texture with the sampler the model gives it.
     for (const common::GpuMaterial& material : scene.materials) {
         pass.textureSets.push_back(
-            common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout));
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.textureLayout, "scene: texture"));
         common::writeImageDescriptor(
             device, pass.textureSets.back(), 0, scene.samplers[material.albedo.sampler],
             scene.textures[material.albedo.image].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

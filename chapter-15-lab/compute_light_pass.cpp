@@ -67,7 +67,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
         "compute light: output");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}, "compute light");
-    pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout);
+    pass.outputSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.outputLayout,
+                                                   "compute light: output");
     writeComputeOutput(device, pass, lightPass);
     VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout,
                                           lightPass.sceneLayout, pass.outputLayout,

@@ -206,7 +206,7 @@ LightCullingPass createLightCulling(const common::Device& device, VkExtent2D ext
     for (LightCullingFrame& frame : c.frames) {
         frame.view = common::createBuffer(device, sizeof(CullView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                           hostVisible, "cull: view");
-        frame.set = common::allocateDescriptorSet(device, c.descriptorPool, c.setLayout);
+        frame.set = common::allocateDescriptorSet(device, c.descriptorPool, c.setLayout, "cull");
         common::writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       frame.view.handle, sizeof(CullView));
     }
@@ -243,14 +243,18 @@ void remakeLightCullingPipelines(const common::Device& device, VkPipelineCache c
         common::replacePipeline(swap, c.bounds,
                                 [&] { return createComputePipeline(device, cache, layout, c.boundsShader); });
     if (reload.changed({kCullShader})) {
-        common::replacePipeline(swap, c.count, [&] { return createCullPipeline(device, cache, layout, false, false); });
+        common::replacePipeline(swap, c.count,
+                                [&] { return createCullPipeline(device, cache, layout, false, false); });
         common::replacePipeline(swap, c.countLarge,
                                 [&] { return createCullPipeline(device, cache, layout, false, true); });
-        common::replacePipeline(swap, c.fill, [&] { return createCullPipeline(device, cache, layout, true, false); });
-        common::replacePipeline(swap, c.fillLarge, [&] { return createCullPipeline(device, cache, layout, true, true); });
+        common::replacePipeline(swap, c.fill,
+                                [&] { return createCullPipeline(device, cache, layout, true, false); });
+        common::replacePipeline(swap, c.fillLarge,
+                                [&] { return createCullPipeline(device, cache, layout, true, true); });
     }
     if (reload.changed({kScanShader}))
-        common::replacePipeline(swap, c.scan, [&] { return createComputePipeline(device, cache, layout, kScanShader); });
+        common::replacePipeline(swap, c.scan,
+                                [&] { return createComputePipeline(device, cache, layout, kScanShader); });
 }
 
 void resizeLightCulling(const common::Device& device, LightCullingPass& c, VkExtent2D extent) {

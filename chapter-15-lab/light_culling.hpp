@@ -25,8 +25,8 @@
 #include "common/cli.hpp"
 #include "common/device.hpp"
 #include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
 #include "common/scene.hpp"
+#include "common/shader_watch.hpp"
 #include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
 

@@ -376,7 +376,8 @@ void run(const common::Options& options) {
             common::remakeFullscreenPipeline(device, cache, light.pass.pipeline, reload, swap);
             remakeComputeLightPipeline(device, cache, light.compute, reload, swap);
             common::remakePostPipelines(device, cache, postPass, reload, swap);
-            if (gui.enabled) common::remakeGuiPipeline(device, cache, guiPass, target.encodedFormat, reload, swap);
+            if (gui.enabled)
+                common::remakeGuiPipeline(device, cache, guiPass, target.encodedFormat, reload, swap);
         } catch (const std::exception& e) {
             common::discardPipelines(device, swap);
             common::finishShaderReload(e.what());

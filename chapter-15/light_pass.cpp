@@ -66,7 +66,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight},
          {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}},
         "light");
-    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout);
+    pass.attachmentsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.attachmentsLayout,
+                                                        "light: G-buffer attachments");
     // One texel per pixel: nearest filtering, which depth formats always support.
     pass.sampler =
         common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
@@ -86,8 +87,10 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hostVisible, "lights");
         frame.scene = common::createBuffer(device, sizeof(ShaderSceneInfo),
                                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "scene info");
-        frame.lightsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.lightsLayout);
-        frame.sceneSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.sceneLayout);
+        frame.lightsSet =
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.lightsLayout, "light: lights");
+        frame.sceneSet =
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.sceneLayout, "light: scene info");
         common::writeBufferDescriptor(device, frame.lightsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                       frame.lights.handle, VK_WHOLE_SIZE);
         common::writeBufferDescriptor(device, frame.sceneSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,

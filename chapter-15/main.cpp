@@ -215,7 +215,8 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
         remakeScenePipelines(c.device, cache, c.scenePass.pipelines, reload, swap);
         common::remakeFullscreenPipeline(c.device, cache, c.lightPass.pipeline, reload, swap);
         common::remakePostPipelines(c.device, cache, c.postPass, reload, swap);
-        if (c.gui.enabled) common::remakeGuiPipeline(c.device, cache, c.guiPass, c.target.encodedFormat, reload, swap);
+        if (c.gui.enabled)
+            common::remakeGuiPipeline(c.device, cache, c.guiPass, c.target.encodedFormat, reload, swap);
     } catch (const std::exception& e) {
         common::discardPipelines(c.device, swap);
         common::finishShaderReload(e.what());

@@ -43,7 +43,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 * materials}},
                                      "scene");
     for (const common::GpuMaterial& material : scene.materials) {
-        VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout);
+        VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool, pass.texturesLayout,
+                                                            "scene: textures");
         common::TextureBinding textures[4] = {material.albedo, material.normal, material.metalRough,
                                               material.occlusion};
         for (uint32_t binding = 0; binding < 4; ++binding)
@@ -74,7 +75,8 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                           shaderMaterials.size() * sizeof(ShaderMaterial),
                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
     common::endStaging(device, batch);
-    pass.materialsSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout);
+    pass.materialsSet =
+        common::allocateDescriptorSet(device, pass.descriptorPool, pass.materialsLayout, "scene: materials");
     common::writeBufferDescriptor(device, pass.materialsSet, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                   pass.materials.handle, VK_WHOLE_SIZE);
 }
@@ -102,21 +104,24 @@ std::array<VkPipeline, 4> makeScenePipelineSet(const common::Device& device, VkP
         for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
             for (bool doubleSided : {false, true}) {
                 VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-                VkSpecializationInfo specialization{
-                    .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(VkBool32), .pData = &alphaTest};
+                VkSpecializationInfo specialization{.mapEntryCount = 1,
+                                                    .pMapEntries = &entry,
+                                                    .dataSize = sizeof(VkBool32),
+                                                    .pData = &alphaTest};
                 made[(doubleSided ? 2 : 0) + (alphaTest ? 1 : 0)] = common::createGraphicsPipeline(
                     device, cache,
                     {
                         .name = std::string("scene ") + (alphaTest ? "cutout" : "opaque") +
                                 (doubleSided ? ", double-sided" : ""),
                         .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                                   common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
+                                   common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment,
+                                                       &specialization)},
                         .vertexInput = &vertexInput.state,
-                        // Back faces are never seen on closed meshes (the book culls none): culling them saves
-                        // their fragments, and removes depth ties where a back face meets a front face at a
-                        // silhouette edge -- ties that standard and reversed-Z break differently. Models wind
-                        // front faces counter-clockwise; the flipped viewport keeps that orientation on screen.
-                        // Double-sided materials show both faces.
+                        // Back faces are never seen on closed meshes (the book culls none): culling them
+                        // saves their fragments, and removes depth ties where a back face meets a front face
+                        // at a silhouette edge -- ties that standard and reversed-Z break differently. Models
+                        // wind front faces counter-clockwise; the flipped viewport keeps that orientation on
+                        // screen. Double-sided materials show both faces.
                         .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
                                                 : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
                         .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,

@@ -75,7 +75,7 @@ std::vector<CameraFrame> createCameraFrames(const Device& device, VkDescriptorPo
             createBuffer(device, sizeof(CameraUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
                          "camera, frame " + std::to_string(i));
-        frame.set = allocateDescriptorSet(device, pool, layout);
+        frame.set = allocateDescriptorSet(device, pool, layout, "camera, frame " + std::to_string(i));
         writeBufferDescriptor(device, frame.set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.buffer.handle,
                               sizeof(CameraUniform));
     }

@@ -1,9 +1,6 @@
 // VK_EXT_debug_utils names and labels (debug_names.hpp).
 #include "common/debug_names.hpp"
 
-#include <mutex>
-#include <unordered_map>
-
 namespace common {
 namespace {
 
@@ -13,8 +10,6 @@ struct DebugUtils {
     PFN_vkCmdEndDebugUtilsLabelEXT endLabel = nullptr;
 };
 DebugUtils gDebugUtils;
-std::mutex gNamesLock;  // the texture loader's threads make images too
-std::unordered_map<uint64_t, std::string> gNames;
 
 }  // namespace
 
@@ -43,14 +38,6 @@ void setObjectName(VkDevice device, VkObjectType type, uint64_t handle, const st
         .pObjectName = name.c_str(),
     };
     gDebugUtils.setObjectName(device, &info);
-    std::lock_guard lock(gNamesLock);
-    gNames[handle] = name;
-}
-
-std::string objectName(uint64_t handle) {
-    std::lock_guard lock(gNamesLock);
-    auto found = gNames.find(handle);
-    return found == gNames.end() ? std::string() : found->second;
 }
 
 void beginLabel(VkCommandBuffer cmd, const std::string& name) {

@@ -16,10 +16,10 @@ namespace common {
 void loadDebugNames(VkInstance instance, bool enabled);
 bool debugNamesEnabled();
 
+// Hands the name to the driver and the layers, which keep it with the object (and forget it when
+// the object is destroyed); nothing is kept here, so nothing grows with reloads and resizes, and
+// a handle the driver reuses gets the name its new object is given where it is made.
 void setObjectName(VkDevice device, VkObjectType type, uint64_t handle, const std::string& name);
-// The name last given to an object (empty when none, or without the extension): a descriptor set
-// is named after its layout.
-std::string objectName(uint64_t handle);
 
 // The object type of each handle type we name.
 template <typename Handle>
@@ -75,10 +75,6 @@ template <typename Handle>
 void nameObject(VkDevice device, Handle handle, const std::string& name) {
     if (!debugNamesEnabled() || handle == VK_NULL_HANDLE) return;
     setObjectName(device, objectType<Handle>(), reinterpret_cast<uint64_t>(handle), name);
-}
-template <typename Handle>
-std::string objectName(Handle handle) {
-    return objectName(reinterpret_cast<uint64_t>(handle));
 }
 
 // A labelled region of a command buffer: a pass, as a debugger's event list shows it.

@@ -41,7 +41,7 @@ VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,
 }
 
 VkDescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorPool pool,
-                                      VkDescriptorSetLayout layout) {
+                                      VkDescriptorSetLayout layout, const std::string& name) {
     VkDescriptorSetAllocateInfo info{
         .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
         .descriptorPool = pool,
@@ -50,7 +50,7 @@ VkDescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorPool poo
     };
     VkDescriptorSet set = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateDescriptorSets(device.handle, &info, &set));
-    nameObject(device.handle, set, objectName(layout));  // a set is named after its layout
+    nameObject(device.handle, set, name);
     return set;
 }
 

@@ -23,8 +23,9 @@ VkDescriptorSetLayout createDescriptorSetLayout(const Device& device,
 // holds, never from fixed maxima). Zero-count types are left out.
 VkDescriptorPool createDescriptorPool(const Device& device, uint32_t maxSets,
                                       std::vector<VkDescriptorPoolSize> sizes, const std::string& name);
+// One set of `layout`, named `name` for graphics debuggers.
 VkDescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorPool pool,
-                                      VkDescriptorSetLayout layout);
+                                      VkDescriptorSetLayout layout, const std::string& name);
 
 void writeBufferDescriptor(const Device& device, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
                            VkBuffer buffer, VkDeviceSize range);

@@ -127,7 +127,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
         "gui font");
     pass.descriptorPool =
         common::createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}, "gui");
-    pass.fontSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout);
+    pass.fontSet = common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout, "gui font");
     common::writeImageDescriptor(device, pass.fontSet, 0, pass.sampler, pass.fontAtlas.view,
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 

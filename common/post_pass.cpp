@@ -18,7 +18,7 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
         "post input");
     pass.descriptorPool =
         createDescriptorPool(device, 1, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}, "post");
-    pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout);
+    pass.inputSet = allocateDescriptorSet(device, pass.descriptorPool, pass.inputLayout, "post input");
 
     // FXAA's taps between texels need linear filtering, optional for 32-bit float formats.
     // SHORTCUT: where it is missing, FXAA runs on nearest samples and smooths less.
@@ -103,9 +103,10 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& tar
 }
 //< record-post
 
-void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass, const ShaderReload& reload,
-                         PipelineSwap& swap) {
-    for (FullscreenPipeline& pipeline : pass.pipelines) remakeFullscreenPipeline(device, cache, pipeline, reload, swap);
+void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass,
+                         const ShaderReload& reload, PipelineSwap& swap) {
+    for (FullscreenPipeline& pipeline : pass.pipelines)
+        remakeFullscreenPipeline(device, cache, pipeline, reload, swap);
 }
 
 void destroyPostPass(const Device& device, PostPass& pass) {

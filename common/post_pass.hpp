@@ -30,7 +30,7 @@ void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& tar
                     bool fxaa, bool guiFollows = false);
 void destroyPostPass(const Device& device, PostPass& pass);
 // Live reload: new pipelines into `swap` where the reload changed their shaders.
-void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass, const ShaderReload& reload,
-                         PipelineSwap& swap);
+void remakePostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass,
+                         const ShaderReload& reload, PipelineSwap& swap);
 
 }  // namespace common

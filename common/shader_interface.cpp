@@ -42,15 +42,15 @@ struct Member {
 
 struct Block {
     std::string name;
-    size_t size = 0;                // declared size, runtime array excluded
-    std::vector<Member> members;    // every member
-    std::vector<unsigned> used;     // indices of the members the code reads or writes
+    size_t size = 0;              // declared size, runtime array excluded
+    std::vector<Member> members;  // every member
+    std::vector<unsigned> used;   // indices of the members the code reads or writes
 };
 
 struct Descriptor {
     std::string kind;  // "uniform block", "storage block", "combined image sampler", ...
     std::string name;
-    std::string type;  // image type ("sampler2D", "image2D rgba16f"), empty for blocks and samplers
+    std::string type;    // image type ("sampler2D", "image2D rgba16f"), empty for blocks and samplers
     unsigned count = 1;  // array length; 0: runtime-sized
     unsigned inputIndex = 0;
     std::optional<Block> block;
@@ -127,20 +127,47 @@ std::string Reflection::typeName(spvc_type_id id) const {
         const char* scalar = "?";
         const char* prefix = "?";
         switch (base) {
-        case SPVC_BASETYPE_BOOLEAN: scalar = "bool", prefix = "b"; break;
-        case SPVC_BASETYPE_INT32: scalar = "int", prefix = "i"; break;
-        case SPVC_BASETYPE_UINT32: scalar = "uint", prefix = "u"; break;
-        case SPVC_BASETYPE_FP32: scalar = "float", prefix = ""; break;
-        case SPVC_BASETYPE_FP64: scalar = "double", prefix = "d"; break;
-        case SPVC_BASETYPE_INT64: scalar = "int64_t", prefix = "i64"; break;
-        case SPVC_BASETYPE_UINT64: scalar = "uint64_t", prefix = "u64"; break;
-        case SPVC_BASETYPE_INT16: scalar = "int16_t", prefix = "i16"; break;
-        case SPVC_BASETYPE_UINT16: scalar = "uint16_t", prefix = "u16"; break;
-        case SPVC_BASETYPE_FP16: scalar = "float16_t", prefix = "f16"; break;
-        case SPVC_BASETYPE_INT8: scalar = "int8_t", prefix = "i8"; break;
-        case SPVC_BASETYPE_UINT8: scalar = "uint8_t", prefix = "u8"; break;
-        case SPVC_BASETYPE_SAMPLER: scalar = "sampler"; break;
-        default: break;
+            case SPVC_BASETYPE_BOOLEAN:
+                scalar = "bool", prefix = "b";
+                break;
+            case SPVC_BASETYPE_INT32:
+                scalar = "int", prefix = "i";
+                break;
+            case SPVC_BASETYPE_UINT32:
+                scalar = "uint", prefix = "u";
+                break;
+            case SPVC_BASETYPE_FP32:
+                scalar = "float", prefix = "";
+                break;
+            case SPVC_BASETYPE_FP64:
+                scalar = "double", prefix = "d";
+                break;
+            case SPVC_BASETYPE_INT64:
+                scalar = "int64_t", prefix = "i64";
+                break;
+            case SPVC_BASETYPE_UINT64:
+                scalar = "uint64_t", prefix = "u64";
+                break;
+            case SPVC_BASETYPE_INT16:
+                scalar = "int16_t", prefix = "i16";
+                break;
+            case SPVC_BASETYPE_UINT16:
+                scalar = "uint16_t", prefix = "u16";
+                break;
+            case SPVC_BASETYPE_FP16:
+                scalar = "float16_t", prefix = "f16";
+                break;
+            case SPVC_BASETYPE_INT8:
+                scalar = "int8_t", prefix = "i8";
+                break;
+            case SPVC_BASETYPE_UINT8:
+                scalar = "uint8_t", prefix = "u8";
+                break;
+            case SPVC_BASETYPE_SAMPLER:
+                scalar = "sampler";
+                break;
+            default:
+                break;
         }
         unsigned columns = spvc_type_get_columns(t), rows = spvc_type_get_vector_size(t);
         if (columns > 1)
@@ -158,24 +185,44 @@ std::string Reflection::imageType(spvc_type_id id) const {
     spvc_type t = type(id);
     bool storage = spvc_type_get_basetype(t) == SPVC_BASETYPE_IMAGE && spvc_type_get_image_is_storage(t);
     const char* word = spvc_type_get_basetype(t) == SPVC_BASETYPE_SAMPLED_IMAGE ? "sampler"
-                       : storage                                              ? "image"
-                                                                              : "texture";
+                       : storage                                                ? "image"
+                                                                                : "texture";
     std::string prefix;
     switch (spvc_type_get_basetype(type(spvc_type_get_image_sampled_type(t)))) {
-    case SPVC_BASETYPE_INT32: prefix = "i"; break;
-    case SPVC_BASETYPE_UINT32: prefix = "u"; break;
-    default: break;
+        case SPVC_BASETYPE_INT32:
+            prefix = "i";
+            break;
+        case SPVC_BASETYPE_UINT32:
+            prefix = "u";
+            break;
+        default:
+            break;
     }
     std::string dim;
     switch (spvc_type_get_image_dimension(t)) {
-    case SpvDim1D: dim = "1D"; break;
-    case SpvDim2D: dim = "2D"; break;
-    case SpvDim3D: dim = "3D"; break;
-    case SpvDimCube: dim = "Cube"; break;
-    case SpvDimRect: dim = "2DRect"; break;
-    case SpvDimBuffer: dim = "Buffer"; break;
-    case SpvDimSubpassData: return prefix + "subpassInput" + (spvc_type_get_image_multisampled(t) ? "MS" : "");
-    default: dim = "?"; break;
+        case SpvDim1D:
+            dim = "1D";
+            break;
+        case SpvDim2D:
+            dim = "2D";
+            break;
+        case SpvDim3D:
+            dim = "3D";
+            break;
+        case SpvDimCube:
+            dim = "Cube";
+            break;
+        case SpvDimRect:
+            dim = "2DRect";
+            break;
+        case SpvDimBuffer:
+            dim = "Buffer";
+            break;
+        case SpvDimSubpassData:
+            return prefix + "subpassInput" + (spvc_type_get_image_multisampled(t) ? "MS" : "");
+        default:
+            dim = "?";
+            break;
     }
     std::string name = prefix + word + dim + (spvc_type_get_image_multisampled(t) ? "MS" : "") +
                        (spvc_type_get_image_arrayed(t) ? "Array" : "") +
@@ -244,8 +291,8 @@ Block Reflection::block(const spvc_reflected_resource& resource, bool usedOnly) 
             spvc_compiler_type_struct_member_array_stride(compiler_, t, i, &arrayStride);
         if (spvc_type_get_columns(type(memberType)) > 1)
             spvc_compiler_type_struct_member_matrix_stride(compiler_, t, i, &matrixStride);
-        bool rowMajor = spvc_compiler_has_member_decoration(compiler_, resource.base_type_id, i,
-                                                            SpvDecorationRowMajor);
+        bool rowMajor =
+            spvc_compiler_has_member_decoration(compiler_, resource.base_type_id, i, SpvDecorationRowMajor);
         member.layout = layoutOf(memberType) + " a" + std::to_string(arrayStride) + " m" +
                         std::to_string(matrixStride) + (rowMajor ? " r" : "");
         result.members.push_back(member);
@@ -304,7 +351,8 @@ Interface Reflection::reflect(bool usedOnly) {
             else if (kind != SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS)
                 d.type = imageType(resource.base_type_id);
             if (kind == SPVC_RESOURCE_TYPE_SUBPASS_INPUT)
-                d.inputIndex = spvc_compiler_get_decoration(compiler_, resource.id, SpvDecorationInputAttachmentIndex);
+                d.inputIndex =
+                    spvc_compiler_get_decoration(compiler_, resource.id, SpvDecorationInputAttachmentIndex);
         });
     each(SPVC_RESOURCE_TYPE_PUSH_CONSTANT,
          [&](const spvc_reflected_resource& resource) { result.pushConstants = block(resource, usedOnly); });
@@ -337,8 +385,8 @@ Interface Reflection::reflect(bool usedOnly) {
             if (ids[axis].id != 0)
                 result.localSize += "constant " + std::to_string(ids[axis].constant_id);
             else
-                result.localSize += std::to_string(
-                    spvc_compiler_get_execution_mode_argument_by_index(compiler_, SpvExecutionModeLocalSize, axis));
+                result.localSize += std::to_string(spvc_compiler_get_execution_mode_argument_by_index(
+                    compiler_, SpvExecutionModeLocalSize, axis));
         }
     }
     return result;
@@ -365,8 +413,9 @@ std::string blockChange(const std::string& where, const Block& built, const Bloc
                    ") starts where the shader its pipeline was made for has no member";
         if (same->layout != m.layout) {
             if (same->type != m.type)
-                return where + ": member " + m.name + " at byte " + std::to_string(m.offset) + " is " + m.type +
-                       "; the shader its pipeline was made for has " + same->name + ", " + same->type;
+                return where + ": member " + m.name + " at byte " + std::to_string(m.offset) + " is " +
+                       m.type + "; the shader its pipeline was made for has " + same->name + ", " +
+                       same->type;
             return where + ": member " + m.name + " (" + m.type + ") at byte " + std::to_string(m.offset) +
                    " has another layout (strides or majorness) than in the shader its pipeline was made for";
         }
@@ -386,8 +435,8 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
         if (b.kind != d.kind)
             return where + " is a " + d.kind + " now; the shader its pipeline was made for has a " + b.kind;
         if (b.type != d.type)
-            return where + " (" + d.name + ") is a " + d.type + " now; the shader its pipeline was made for has a " +
-                   b.type;
+            return where + " (" + d.name + ") is a " + d.type +
+                   " now; the shader its pipeline was made for has a " + b.type;
         if (d.kind == "input attachment" && b.inputIndex != d.inputIndex)
             return where + " (" + d.name + ") reads input attachment " + std::to_string(d.inputIndex) +
                    " now; the shader its pipeline was made for reads " + std::to_string(b.inputIndex);
@@ -397,7 +446,8 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
                    " now; the shader its pipeline was made for declares " +
                    (b.count == 0 ? std::string("a runtime array") : std::to_string(b.count));
         if (d.block && b.block)
-            if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block); !change.empty())
+            if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block);
+                !change.empty())
                 return change;
     }
     if (edited.pushConstants && !edited.pushConstants->used.empty()) {
@@ -423,8 +473,8 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
             return "it no longer writes output location " + std::to_string(location) + " (" + v.name + ", " +
                    v.type + ")";
         if (now->second.type != v.type)
-            return "output location " + std::to_string(location) + " (" + v.name + ") is " + now->second.type +
-                   " now; the shader its pipeline was made for writes " + v.type;
+            return "output location " + std::to_string(location) + " (" + v.name + ") is " +
+                   now->second.type + " now; the shader its pipeline was made for writes " + v.type;
     }
     for (const auto& [id, c] : edited.constants) {
         auto old = built.constants.find(id);

@@ -111,7 +111,8 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
 }
 
 VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
-    std::vector<uint32_t> code = shaderCode(name);  // the build's, compiled from a newer source, or a reload's
+    std::vector<uint32_t> code =
+        shaderCode(name);  // the build's, compiled from a newer source, or a reload's
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
         .codeSize = code.size() * sizeof(uint32_t),
@@ -154,9 +155,10 @@ ShaderReload pollShaderSources() {
     if (!gState.reloaded.empty()) {
         auto latency =
             std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
-        std::printf("shaders: reloaded %s (compiled in %.0f ms, pipelines made in %.0f ms; first frame with it "
-                    "%.0f ms after the edit)\n",
-                    gState.reloaded.c_str(), gState.compileMs, gState.pipelinesMs, latency.count());
+        std::printf(
+            "shaders: reloaded %s (compiled in %.0f ms, pipelines made in %.0f ms; first frame with it "
+            "%.0f ms after the edit)\n",
+            gState.reloaded.c_str(), gState.compileMs, gState.pipelinesMs, latency.count());
         std::fflush(stdout);
         gState.reloaded.clear();
     }
@@ -197,11 +199,13 @@ ShaderReload pollShaderSources() {
             continue;
         }
         entry->files = std::move(compilation.files);  // the times taken before each file was read
-        entry->error = compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
+        entry->error =
+            compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
         if (entry->error.empty())
             entry->pending = std::move(compilation.spirv);
         else
-            std::fprintf(stderr, "shaders: %s did not reload: %s", name->c_str(), withNewline(entry->error).c_str());
+            std::fprintf(stderr, "shaders: %s did not reload: %s", name->c_str(),
+                         withNewline(entry->error).c_str());
     }
     // Every shader must be good before any pipeline changes.
     collectErrors();

@@ -92,17 +92,20 @@ VkFormat chooseOffscreenFormat(const Target& target, const Device& device) {
     throw Failure("the device cannot render to an 8-bit sRGB colour image");
 }
 
-// Views of the images as `encodedFormat` (see Target::encodedViews), where that differs.
-void createEncodedViews(Target& target, const Device& device, bool mutableImages) {
+// Views of the images as `encodedFormat` (see Target::encodedViews), where that differs; named
+// after the images ("swapchain image 0 (UNORM view)").
+void createEncodedViews(Target& target, const Device& device, bool mutableImages,
+                        const std::string& imageName) {
     target.encodedFormat = mutableImages ? withoutSrgb(target.format) : target.format;
     if (target.encodedFormat == target.format) {
         target.encodedViews = target.views;
         return;
     }
-    for (VkImage image : target.images) {
+    for (size_t i = 0; i < target.images.size(); ++i) {
         target.encodedViews.push_back(
-            createImageView(device, image, target.encodedFormat, VK_IMAGE_ASPECT_COLOR_BIT));
-        nameObject(device.handle, target.encodedViews.back(), objectName(image) + " (UNORM view)");
+            createImageView(device, target.images[i], target.encodedFormat, VK_IMAGE_ASPECT_COLOR_BIT));
+        nameObject(device.handle, target.encodedViews.back(),
+                   imageName + " " + std::to_string(i) + " (UNORM view)");
     }
 }
 
@@ -188,7 +191,7 @@ void createSwapchain(Target& target, const Device& device) {
             createImageView(device, target.images[i], target.format, VK_IMAGE_ASPECT_COLOR_BIT));
         nameObject(device.handle, target.views.back(), name);
     }
-    createEncodedViews(target, device, mutableImages);
+    createEncodedViews(target, device, mutableImages, "swapchain image");
     target.presentedSinceRetiring.assign(target.images.size(), false);
 }
 
@@ -220,7 +223,7 @@ void createOffscreen(Target& target, const Device& device) {
         target.images.push_back(target.offscreen.back().handle);
         target.views.push_back(target.offscreen.back().view);
     }
-    createEncodedViews(target, device, mutableImages);
+    createEncodedViews(target, device, mutableImages, "offscreen target");
     target.nextOffscreen = 0;
 }
 

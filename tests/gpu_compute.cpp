@@ -24,7 +24,7 @@ void runCompute(const common::Device& device, const std::filesystem::path& spirv
         device, 1,
         {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform}},
         "compute");
-    VkDescriptorSet set = common::allocateDescriptorSet(device, pool, setLayout);
+    VkDescriptorSet set = common::allocateDescriptorSet(device, pool, setLayout, "gpu compute");
     for (uint32_t i = 0; i < bindings.size(); ++i)
         common::writeBufferDescriptor(device, set, i, bindings[i].type, bindings[i].buffer, VK_WHOLE_SIZE);
 

@@ -225,8 +225,18 @@ status=$?
 [ $status = 0 ] || fail "the chapter exited with $status"
 grep "^shaders: reloaded" "$work/stdout" | tail -1
 
+# With the object-names layer (tests/names.cmake): every object the run made, the reloads'
+# pipelines included, has a name.
+if [ -n "${VKBOOK_NAMES_REPORT:-}" ]; then
+    [ -s "$VKBOOK_NAMES_REPORT" ] || fail "no names report (was the layer loaded?)"
+    if grep -q '^unnamed ' "$VKBOOK_NAMES_REPORT"; then
+        fail "objects without a name: $(grep '^unnamed ' "$VKBOOK_NAMES_REPORT" | sort | uniq -c | head -5)"
+    fi
+    echo "names: $(grep -c '^named pipeline ' "$VKBOOK_NAMES_REPORT") pipelines named"
+fi
+
 # What the last frame shows.
-unset VKBOOK_FAULT VKBOOK_FAULT_LAYER  # the references are rendered without the layer
+unset VKBOOK_FAULT VKBOOK_FAULT_LAYER VKBOOK_NAMES_LAYER  # the references are rendered without the layers
 reference "$work/original" "$work/original.png"
 case $scenario in
 edit | fix | fault | save-* | during-compile)

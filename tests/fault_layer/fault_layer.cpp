@@ -445,8 +445,9 @@ VKAPI_ATTR VkResult VKAPI_CALL createBuffer(VkDevice device, const VkBufferCreat
 // A pipeline the driver could not make: every handle VK_NULL_HANDLE, as the specification asks
 // of a failed creation.
 template <typename Info, typename Next>
-VkResult createPipelines(const char* call, VkDevice device, VkPipelineCache cache, uint32_t count, const Info* infos,
-                         const VkAllocationCallbacks* allocator, VkPipeline* pipelines, Next next) {
+VkResult createPipelines(const char* call, VkDevice device, VkPipelineCache cache, uint32_t count,
+                         const Info* infos, const VkAllocationCallbacks* allocator, VkPipeline* pipelines,
+                         Next next) {
     {
         std::lock_guard lock(gLock);
         if (failsNow(call)) {
@@ -459,14 +460,16 @@ VkResult createPipelines(const char* call, VkDevice device, VkPipelineCache cach
 
 VKAPI_ATTR VkResult VKAPI_CALL createGraphicsPipelines(VkDevice device, VkPipelineCache cache, uint32_t count,
                                                        const VkGraphicsPipelineCreateInfo* infos,
-                                                       const VkAllocationCallbacks* allocator, VkPipeline* pipelines) {
+                                                       const VkAllocationCallbacks* allocator,
+                                                       VkPipeline* pipelines) {
     return createPipelines("vkCreateGraphicsPipelines", device, cache, count, infos, allocator, pipelines,
                            deviceData(device).next.createGraphicsPipelines);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL createComputePipelines(VkDevice device, VkPipelineCache cache, uint32_t count,
                                                       const VkComputePipelineCreateInfo* infos,
-                                                      const VkAllocationCallbacks* allocator, VkPipeline* pipelines) {
+                                                      const VkAllocationCallbacks* allocator,
+                                                      VkPipeline* pipelines) {
     return createPipelines("vkCreateComputePipelines", device, cache, count, infos, allocator, pipelines,
                            deviceData(device).next.createComputePipelines);
 }
