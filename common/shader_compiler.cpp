@@ -25,13 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct State {
+struct Sources {
     fs::path sourceDir;       // empty: no sources this run
     fs::path buildSourceDir;  // the build's shaders/ (<bin>/shaders/source-dir.txt), where its depfiles point
     std::string why;          // why there are none, for shaderSourcesSummary
     bool explicitDir = false;
 };
-State gState;
+Sources gSources;
 
 #if defined(VKBOOK_RUNTIME_SHADERS)
 
@@ -127,55 +127,55 @@ bool runtimeShaderCompilation() {
 }
 
 void configureShaderSources(const fs::path& shaderDir) {
-    gState = {};
+    gSources = {};
     if (!shaderDir.empty() && !runtimeShaderCompilation())
         throw InputError(
             "--shader-dir: this build has no runtime shader compilation (built without shaderc)");
     if (!shaderDir.empty() && !fs::is_directory(shaderDir))
         throw InputError("--shader-dir '" + utf8(shaderDir) + "' is not a directory");
     if (!runtimeShaderCompilation()) {
-        gState.why = "this build has no runtime compilation (built without shaderc)";
+        gSources.why = "this build has no runtime compilation (built without shaderc)";
         return;
     }
     fs::path recorded = executableDir() / "shaders" / "source-dir.txt";
     std::ifstream file(recorded);
     std::string line;
-    if (file && std::getline(file, line)) gState.buildSourceDir = fs::u8path(line);
+    if (file && std::getline(file, line)) gSources.buildSourceDir = fs::u8path(line);
     if (!shaderDir.empty()) {
-        gState.sourceDir = fs::absolute(shaderDir);
-        gState.explicitDir = true;
+        gSources.sourceDir = fs::absolute(shaderDir);
+        gSources.explicitDir = true;
     } else if (line.empty()) {
-        gState.why = "no " + utf8(recorded);
-    } else if (!fs::is_directory(gState.buildSourceDir)) {
-        gState.why = "the build's sources (" + line + ") are not there";
+        gSources.why = "no " + utf8(recorded);
+    } else if (!fs::is_directory(gSources.buildSourceDir)) {
+        gSources.why = "the build's sources (" + line + ") are not there";
     } else {
-        gState.sourceDir = gState.buildSourceDir;
+        gSources.sourceDir = gSources.buildSourceDir;
     }
 }
 
 bool shaderSourcesFound() {
-    return !gState.sourceDir.empty();
+    return !gSources.sourceDir.empty();
 }
 
 std::string shaderSourcesSummary() {
-    if (!gState.sourceDir.empty())
-        return "shaders: compiled at run time from " + utf8(gState.sourceDir) +
+    if (!gSources.sourceDir.empty())
+        return "shaders: compiled at run time from " + utf8(gSources.sourceDir) +
                " when newer than the build's SPIR-V, reloaded when edited";
-    return "shaders: the build's SPIR-V (" + gState.why + ")";
+    return "shaders: the build's SPIR-V (" + gSources.why + ")";
 }
 
 ShaderSource findShaderSource(std::string_view name) {
     ShaderSource source;
     fs::path compiled = executableDir() / "shaders" / fs::u8path(std::string(name));
     source.spv = fs::path(compiled).concat(".spv");
-    if (gState.sourceDir.empty()) return source;
+    if (gSources.sourceDir.empty()) return source;
     std::ifstream manifest(fs::path(compiled).concat(".source"));
     std::string relative, define;
     if (!manifest || !std::getline(manifest, relative) || relative.empty()) return source;
     while (std::getline(manifest, define))
         if (!define.empty()) source.defines.push_back(define);
-    source.glsl = gState.sourceDir / fs::u8path(relative);
-    source.includeDir = gState.sourceDir / "include";
+    source.glsl = gSources.sourceDir / fs::u8path(relative);
+    source.includeDir = gSources.sourceDir / "include";
     source.found = fs::is_regular_file(source.glsl);
     return source;
 }
@@ -249,14 +249,14 @@ std::vector<fs::path> shaderFiles(const ShaderSource& source) {
     std::ifstream depfile(fs::path(source.spv).concat(".d"), std::ios::binary);
     std::string text((std::istreambuf_iterator<char>(depfile)), std::istreambuf_iterator<char>());
     size_t colon = text.find(": ");
-    std::string buildDir = utf8(gState.buildSourceDir);
+    std::string buildDir = utf8(gSources.buildSourceDir);
     std::vector<fs::path> files;
     if (colon != std::string::npos && !buildDir.empty()) {
         std::string word;
         auto add = [&] {
             if (word.empty() || word == "\\") return word.clear();
             if (word.starts_with(buildDir + "/"))
-                files.push_back(gState.sourceDir / fs::u8path(word.substr(buildDir.size() + 1)));
+                files.push_back(gSources.sourceDir / fs::u8path(word.substr(buildDir.size() + 1)));
             else
                 files.push_back(fs::u8path(word));
             word.clear();

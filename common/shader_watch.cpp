@@ -28,7 +28,7 @@ struct Entry {
     bool reloaded = false;                         // spirv came from a reload
 };
 
-struct State {
+struct Watch {
     std::map<std::string, Entry, std::less<>> shaders;
     std::chrono::steady_clock::time_point lastPoll{};
     std::string buildError;   // why the last reload's pipelines could not be made
@@ -40,7 +40,7 @@ struct State {
     std::chrono::steady_clock::time_point compiled{};
     double compileMs = 0.0, pipelinesMs = 0.0;
 };
-State gState;
+Watch gWatch;
 
 std::vector<ShaderFile> withTimes(const std::vector<fs::path>& files) {
     std::vector<ShaderFile> result;
@@ -62,16 +62,16 @@ std::string checkInterface(const Entry& entry, const std::vector<uint32_t>& spir
 }
 
 void collectErrors() {
-    gState.reloadError.clear();
-    for (const auto& [name, entry] : gState.shaders)
-        if (!entry.error.empty()) gState.reloadError += withNewline(entry.error);
-    if (!gState.buildError.empty()) gState.reloadError += withNewline(gState.buildError);
+    gWatch.reloadError.clear();
+    for (const auto& [name, entry] : gWatch.shaders)
+        if (!entry.error.empty()) gWatch.reloadError += withNewline(entry.error);
+    if (!gWatch.buildError.empty()) gWatch.reloadError += withNewline(gWatch.buildError);
 }
 
 }  // namespace
 
 std::vector<uint32_t> shaderCode(std::string_view name) {
-    if (auto known = gState.shaders.find(name); known != gState.shaders.end()) {
+    if (auto known = gWatch.shaders.find(name); known != gWatch.shaders.end()) {
         if (known->second.pending) return *known->second.pending;
         if (!known->second.spirv.empty()) return known->second.spirv;
     }
@@ -82,7 +82,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     if (!entry.source.found) {
         if (!built) throw Failure("missing shader '" + utf8(entry.source.spv) + "' (is the build complete?)");
         entry.spirv = entry.reference;
-        return gState.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
+        return gWatch.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
     }
     // The book's rule, followed through the included files: compile when a file is newer than
     // the build's SPIR-V. shaderFiles tells which files those are; their times are taken now,
@@ -107,7 +107,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     } else {
         entry.spirv = entry.reference;
     }
-    return gState.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
+    return gWatch.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
 }
 
 VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
@@ -125,18 +125,18 @@ VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
 }
 
 void watchShader(std::string_view name) {
-    if (!shaderSourcesFound() || gState.shaders.count(name)) return;
+    if (!shaderSourcesFound() || gWatch.shaders.count(name)) return;
     Entry entry;
     entry.source = findShaderSource(name);
     if (!entry.source.found) return;
     if (fs::exists(entry.source.spv)) entry.reference = readSpirv(entry.source.spv);
     entry.files = withTimes(shaderFiles(entry.source));
-    gState.shaders.emplace(std::string(name), std::move(entry));
+    gWatch.shaders.emplace(std::string(name), std::move(entry));
 }
 
 std::optional<std::vector<uint32_t>> reloadedShaderCode(std::string_view name) {
-    auto known = gState.shaders.find(name);
-    if (known == gState.shaders.end()) return std::nullopt;
+    auto known = gWatch.shaders.find(name);
+    if (known == gWatch.shaders.end()) return std::nullopt;
     if (known->second.pending) return known->second.pending;
     if (known->second.reloaded) return known->second.spirv;
     return std::nullopt;
@@ -152,25 +152,25 @@ ShaderReload pollShaderSources() {
     if (!shaderSourcesFound()) return {};
     // The last reload's report, now that a frame has been recorded and submitted with it: how long
     // from the edit (the newest changed file's modification time) to that frame.
-    if (!gState.reloaded.empty()) {
+    if (!gWatch.reloaded.empty()) {
         auto latency =
-            std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gState.editTime);
+            std::chrono::duration<double, std::milli>(fs::file_time_type::clock::now() - gWatch.editTime);
         std::printf(
             "shaders: reloaded %s (compiled in %.0f ms, pipelines made in %.0f ms; first frame with it "
             "%.0f ms after the edit)\n",
-            gState.reloaded.c_str(), gState.compileMs, gState.pipelinesMs, latency.count());
+            gWatch.reloaded.c_str(), gWatch.compileMs, gWatch.pipelinesMs, latency.count());
         std::fflush(stdout);
-        gState.reloaded.clear();
+        gWatch.reloaded.clear();
     }
     auto now = std::chrono::steady_clock::now();
-    if (now - gState.lastPoll < std::chrono::milliseconds(250)) return {};
-    gState.lastPoll = now;
+    if (now - gWatch.lastPoll < std::chrono::milliseconds(250)) return {};
+    gWatch.lastPoll = now;
 
     // Which shaders' files changed since they were read. While the source itself is missing (an
     // editor replacing it), the shader is looked at again on the next poll.
     std::vector<std::pair<const std::string*, Entry*>> changed;
     fs::file_time_type editTime = fs::file_time_type::min();
-    for (auto& [name, entry] : gState.shaders) {
+    for (auto& [name, entry] : gWatch.shaders) {
         if (!entry.source.found) continue;
         bool edited = false;
         for (const ShaderFile& file : entry.files) {
@@ -184,7 +184,7 @@ ShaderReload pollShaderSources() {
     }
     if (changed.empty()) return {};
 
-    gState.buildError.clear();
+    gWatch.buildError.clear();
     for (auto& [name, entry] : changed) {
         ShaderCompilation compilation;
         try {
@@ -209,23 +209,23 @@ ShaderReload pollShaderSources() {
     }
     // Every shader must be good before any pipeline changes.
     collectErrors();
-    if (!gState.reloadError.empty()) {
+    if (!gWatch.reloadError.empty()) {
         std::fflush(stderr);
         return {};
     }
     ShaderReload reload;
-    for (auto& [name, entry] : gState.shaders)
+    for (auto& [name, entry] : gWatch.shaders)
         if (entry.pending) reload.shaders.push_back(name);
     if (reload.shaders.empty()) return {};
-    gState.editTime = editTime;
-    gState.compiled = std::chrono::steady_clock::now();
-    gState.compileMs = std::chrono::duration<double, std::milli>(gState.compiled - now).count();
+    gWatch.editTime = editTime;
+    gWatch.compiled = std::chrono::steady_clock::now();
+    gWatch.compileMs = std::chrono::duration<double, std::milli>(gWatch.compiled - now).count();
     return reload;
 }
 
 void finishShaderReload(const std::string& error) {
     std::string names;
-    for (auto& [name, entry] : gState.shaders)
+    for (auto& [name, entry] : gWatch.shaders)
         if (entry.pending) {
             if (error.empty()) {
                 entry.spirv = std::move(*entry.pending);
@@ -235,19 +235,19 @@ void finishShaderReload(const std::string& error) {
             names += (names.empty() ? "" : ", ") + name;
         }
     if (!error.empty()) {
-        gState.buildError = "shaders: " + names + " did not reload: " + error;
-        std::fprintf(stderr, "%s", withNewline(gState.buildError).c_str());
+        gWatch.buildError = "shaders: " + names + " did not reload: " + error;
+        std::fprintf(stderr, "%s", withNewline(gWatch.buildError).c_str());
         std::fflush(stderr);
         collectErrors();
         return;
     }
-    gState.reloaded = names;
-    gState.pipelinesMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - gState.compiled).count();
+    gWatch.reloaded = names;
+    gWatch.pipelinesMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - gWatch.compiled).count();
 }
 
 const std::string& shaderReloadError() {
-    return gState.reloadError;
+    return gWatch.reloadError;
 }
 
 }  // namespace common
