@@ -55,21 +55,19 @@ shaderc_include_result* resolveInclude(void* userData, const char* requested, in
     if (type == shaderc_include_type_relative)
         candidates.push_back(fs::path(requesting).parent_path() / fs::u8path(requested));
     candidates.push_back(context->includeDir / fs::u8path(requested));
+    // Every place looked at is watched: a file that appears in an earlier one is used from then on.
     for (const fs::path& candidate : candidates) {
         std::optional<fs::file_time_type> time = modificationTime(candidate);  // before reading
+        context->files->push_back({candidate, time});
         std::ifstream file(candidate, std::ios::binary);
         if (!file) continue;
         std::ostringstream text;
         text << file.rdbuf();
         include->name = utf8(candidate);
         include->content = text.str();
-        context->files->push_back({candidate, time});
         break;
     }
-    if (include->name.empty()) {
-        include->content = std::string("cannot find include file '") + requested + "'";
-        context->files->push_back({candidates.front(), std::nullopt});  // watched: it may appear
-    }
+    if (include->name.empty()) include->content = std::string("cannot find include file '") + requested + "'";
     include->result = {include->name.c_str(), include->name.size(), include->content.c_str(),
                        include->content.size(), include};
     return &include->result;

@@ -52,7 +52,9 @@ struct Descriptor {
     std::string name;
     std::string type;    // image type ("sampler2D", "image2D rgba16f"), empty for blocks and samplers
     unsigned count = 1;  // array length; 0: runtime-sized
+    std::string countConstant;  // the array is sized by a specialization constant: which
     unsigned inputIndex = 0;
+    bool writable = false;  // a storage block or image without readonly
     std::optional<Block> block;
 };
 
@@ -61,7 +63,9 @@ struct Variable {
 };
 
 struct Interface {
-    std::map<std::pair<unsigned, unsigned>, Descriptor> descriptors;
+    // Every variable at each (set, binding): GLSL lets two of them share one.
+    std::map<std::pair<unsigned, unsigned>, std::vector<Descriptor>> descriptors;
+    std::vector<std::string> capabilities;  // OpCapability, sorted
     std::optional<Block> pushConstants;
     std::map<unsigned, Variable> inputs, outputs;
     std::map<unsigned, Variable> constants;  // constant_id -> name, type
@@ -248,9 +252,8 @@ std::string Reflection::imageType(spvc_type_id id) const {
 // array and matrix stride and majorness, recursively.
 std::string Reflection::layoutOf(spvc_type_id id) const {
     spvc_type t = type(id);
-    std::string layout = typeName(id);
-    if (spvc_type_get_basetype(t) != SPVC_BASETYPE_STRUCT) return layout;
-    layout += " {";
+    if (spvc_type_get_basetype(t) != SPVC_BASETYPE_STRUCT) return typeName(id);
+    std::string layout = "struct" + arraySuffix(t) + " {";  // its name is not part of its layout
     for (unsigned i = 0; i < spvc_type_get_num_member_types(t); ++i) {
         unsigned offset = 0, arrayStride = 0, matrixStride = 0;
         spvc_compiler_type_struct_member_offset(compiler_, t, i, &offset);
@@ -339,13 +342,16 @@ Interface Reflection::reflect(bool usedOnly) {
         each(kind, [&](const spvc_reflected_resource& resource) {
             unsigned set = spvc_compiler_get_decoration(compiler_, resource.id, SpvDecorationDescriptorSet);
             unsigned binding = spvc_compiler_get_decoration(compiler_, resource.id, SpvDecorationBinding);
-            Descriptor& d = result.descriptors[{set, binding}];
+            Descriptor d;
             d.kind = kindName;
             d.name = resource.name;
             spvc_type variableType = type(resource.type_id);
-            d.count = 1;
-            for (unsigned dim = 0; dim < spvc_type_get_num_array_dimensions(variableType); ++dim)
-                d.count *= spvc_type_get_array_dimension(variableType, dim);
+            for (unsigned dim = 0; dim < spvc_type_get_num_array_dimensions(variableType); ++dim) {
+                if (!spvc_type_array_dimension_is_literal(variableType, dim))
+                    d.countConstant = name(spvc_type_get_array_dimension(variableType, dim));
+                else
+                    d.count *= spvc_type_get_array_dimension(variableType, dim);
+            }
             if (kind == SPVC_RESOURCE_TYPE_UNIFORM_BUFFER || kind == SPVC_RESOURCE_TYPE_STORAGE_BUFFER)
                 d.block = block(resource, usedOnly);
             else if (kind != SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS)
@@ -353,6 +359,20 @@ Interface Reflection::reflect(bool usedOnly) {
             if (kind == SPVC_RESOURCE_TYPE_SUBPASS_INPUT)
                 d.inputIndex =
                     spvc_compiler_get_decoration(compiler_, resource.id, SpvDecorationInputAttachmentIndex);
+            if (kind == SPVC_RESOURCE_TYPE_STORAGE_IMAGE)
+                d.writable = !spvc_compiler_has_decoration(compiler_, resource.id, SpvDecorationNonWritable);
+            if (kind == SPVC_RESOURCE_TYPE_STORAGE_BUFFER) {
+                // readonly on the block, or on every member.
+                bool readonly = spvc_compiler_has_decoration(compiler_, resource.id, SpvDecorationNonWritable);
+                if (!readonly) {
+                    readonly = true;
+                    for (unsigned i = 0; i < spvc_type_get_num_member_types(type(resource.base_type_id)); ++i)
+                        readonly = readonly && spvc_compiler_has_member_decoration(
+                                                   compiler_, resource.base_type_id, i, SpvDecorationNonWritable);
+                }
+                d.writable = !readonly;
+            }
+            result.descriptors[{set, binding}].push_back(d);
         });
     each(SPVC_RESOURCE_TYPE_PUSH_CONSTANT,
          [&](const spvc_reflected_resource& resource) { result.pushConstants = block(resource, usedOnly); });
@@ -392,6 +412,29 @@ Interface Reflection::reflect(bool usedOnly) {
     return result;
 }
 
+// The OpCapability instructions of a module, by name where we know it (SPIR-V's capability numbers).
+std::vector<std::string> capabilities(const std::vector<uint32_t>& words) {
+    static const std::map<uint32_t, const char*> kNames = {
+        {0, "Matrix"}, {1, "Shader"}, {2, "Geometry"}, {3, "Tessellation"}, {9, "Float16"}, {10, "Float64"},
+        {11, "Int64"}, {12, "Int64Atomics"}, {22, "Int16"}, {32, "ImageGatherExtended"},
+        {35, "SampleRateShading"}, {39, "Int8"}, {40, "InputAttachment"}, {49, "StorageImageExtendedFormats"},
+        {43, "Sampled1D"}, {44, "Image1D"}, {46, "SampledBuffer"}, {47, "ImageBuffer"},
+        {50, "ImageQuery"}, {51, "DerivativeControl"}, {56, "StorageImageReadWithoutFormat"},
+        {57, "StorageImageWriteWithoutFormat"}, {61, "GroupNonUniform"}};
+    std::vector<std::string> result;
+    for (size_t at = 5; at < words.size();) {
+        uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
+        if (count == 0) break;
+        if (opcode == 17 && at + 1 < words.size()) {  // OpCapability
+            auto known = kNames.find(words[at + 1]);
+            result.push_back(known != kNames.end() ? known->second : "number " + std::to_string(words[at + 1]));
+        }
+        at += count;
+    }
+    std::sort(result.begin(), result.end());
+    return result;
+}
+
 std::string range(const Member& m) {
     if (m.size == 0) return "from byte " + std::to_string(m.offset);
     return "bytes " + std::to_string(m.offset) + ".." + std::to_string(m.offset + m.size - 1);
@@ -406,7 +449,7 @@ std::string blockChange(const std::string& where, const Block& built, const Bloc
                                  [&](const Member& b) { return b.offset == m.offset; });
         bool runtimeArrayThere = same != built.members.end() && same->size == 0;
         if (past && !runtimeArrayThere)
-            return where + ": member " + m.name + " (" + m.type + ", " + range(m) + ") reads past the " +
+            return where + ": member " + m.name + " (" + m.type + ", " + range(m) + ") lies past the " +
                    std::to_string(built.size) + " bytes the shader its pipeline was made for declares";
         if (same == built.members.end())
             return where + ": member " + m.name + " (" + m.type + ", " + range(m) +
@@ -423,32 +466,69 @@ std::string blockChange(const std::string& where, const Block& built, const Bloc
     return {};
 }
 
+// "a sampler2D", "an input attachment".
+std::string withArticle(const std::string& noun) {
+    return (noun.find_first_of("aeio") == 0 ? "an " : "a ") + noun;  // "a uniform block"
+}
+
 std::string interfaceChange(const Interface& built, const Interface& edited) {
-    for (const auto& [slot, d] : edited.descriptors) {
+    // A capability the build's shader has not is refused unless every Vulkan 1.1 device has it
+    // without a feature to enable (the rest need features this program does not turn on).
+    static const std::vector<std::string> kAlways = {"DerivativeControl", "Image1D", "ImageBuffer", "ImageQuery",
+                                                     "InputAttachment", "Matrix", "Sampled1D", "SampledBuffer",
+                                                     "Shader"};
+    for (const std::string& capability : edited.capabilities)
+        if (!std::binary_search(built.capabilities.begin(), built.capabilities.end(), capability) &&
+            std::find(kAlways.begin(), kAlways.end(), capability) == kAlways.end())
+            return "it needs the " + capability +
+                   " capability, which the shader its pipeline was made for does not (the device may not "
+                   "have the feature, and this program does not enable it)";
+    for (const auto& [slot, variables] : edited.descriptors) {
         std::string where = "set " + std::to_string(slot.first) + " binding " + std::to_string(slot.second);
         auto old = built.descriptors.find(slot);
-        std::string what = d.kind + " " + (d.block ? d.block->name : d.name);
-        if (old == built.descriptors.end())
-            return "it uses " + where + " (" + what +
-                   "), which the shader its pipeline was made for does not declare";
-        const Descriptor& b = old->second;
-        if (b.kind != d.kind)
-            return where + " is a " + d.kind + " now; the shader its pipeline was made for has a " + b.kind;
-        if (b.type != d.type)
-            return where + " (" + d.name + ") is a " + d.type +
-                   " now; the shader its pipeline was made for has a " + b.type;
-        if (d.kind == "input attachment" && b.inputIndex != d.inputIndex)
-            return where + " (" + d.name + ") reads input attachment " + std::to_string(d.inputIndex) +
-                   " now; the shader its pipeline was made for reads " + std::to_string(b.inputIndex);
-        if ((d.count == 0) != (b.count == 0) || d.count > b.count)
-            return where + " (" + d.name + ") is an array of " +
-                   (d.count == 0 ? std::string("unknown length") : std::to_string(d.count)) +
-                   " now; the shader its pipeline was made for declares " +
-                   (b.count == 0 ? std::string("a runtime array") : std::to_string(b.count));
-        if (d.block && b.block)
-            if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block);
-                !change.empty())
-                return change;
+        for (const Descriptor& d : variables) {
+            std::string what = d.kind + " " + (d.block ? d.block->name : d.name);
+            if (old == built.descriptors.end())
+                return "it uses " + where + " (" + what +
+                       "), which the shader its pipeline was made for does not declare";
+            // The build's variable of the same kind and type at that slot (GLSL allows several).
+            const std::vector<Descriptor>& candidates = old->second;
+            auto same = std::find_if(candidates.begin(), candidates.end(), [&](const Descriptor& b) {
+                return b.kind == d.kind && b.type == d.type;
+            });
+            if (same == candidates.end()) {
+                const Descriptor& b = candidates.front();
+                std::string theirs = b.type.empty() ? b.kind : b.kind + " (" + b.type + ")";
+                std::string ours = d.type.empty() ? d.kind : d.kind + " (" + d.type + ")";
+                if (b.kind == d.kind)
+                    return where + " (" + d.name + ") is " + withArticle(d.type) +
+                           " now; the shader its pipeline was made for has " + withArticle(b.type);
+                return where + " (" + d.name + ") is " + withArticle(ours) +
+                       " now; the shader its pipeline was made for has " + withArticle(theirs);
+            }
+            const Descriptor& b = *same;
+            if (d.kind == "input attachment" && b.inputIndex != d.inputIndex)
+                return where + " (" + d.name + ") reads input attachment " + std::to_string(d.inputIndex) +
+                       " now; the shader its pipeline was made for reads " + std::to_string(b.inputIndex);
+            if (!d.countConstant.empty() || !b.countConstant.empty()) {
+                if (d.countConstant != b.countConstant || d.count != b.count)
+                    return where + " (" + d.name + ") is an array sized by " +
+                           (d.countConstant.empty() ? "a number" : "specialization constant " + d.countConstant) +
+                           " now; the shader its pipeline was made for sizes it by " +
+                           (b.countConstant.empty() ? "a number" : "specialization constant " + b.countConstant);
+            } else if ((d.count == 0) != (b.count == 0) || d.count > b.count) {
+                return where + " (" + d.name + ") is an array of " +
+                       (d.count == 0 ? std::string("unknown length") : std::to_string(d.count)) +
+                       " now; the shader its pipeline was made for declares " +
+                       (b.count == 0 ? std::string("a runtime array") : std::to_string(b.count));
+            }
+            if (d.writable && !b.writable)
+                return where + " (" + what +
+                       ") is written now; the shader its pipeline was made for only reads it (readonly)";
+            if (d.block && b.block)
+                if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block); !change.empty())
+                    return change;
+        }
     }
     if (edited.pushConstants && !edited.pushConstants->used.empty()) {
         if (!built.pushConstants)
@@ -476,9 +556,14 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
             return "output location " + std::to_string(location) + " (" + v.name + ") is " +
                    now->second.type + " now; the shader its pipeline was made for writes " + v.type;
     }
+    // The C++ sets a constant with the bytes of the build's type: a bool (VkBool32), int or uint
+    // read as any of the three means the same number; a float or a wider type does not.
+    auto kindOf = [](const std::string& type) {
+        return type == "bool" || type == "int" || type == "uint" ? std::string("32-bit integer") : type;
+    };
     for (const auto& [id, c] : edited.constants) {
         auto old = built.constants.find(id);
-        if (old != built.constants.end() && old->second.type != c.type)
+        if (old != built.constants.end() && kindOf(old->second.type) != kindOf(c.type))
             return "specialization constant " + std::to_string(id) + " (" + c.name + ") is " + c.type +
                    " now; the C++ sets it as " + old->second.type;
     }
@@ -491,7 +576,10 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
 
 std::string shaderInterfaceChange(const std::vector<uint32_t>& built, const std::vector<uint32_t>& edited) {
     Reflection before(built), after(edited);
-    return interfaceChange(before.reflect(false), after.reflect(true));
+    Interface b = before.reflect(false), e = after.reflect(true);
+    b.capabilities = capabilities(built);
+    e.capabilities = capabilities(edited);
+    return interfaceChange(b, e);
 }
 
 #else

@@ -26,10 +26,13 @@ struct Entry {
     std::optional<std::vector<uint32_t>> pending;  // compiled and checked, not yet every pipeline's
     std::string error;                             // why the last compile of it failed
     bool reloaded = false;                         // spirv came from a reload
+    bool retry = false;  // its reload's pipelines could not be made: compiled again with the next change
 };
 
 struct Watch {
     std::map<std::string, Entry, std::less<>> shaders;
+    bool running = false;   // the frame loop has started polling
+    bool building = false;  // between a poll that returned a reload and finishShaderReload
     std::chrono::steady_clock::time_point lastPoll{};
     std::string buildError;   // why the last reload's pipelines could not be made
     std::string reloadError;  // every shader's error, then buildError
@@ -72,7 +75,7 @@ void collectErrors() {
 
 std::vector<uint32_t> shaderCode(std::string_view name) {
     if (auto known = gWatch.shaders.find(name); known != gWatch.shaders.end()) {
-        if (known->second.pending) return *known->second.pending;
+        if (gWatch.building && known->second.pending) return *known->second.pending;
         if (!known->second.spirv.empty()) return known->second.spirv;
     }
     Entry entry;
@@ -96,9 +99,23 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     }
     if (newer) {
         ShaderCompilation compilation = compileShader(entry.source);
-        if (!compilation.error.empty()) throw InputError(firstErrorLine(compilation.error));
-        if (std::string change = checkInterface(entry, compilation.spirv); !change.empty())
-            throw InputError(change);
+        std::string error = compilation.error.empty() ? checkInterface(entry, compilation.spirv)
+                                                       : firstErrorLine(compilation.error);
+        if (!error.empty() && gWatch.running && built) {
+            // Loaded for the first time while the chapter runs (the lab switching its G-buffer
+            // layout): the build's code keeps it going, and the error is shown like a reload's
+            // until the file is fixed.
+            std::fprintf(stderr, "shaders: %s uses the build's SPIR-V: %s\n", std::string(name).c_str(),
+                         error.c_str());
+            std::fflush(stderr);
+            entry.error = error;
+            entry.files = std::move(compilation.files);
+            entry.spirv = entry.reference;
+            auto& stored = gWatch.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second;
+            collectErrors();
+            return stored.spirv;
+        }
+        if (!error.empty()) throw InputError(error);
         std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
                     std::string(name).c_str());
         std::fflush(stdout);
@@ -137,7 +154,7 @@ void watchShader(std::string_view name) {
 std::optional<std::vector<uint32_t>> reloadedShaderCode(std::string_view name) {
     auto known = gWatch.shaders.find(name);
     if (known == gWatch.shaders.end()) return std::nullopt;
-    if (known->second.pending) return known->second.pending;
+    if (gWatch.building && known->second.pending) return known->second.pending;
     if (known->second.reloaded) return known->second.spirv;
     return std::nullopt;
 }
@@ -150,6 +167,7 @@ bool ShaderReload::changed(const std::vector<std::string>& names) const {
 
 ShaderReload pollShaderSources() {
     if (!shaderSourcesFound()) return {};
+    gWatch.running = true;
     // The last reload's report, now that a frame has been recorded and submitted with it: how long
     // from the edit (the newest changed file's modification time) to that frame.
     if (!gWatch.reloaded.empty()) {
@@ -183,12 +201,20 @@ ShaderReload pollShaderSources() {
         if (edited && modificationTime(entry.source.glsl)) changed.emplace_back(&name, &entry);
     }
     if (changed.empty()) return {};
+    // Shaders whose last reload could not be made go with any change (their files were seen).
+    for (auto& [name, entry] : gWatch.shaders)
+        if (entry.retry &&
+            std::none_of(changed.begin(), changed.end(), [&](const auto& c) { return c.second == &entry; }))
+            changed.emplace_back(&name, &entry);
+    if (editTime == fs::file_time_type::min()) editTime = fs::file_time_type::clock::now();  // a file went away
 
     gWatch.buildError.clear();
     for (auto& [name, entry] : changed) {
         ShaderCompilation compilation;
+        std::string checked;
         try {
             compilation = compileShader(entry->source);
+            if (compilation.error.empty()) checked = checkInterface(*entry, compilation.spirv);
         } catch (const std::exception& e) {
             // The file went away or changed size while it was read: its times stay as they were,
             // so the next poll compiles it again. Said once, not at every poll.
@@ -199,8 +225,8 @@ ShaderReload pollShaderSources() {
             continue;
         }
         entry->files = std::move(compilation.files);  // the times taken before each file was read
-        entry->error =
-            compilation.error.empty() ? checkInterface(*entry, compilation.spirv) : compilation.error;
+        entry->retry = false;
+        entry->error = compilation.error.empty() ? checked : compilation.error;
         if (entry->error.empty())
             entry->pending = std::move(compilation.spirv);
         else
@@ -217,6 +243,7 @@ ShaderReload pollShaderSources() {
     for (auto& [name, entry] : gWatch.shaders)
         if (entry.pending) reload.shaders.push_back(name);
     if (reload.shaders.empty()) return {};
+    gWatch.building = true;
     gWatch.editTime = editTime;
     gWatch.compiled = std::chrono::steady_clock::now();
     gWatch.compileMs = std::chrono::duration<double, std::milli>(gWatch.compiled - now).count();
@@ -224,12 +251,15 @@ ShaderReload pollShaderSources() {
 }
 
 void finishShaderReload(const std::string& error) {
+    gWatch.building = false;
     std::string names;
     for (auto& [name, entry] : gWatch.shaders)
         if (entry.pending) {
             if (error.empty()) {
                 entry.spirv = std::move(*entry.pending);
                 entry.reloaded = true;
+            } else {
+                entry.retry = true;  // its edit is not lost: compiled again with the next change
             }
             entry.pending.reset();
             names += (names.empty() ? "" : ", ") + name;

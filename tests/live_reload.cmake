@@ -76,7 +76,8 @@ live_test(live-reload.chapter-15.broken broken chapter-15/light.frag COMMAND $<T
 live_test(live-reload.chapter-15.fix fix chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-15.interface interface chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
 # Every rule of the interface check (tests/live_reload_rules.py): refused, the image unchanged.
-foreach(rule block-grown member-moved image-type array-size push-grown output-moved)
+foreach(rule block-grown member-moved image-type array-size push-grown output-moved capability readonly-lost
+             aliased-binding)
     live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()

@@ -21,7 +21,7 @@ RULES = {
     'block-grown': ([(INPUTS, '    ShaderSceneInfo scene;\n};', '    ShaderSceneInfo scene;\n    vec4 extraTint[64];\n};'),
                      ('chapter-15/light.frag', 'END', '    outColor += extraTint[63];')],
                     r'set 2 binding 0 \(uniform block Scene\): member extraTint \(vec4\[64\], bytes [0-9]+\.\.[0-9]+\) '
-                    r'reads past the [0-9]+ bytes the shader its pipeline was made for declares'),
+                    r'lies past the [0-9]+ bytes the shader its pipeline was made for declares'),
     'member-moved': ([(INPUTS, 'uniform Scene {\n', 'uniform Scene {\n    vec4 movedBy;\n')],
                      r'\(uniform block Scene\): member scene \(struct ShaderSceneInfo, bytes 16\.\.'),
     'image-type': ([(GBUFFER, 'uniform sampler2D depthAttachment;', 'uniform sampler2DArray depthAttachment;'),
@@ -34,14 +34,27 @@ RULES = {
                    r'for declares 1'),
     'push-grown': ([(INPUTS, '    LightView show;  // gpu_types.glsl\n', '    LightView show;\n    vec4 pushedTint;\n'),
                     ('chapter-15/light.frag', 'END', '    outColor += pushedTint;')],
-                   r'push constants \(LightViewBlock\): member pushedTint \(vec4, bytes [0-9]+\.\.[0-9]+\) reads past'),
+                   r'push constants \(LightViewBlock\): member pushedTint \(vec4, bytes [0-9]+\.\.[0-9]+\) lies past'),
     'output-moved': ([('chapter-15/light.frag', 'layout(location = 0) out vec4 outColor;',
                        'layout(location = 1) out vec4 outColor;')],
                      r'it no longer writes output location 0 \(outColor, vec4\)'),
+    # The C++ sets a VkBool32: read as an int it is the same number, as a float it is not.
     'constant-type': ([('chapter-15/scene_surface.glsl', 'layout(constant_id = 0) const bool ALPHA_TEST = true;',
-                        'layout(constant_id = 0) const int ALPHA_TEST_VALUE = 1;\n'
-                        'const bool ALPHA_TEST = ALPHA_TEST_VALUE != 0;')],
-                      r'specialization constant 0 \(ALPHA_TEST_VALUE\) is int now; the C\+\+ sets it as bool'),
+                        'layout(constant_id = 0) const float ALPHA_TEST_VALUE = 1.0;\n'
+                        'const bool ALPHA_TEST = true;')],
+                      r'specialization constant 0 \(ALPHA_TEST_VALUE\) is float now; the C\+\+ sets it as bool'),
+    'capability': ([('chapter-15/light.frag', 'END', '    outColor.r += float(double(outColor.g));')],
+                   r'it needs the Float64 capability, which the shader its pipeline was made for does not'),
+    'readonly-lost': ([(INPUTS, 'readonly buffer Lights', 'buffer Lights'),
+                       ('chapter-15/light.frag', 'END', '    lights[0].intensity *= 1.0;')],
+                      r'set 1 binding 0 \(storage block Lights\) is written now; the shader its pipeline was made '
+                      r'for only reads it'),
+    'aliased-binding': ([('chapter-15/light.frag', 'layout(location = 0) out vec4 outColor;',
+                          'layout(set = 1, binding = 0) uniform LightsAsUniform { vec4 firstLight; } lightsAsUniform;\n'
+                          'layout(location = 0) out vec4 outColor;'),
+                         ('chapter-15/light.frag', 'END', '    outColor += lightsAsUniform.firstLight * 0.0;')],
+                        r'set 1 binding 0 \([A-Za-z]+\) is a uniform block now; the shader its pipeline was made for '
+                        r'has a storage block'),
     'local-size': ([('chapter-15-lab/light.comp', 'local_size_x = 8, local_size_y = 8',
                      'local_size_x = 4, local_size_y = 4')],
                    r'local size is 4 x 4 x 1 now; the dispatch is sized for 8 x 8 x 1'),
