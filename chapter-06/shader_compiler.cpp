@@ -110,9 +110,9 @@ std::vector<uint32_t> compileShader(const common::ShaderSource& source) {
 
 //> compile-if-changed
 std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
-    // While the chapter runs, an edit is compiled and checked once, by live reload; its pipeline
-    // is made from that code, not from the file again.
-    if (std::optional<std::vector<uint32_t>> reloaded = common::reloadedShaderCode(name)) return *reloaded;
+    // Once compiled, or compiled and checked by live reload after an edit, a shader's code is
+    // kept: a pipeline made again uses it, never the file again.
+    if (std::optional<std::vector<uint32_t>> kept = common::watchedShaderCode(name)) return *kept;
     common::ShaderSource source = common::findShaderSource(name);
     if (!source.found) return buildSpirv(source);  // no sources here: the build's SPIR-V
 
@@ -123,14 +123,19 @@ std::vector<uint32_t> compileShaderIfChanged(std::string_view name) {
         changed =
             changed || std::filesystem::last_write_time(file) > std::filesystem::last_write_time(source.spv);
     common::watchShader(name);  // edits from now on reload the pipeline (main.cpp)
-    if (!changed) return buildSpirv(source);
-    std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
-                std::string(name).c_str());
-    std::fflush(stdout);
-    std::vector<uint32_t> spirv = ::compileShader(source);  // ours, not common::compileShader
-    // The pipeline is made for the build's shader: an edit that needs another layout is refused.
-    if (std::string change = common::checkShaderInterface(source, spirv); !change.empty())
-        throw common::InputError(change);
+    std::vector<uint32_t> spirv;
+    if (changed) {
+        std::printf("shaders: compiled %s (its source is newer than the build's SPIR-V)\n",
+                    std::string(name).c_str());
+        std::fflush(stdout);
+        spirv = ::compileShader(source);  // ours, not common::compileShader
+        // The pipeline is made for the build's shader: an edit that needs another layout is refused.
+        if (std::string change = common::checkShaderInterface(source, spirv); !change.empty())
+            throw common::InputError(change);
+    } else {
+        spirv = buildSpirv(source);
+    }
+    common::keepShaderCode(name, spirv);
     return spirv;
 }
 //< compile-if-changed

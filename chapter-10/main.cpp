@@ -128,7 +128,7 @@ void destroyPasses(Chapter& c) {
 // with the old ones; once the GPU is done with those frames, the new ones take their place (and
 // the lighting command buffers, which name the pipeline, are recorded again). If one cannot be
 // made, none does: the old pipelines keep drawing, and the error is shown.
-void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
+void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t frame) {
     VkPipelineCache cache = c.pipelineCache.handle;
     common::PipelineSwap swap;
     bool lighting = false;
@@ -140,8 +140,11 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(c.device, swap);
-    if (lighting) recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
+    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    if (lighting) {  // its command buffers, which name the pipeline, recorded again once not in use
+        VK_CHECK(vkDeviceWaitIdle(c.device.handle));
+        recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
+    }
     common::finishShaderReload();
 }
 //< passes
@@ -196,7 +199,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
-        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload, frame);
         uint32_t slot = frame % options.framesInFlight;
         Frame& inFlight = c.frames[slot];
         common::FrameSync& sync = inFlight.sync;
@@ -214,6 +217,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         }
 
         VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::releaseRetiredPipelines(c.device, frame, options.framesInFlight);
         common::collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {

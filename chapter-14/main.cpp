@@ -106,7 +106,7 @@ void destroyPasses(Chapter& c) {
 // the passes that use them are made from the new code while the frames in flight still draw
 // with the old ones; once the GPU is done with those frames, the new ones take their place. If
 // one cannot be made, none does: the old pipelines keep drawing, and the error is shown.
-void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
+void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t frame) {
     VkPipelineCache cache = c.pipelineCache.handle;
     common::PipelineSwap swap;
     try {
@@ -120,7 +120,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload) {
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(c.device, swap);
+    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
     common::finishShaderReload();
 }
 //< passes
@@ -221,7 +221,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
     common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(c.run, c.target, frame);
-        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
         ImDrawData* overlay = common::drawGui(
@@ -229,6 +229,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         handleInput(c, lastTime, viewKey, fxaaKey);
 
         VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::releaseRetiredPipelines(c.device, frame, options.framesInFlight);
         common::collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
         if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {

@@ -366,7 +366,7 @@ void run(const common::Options& options) {
     // Live reload (common/shader_watch.hpp): edited shaders compiled and checked; new pipelines for
     // the passes that use them, made while the frames in flight still draw with the old ones,
     // take their place once the GPU is done with those frames. If one cannot be made, none does.
-    auto reloadShaders = [&](const common::ShaderReload& reload) {
+    auto reloadShaders = [&](const common::ShaderReload& reload, uint32_t frame) {
         VkPipelineCache cache = pipelineCache.handle;
         common::PipelineSwap swap;
         try {
@@ -383,7 +383,7 @@ void run(const common::Options& options) {
             common::finishShaderReload(e.what());
             return;
         }
-        common::swapPipelines(device, swap);
+        common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
         common::finishShaderReload();
     };
     //< switch-renderer
@@ -394,7 +394,7 @@ void run(const common::Options& options) {
     float sceneSize = glm::length(gpuScene.boundsMax - gpuScene.boundsMin);
     for (uint32_t frame = 0;;) {
         bool lastFrame = common::beginFrame(run, target, frame);
-        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(reload);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(reload, frame);
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = frames[slot];
 
@@ -417,6 +417,7 @@ void run(const common::Options& options) {
         camera.yaw += lightOptions.orbitDegrees;  // --orbit: 0 unless asked
 
         VK_CHECK(vkWaitForFences(device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::releaseRetiredPipelines(device, frame, options.framesInFlight);
         common::collectGpuTimes(run, device, slot);
         uint32_t imageIndex = 0;
         if (!acquireLate) {  // the book's order: the image first

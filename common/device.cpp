@@ -8,6 +8,7 @@
 
 #include "common/check.hpp"
 #include "common/debug_names.hpp"
+#include "common/pipeline.hpp"
 
 namespace common {
 namespace {
@@ -320,6 +321,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
 }
 
 void destroyDevice(Device& device) {
+    releaseAllRetiredPipelines(device);  // replaced by a live reload in the last frames
     vkDestroyCommandPool(device.handle, device.oneTimePool, nullptr);
     vkDestroyDevice(device.handle, nullptr);
     device = {};

@@ -220,14 +220,39 @@ void discardPipelines(const Device& device, PipelineSwap& swap) {
     swap = {};
 }
 
-void swapPipelines(const Device& device, PipelineSwap& swap) {
-    if (swap.pipelines.empty()) return;
-    VK_CHECK(vkDeviceWaitIdle(device.handle));  // the frames in flight are done with the old ones
+namespace {
+
+// Pipelines replaced by a reload, with the frame before which they were last used.
+struct RetiredPipeline {
+    VkPipeline pipeline;
+    uint64_t frame;
+};
+std::vector<RetiredPipeline> gRetired;
+
+}  // namespace
+
+void swapPipelines(PipelineSwap& swap, uint64_t frame) {
     for (auto& [place, made] : swap.pipelines) {
-        vkDestroyPipeline(device.handle, *place, nullptr);
+        gRetired.push_back({*place, frame});
         *place = made;
     }
     swap = {};
+}
+
+void releaseRetiredPipelines(const Device& device, uint64_t frame, uint32_t framesInFlight) {
+    // Frames up to frame - framesInFlight are complete (fences signal in submission order): a
+    // pipeline retired before frame r was last used by frame r - 1.
+    std::erase_if(gRetired, [&](const RetiredPipeline& retired) {
+        bool done = retired.frame + framesInFlight <= frame + 1;
+        if (done) vkDestroyPipeline(device.handle, retired.pipeline, nullptr);
+        return done;
+    });
+}
+
+void releaseAllRetiredPipelines(const Device& device) {
+    for (const RetiredPipeline& retired : gRetired)
+        vkDestroyPipeline(device.handle, retired.pipeline, nullptr);
+    gRetired.clear();
 }
 
 }  // namespace common

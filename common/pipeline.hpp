@@ -79,8 +79,13 @@ void replacePipeline(PipelineSwap& swap, VkPipeline& place, Make&& make) {
 }
 // The reload failed: destroys the new pipelines; the old ones stay.
 void discardPipelines(const Device& device, PipelineSwap& swap);
-// Waits until no frame in flight uses the old pipelines, destroys them and puts the new ones in
-// their place.
-void swapPipelines(const Device& device, PipelineSwap& swap);
+// Puts the new pipelines in place of the old ones before frame `frame` is recorded. The frames in
+// flight may still use the old ones, so they are retired, not destroyed: releaseRetiredPipelines
+// destroys them once those frames are done (destroyDevice, whatever is left).
+void swapPipelines(PipelineSwap& swap, uint64_t frame);
+// Once a frame, after waiting for the fence of frame `frame`'s slot: every frame up to
+// frame - framesInFlight is done, and the pipelines retired before the one after it go.
+void releaseRetiredPipelines(const Device& device, uint64_t frame, uint32_t framesInFlight);
+void releaseAllRetiredPipelines(const Device& device);  // the device idle
 
 }  // namespace common

@@ -50,8 +50,8 @@ struct Block {
 struct Descriptor {
     std::string kind;  // "uniform block", "storage block", "combined image sampler", ...
     std::string name;
-    std::string type;    // image type ("sampler2D", "image2D rgba16f"), empty for blocks and samplers
-    unsigned count = 1;  // array length; 0: runtime-sized
+    std::string type;           // image type ("sampler2D", "image2D rgba16f"), empty for blocks and samplers
+    unsigned count = 1;         // array length; 0: runtime-sized
     std::string countConstant;  // the array is sized by a specialization constant: which
     unsigned inputIndex = 0;
     bool writable = false;  // a storage block or image without readonly
@@ -363,12 +363,14 @@ Interface Reflection::reflect(bool usedOnly) {
                 d.writable = !spvc_compiler_has_decoration(compiler_, resource.id, SpvDecorationNonWritable);
             if (kind == SPVC_RESOURCE_TYPE_STORAGE_BUFFER) {
                 // readonly on the block, or on every member.
-                bool readonly = spvc_compiler_has_decoration(compiler_, resource.id, SpvDecorationNonWritable);
+                bool readonly =
+                    spvc_compiler_has_decoration(compiler_, resource.id, SpvDecorationNonWritable);
                 if (!readonly) {
                     readonly = true;
                     for (unsigned i = 0; i < spvc_type_get_num_member_types(type(resource.base_type_id)); ++i)
-                        readonly = readonly && spvc_compiler_has_member_decoration(
-                                                   compiler_, resource.base_type_id, i, SpvDecorationNonWritable);
+                        readonly =
+                            readonly && spvc_compiler_has_member_decoration(compiler_, resource.base_type_id,
+                                                                            i, SpvDecorationNonWritable);
                 }
                 d.writable = !readonly;
             }
@@ -414,20 +416,37 @@ Interface Reflection::reflect(bool usedOnly) {
 
 // The OpCapability instructions of a module, by name where we know it (SPIR-V's capability numbers).
 std::vector<std::string> capabilities(const std::vector<uint32_t>& words) {
-    static const std::map<uint32_t, const char*> kNames = {
-        {0, "Matrix"}, {1, "Shader"}, {2, "Geometry"}, {3, "Tessellation"}, {9, "Float16"}, {10, "Float64"},
-        {11, "Int64"}, {12, "Int64Atomics"}, {22, "Int16"}, {32, "ImageGatherExtended"},
-        {35, "SampleRateShading"}, {39, "Int8"}, {40, "InputAttachment"}, {49, "StorageImageExtendedFormats"},
-        {43, "Sampled1D"}, {44, "Image1D"}, {46, "SampledBuffer"}, {47, "ImageBuffer"},
-        {50, "ImageQuery"}, {51, "DerivativeControl"}, {56, "StorageImageReadWithoutFormat"},
-        {57, "StorageImageWriteWithoutFormat"}, {61, "GroupNonUniform"}};
+    static const std::map<uint32_t, const char*> kNames = {{0, "Matrix"},
+                                                           {1, "Shader"},
+                                                           {2, "Geometry"},
+                                                           {3, "Tessellation"},
+                                                           {9, "Float16"},
+                                                           {10, "Float64"},
+                                                           {11, "Int64"},
+                                                           {12, "Int64Atomics"},
+                                                           {22, "Int16"},
+                                                           {32, "ImageGatherExtended"},
+                                                           {35, "SampleRateShading"},
+                                                           {39, "Int8"},
+                                                           {40, "InputAttachment"},
+                                                           {49, "StorageImageExtendedFormats"},
+                                                           {43, "Sampled1D"},
+                                                           {44, "Image1D"},
+                                                           {46, "SampledBuffer"},
+                                                           {47, "ImageBuffer"},
+                                                           {50, "ImageQuery"},
+                                                           {51, "DerivativeControl"},
+                                                           {56, "StorageImageReadWithoutFormat"},
+                                                           {57, "StorageImageWriteWithoutFormat"},
+                                                           {61, "GroupNonUniform"}};
     std::vector<std::string> result;
     for (size_t at = 5; at < words.size();) {
         uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
         if (count == 0) break;
         if (opcode == 17 && at + 1 < words.size()) {  // OpCapability
             auto known = kNames.find(words[at + 1]);
-            result.push_back(known != kNames.end() ? known->second : "number " + std::to_string(words[at + 1]));
+            result.push_back(known != kNames.end() ? known->second
+                                                   : "number " + std::to_string(words[at + 1]));
         }
         at += count;
     }
@@ -474,9 +493,9 @@ std::string withArticle(const std::string& noun) {
 std::string interfaceChange(const Interface& built, const Interface& edited) {
     // A capability the build's shader has not is refused unless every Vulkan 1.1 device has it
     // without a feature to enable (the rest need features this program does not turn on).
-    static const std::vector<std::string> kAlways = {"DerivativeControl", "Image1D", "ImageBuffer", "ImageQuery",
-                                                     "InputAttachment", "Matrix", "Sampled1D", "SampledBuffer",
-                                                     "Shader"};
+    static const std::vector<std::string> kAlways = {"DerivativeControl", "Image1D",         "ImageBuffer",
+                                                     "ImageQuery",        "InputAttachment", "Matrix",
+                                                     "Sampled1D",         "SampledBuffer",   "Shader"};
     for (const std::string& capability : edited.capabilities)
         if (!std::binary_search(built.capabilities.begin(), built.capabilities.end(), capability) &&
             std::find(kAlways.begin(), kAlways.end(), capability) == kAlways.end())
@@ -513,9 +532,11 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
             if (!d.countConstant.empty() || !b.countConstant.empty()) {
                 if (d.countConstant != b.countConstant || d.count != b.count)
                     return where + " (" + d.name + ") is an array sized by " +
-                           (d.countConstant.empty() ? "a number" : "specialization constant " + d.countConstant) +
+                           (d.countConstant.empty() ? "a number"
+                                                    : "specialization constant " + d.countConstant) +
                            " now; the shader its pipeline was made for sizes it by " +
-                           (b.countConstant.empty() ? "a number" : "specialization constant " + b.countConstant);
+                           (b.countConstant.empty() ? "a number"
+                                                    : "specialization constant " + b.countConstant);
             } else if ((d.count == 0) != (b.count == 0) || d.count > b.count) {
                 return where + " (" + d.name + ") is an array of " +
                        (d.count == 0 ? std::string("unknown length") : std::to_string(d.count)) +
@@ -526,7 +547,8 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
                 return where + " (" + what +
                        ") is written now; the shader its pipeline was made for only reads it (readonly)";
             if (d.block && b.block)
-                if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block); !change.empty())
+                if (std::string change = blockChange(where + " (" + what + ")", *b.block, *d.block);
+                    !change.empty())
                     return change;
         }
     }

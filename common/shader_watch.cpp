@@ -25,7 +25,6 @@ struct Entry {
     std::vector<ShaderFile> files;                 // each file it came from, and its time when read
     std::optional<std::vector<uint32_t>> pending;  // compiled and checked, not yet every pipeline's
     std::string error;                             // why the last compile of it failed
-    bool reloaded = false;                         // spirv came from a reload
     bool retry = false;  // its reload's pipelines could not be made: compiled again with the next change
 };
 
@@ -44,6 +43,9 @@ struct Watch {
     double compileMs = 0.0, pipelinesMs = 0.0;
 };
 Watch gWatch;
+
+// How often the files' times are looked at: a few dozen stat calls, some microseconds each.
+constexpr std::chrono::milliseconds kPollInterval{50};
 
 std::vector<ShaderFile> withTimes(const std::vector<fs::path>& files) {
     std::vector<ShaderFile> result;
@@ -100,7 +102,7 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     if (newer) {
         ShaderCompilation compilation = compileShader(entry.source);
         std::string error = compilation.error.empty() ? checkInterface(entry, compilation.spirv)
-                                                       : firstErrorLine(compilation.error);
+                                                      : firstErrorLine(compilation.error);
         if (!error.empty() && gWatch.running && built) {
             // Loaded for the first time while the chapter runs (the lab switching its G-buffer
             // layout): the build's code keeps it going, and the error is shown like a reload's
@@ -151,11 +153,15 @@ void watchShader(std::string_view name) {
     gWatch.shaders.emplace(std::string(name), std::move(entry));
 }
 
-std::optional<std::vector<uint32_t>> reloadedShaderCode(std::string_view name) {
+void keepShaderCode(std::string_view name, const std::vector<uint32_t>& code) {
+    if (auto known = gWatch.shaders.find(name); known != gWatch.shaders.end()) known->second.spirv = code;
+}
+
+std::optional<std::vector<uint32_t>> watchedShaderCode(std::string_view name) {
     auto known = gWatch.shaders.find(name);
     if (known == gWatch.shaders.end()) return std::nullopt;
     if (gWatch.building && known->second.pending) return known->second.pending;
-    if (known->second.reloaded) return known->second.spirv;
+    if (!known->second.spirv.empty()) return known->second.spirv;
     return std::nullopt;
 }
 
@@ -181,7 +187,7 @@ ShaderReload pollShaderSources() {
         gWatch.reloaded.clear();
     }
     auto now = std::chrono::steady_clock::now();
-    if (now - gWatch.lastPoll < std::chrono::milliseconds(250)) return {};
+    if (now - gWatch.lastPoll < kPollInterval) return {};
     gWatch.lastPoll = now;
 
     // Which shaders' files changed since they were read. While the source itself is missing (an
@@ -206,7 +212,8 @@ ShaderReload pollShaderSources() {
         if (entry.retry &&
             std::none_of(changed.begin(), changed.end(), [&](const auto& c) { return c.second == &entry; }))
             changed.emplace_back(&name, &entry);
-    if (editTime == fs::file_time_type::min()) editTime = fs::file_time_type::clock::now();  // a file went away
+    if (editTime == fs::file_time_type::min())
+        editTime = fs::file_time_type::clock::now();  // a file went away
 
     gWatch.buildError.clear();
     for (auto& [name, entry] : changed) {
@@ -257,7 +264,6 @@ void finishShaderReload(const std::string& error) {
         if (entry.pending) {
             if (error.empty()) {
                 entry.spirv = std::move(*entry.pending);
-                entry.reloaded = true;
             } else {
                 entry.retry = true;  // its edit is not lost: compiled again with the next change
             }

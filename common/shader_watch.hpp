@@ -56,9 +56,11 @@ private:
 // Remembers a shader a chapter compiled itself (chapter-06), so its edits are noticed too.
 void watchShader(std::string_view name);
 
-// Code live reload compiled for a shader a chapter compiled itself (chapter-06): the reload being
-// built, else the last one made; none before the first reload of it.
-std::optional<std::vector<uint32_t>> reloadedShaderCode(std::string_view name);
+// A shader a chapter compiled itself (chapter-06): its code kept with it (keepShaderCode), so that
+// a pipeline made again does not compile the file again; while a reload is being built, the
+// reload's new code. None for a shader not watched.
+void keepShaderCode(std::string_view name, const std::vector<uint32_t>& code);
+std::optional<std::vector<uint32_t>> watchedShaderCode(std::string_view name);
 
 // The shaders of a reload being built: each compiled and checked, not yet every pipeline's.
 struct ShaderReload {
@@ -69,7 +71,7 @@ struct ShaderReload {
 };
 
 // Once a frame: looks at the modification times of every file the loaded shaders came from (at
-// most four times a second) and compiles the shaders whose files changed. Returns them when every
+// most every 50 ms) and compiles the shaders whose files changed. Returns them when every
 // one compiled and fits its pipelines, and every other loaded shader is good too; the caller then
 // makes new pipelines for them and calls finishShaderReload. Else returns none: each failure is
 // printed once and kept (shaderReloadError) until its file is fixed. A file missing or changing
