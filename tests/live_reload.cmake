@@ -81,6 +81,10 @@ foreach(rule block-grown member-moved image-type array-size push-grown output-mo
     live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()
+foreach(rule accept-unused-member accept-fewer-resources)
+    live_test(live-reload.chapter-15.${rule} accept chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
+    set_property(TEST live-reload.chapter-15.${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
+endforeach()
 live_test(live-reload.chapter-15.rule-constant-type rule chapter-15/scene.frag COMMAND $<TARGET_FILE:chapter-15>)
 set_property(TEST live-reload.chapter-15.rule-constant-type APPEND PROPERTY ENVIRONMENT RULE=constant-type)
 live_test(live-reload.chapter-15-lab.rule-local-size rule chapter-15-lab/light.comp

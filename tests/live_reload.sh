@@ -18,6 +18,8 @@
 #   fix        broken, then the line corrected: the fix is picked up (the last frame is the edit's);
 #   interface  the shader reads a descriptor its pipeline layout does not have: refused as an
 #              interface change, the running pipelines stay;
+#   accept     a safe interface change ($RULE: tests/live_reload_rules.py's accept-*) with the
+#              edit's magenta line: reloaded, never refused, the last frame is the edit's;
 #   rule       an interface change of the kind $RULE names (tests/live_reload_rules.py), saved by
 #              renaming: refused with the rule's message, the running pipelines stay;
 #   fault      the edit of 'edit', but the first pipeline the reload makes fails to be made
@@ -166,6 +168,12 @@ EOF
     grep -q "interface changed: it uses set 6 binding 0 (uniform block LiveReloadExtra), which the shader its pipeline was made for does not declare" \
         "$work/stderr" || fail "not reported as an interface change"
     ;;
+accept)
+    [ "$(python3 "$(dirname "$0")/live_reload_rules.py" "$work/edited" "${RULE:-}")" = ACCEPTED ] ||
+        fail "rule '${RULE:-}' is not an accepted change"
+    wait_for "$work/stdout" "^shaders: reloaded .*first frame with it"
+    grep -q "did not reload" "$work/stderr" && fail "refused: $(grep 'did not reload' "$work/stderr")"
+    ;;
 rule)
     expected=$(python3 "$(dirname "$0")/live_reload_rules.py" "$work/edited" "${RULE:-}") ||
         fail "rule '${RULE:-}' could not be applied"
@@ -239,7 +247,7 @@ fi
 unset VKBOOK_FAULT VKBOOK_FAULT_LAYER VKBOOK_NAMES_LAYER  # the references are rendered without the layers
 reference "$work/original" "$work/original.png"
 case $scenario in
-edit | fix | fault | save-* | during-compile)
+edit | fix | fault | save-* | during-compile | accept)
     reference "$work/edited" "$work/edited.png"
     "$image_compare" "$work/last.png" --golden "$work/edited.png" --max-diff 2 --max-fraction 0.001 ||
         fail "the last frame is not the edited shader's"

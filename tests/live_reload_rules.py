@@ -6,7 +6,8 @@
 Edits the copy of the shader sources SHADERS as the rule says, saving each file as many editors
 do (a new file renamed over the old one, included files first), and prints the message the
 chapter must refuse the change with (an extended regular expression). Each rule is one thing the
-C++ relies on that a reload must not change (docs/live-shaders.md, "What a reload cannot change").
+C++ relies on that a reload must not change (docs/live-shaders.md, "What a reload cannot change");
+the rules named accept-* are safe changes, which must be reloaded (the script prints ACCEPTED).
 """
 import os
 import sys
@@ -58,6 +59,14 @@ RULES = {
     'local-size': ([('chapter-15-lab/light.comp', 'local_size_x = 8, local_size_y = 8',
                      'local_size_x = 4, local_size_y = 4')],
                    r'local size is 4 x 4 x 1 now; the dispatch is sized for 8 x 8 x 1'),
+    # Accepted (message None): the edit's magenta line, with interface changes that are safe.
+    'accept-unused-member': ([(INPUTS, '    ShaderSceneInfo scene;\n};', '    ShaderSceneInfo scene;\n    vec4 unusedTint[64];\n};'),
+                              ('chapter-15/light.frag', 'END', '    outColor = vec4(1.0, 0.0, 1.0, 1.0);')],
+                             None),
+    'accept-fewer-resources': ([('chapter-15/light.frag', 'END', '    outColor = vec4(1.0, 0.0, 1.0, 1.0);'),
+                                ('chapter-15/light.frag', 'outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));',
+                                 'outColor = vec4(0.0);')],
+                               None),
 }
 
 
@@ -81,7 +90,7 @@ def main():
         with open(path + '.new', 'w') as out:
             out.write(text)
         os.replace(path + '.new', path)
-    print(message)
+    print(message if message is not None else 'ACCEPTED')
 
 
 if __name__ == '__main__':
