@@ -189,7 +189,7 @@ save-*)
     ;;
 during-compile)
     insert "$good" > /dev/null
-    sleep 0.6  # polled (every 250 ms), now compiling (VKBOOK_TEST_COMPILE_DELAY_MS)
+    sleep 0.6  # polled (every 50 ms), now compiling (VKBOOK_TEST_COMPILE_DELAY_MS)
     replace "$second"
     wait_for "$work/stdout" "^shaders: reloaded .*first frame with it" 2
     ;;

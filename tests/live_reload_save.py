@@ -15,7 +15,7 @@ import os
 import sys
 import time
 
-PAUSE = 0.4  # seconds: longer than the 250 ms between polls
+PAUSE = 0.4  # seconds: several times the 50 ms between polls
 
 
 def write(path, content):
