@@ -2,7 +2,7 @@
 # Live shader reload latency: for each chapter, RUNS times, a running chapter (headless, the size
 # given) has its light (or triangle) shader edited under it by tests/live_reload.sh, and the
 # chapter reports how long after the edit (the file's modification time) the first frame using
-# the new shader began: the poll (at most 250 ms), the compile, the new pipelines, one frame.
+# the new shader began: the poll (at most 50 ms), the compile, the new pipelines, one frame.
 #   bench/reload_latency.sh [BUILD[,BUILD...]] [RUNS] [chapter options...]
 # Several build trees (comma-separated) are measured side by side: each run goes through them in
 # turn, so that they share the machine's state; a line per chapter and build.

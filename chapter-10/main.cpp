@@ -125,9 +125,10 @@ void destroyPasses(Chapter& c) {
 
 // Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
 // the passes that use them are made from the new code while the frames in flight still draw
-// with the old ones; once the GPU is done with those frames, the new ones take their place (and
-// the lighting command buffers, which name the pipeline, are recorded again). If one cannot be
-// made, none does: the old pipelines keep drawing, and the error is shown.
+// with the old ones; then the new ones take their place (the old ones are destroyed once the
+// GPU is done with those frames), and the lighting command buffers, which name the pipeline, are
+// recorded again. If one cannot be made, none does: the old pipelines keep drawing, and the
+// error is shown.
 void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t frame) {
     VkPipelineCache cache = c.pipelineCache.handle;
     common::PipelineSwap swap;

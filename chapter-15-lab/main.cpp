@@ -365,7 +365,8 @@ void run(const common::Options& options) {
 
     // Live reload (common/shader_watch.hpp): edited shaders compiled and checked; new pipelines for
     // the passes that use them, made while the frames in flight still draw with the old ones,
-    // take their place once the GPU is done with those frames. If one cannot be made, none does.
+    // take their place; the old ones go once the GPU is done with those frames. If one cannot be
+    // made, none does.
     auto reloadShaders = [&](const common::ShaderReload& reload, uint32_t frame) {
         VkPipelineCache cache = pipelineCache.handle;
         common::PipelineSwap swap;

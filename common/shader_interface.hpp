@@ -14,7 +14,7 @@ namespace common {
 // Empty when `edited` fits what the C++ made for `built` (both whole SPIR-V modules of one
 // shader stage); else why not, in one line naming the binding, block member, location or
 // constant and both types or sizes ("set 2 binding 0 (uniform block Scene): member extraTint
-// (vec4[64], bytes 96..1119) reads past the 96 bytes the shader its pipeline was made for
+// (vec4[64], bytes 32..1055) lies past the 32 bytes the shader its pipeline was made for
 // declares"). Reflection by SPIRV-Cross; without it (a build without runtime compilation)
 // nothing is compared.
 std::string shaderInterfaceChange(const std::vector<uint32_t>& built, const std::vector<uint32_t>& edited);

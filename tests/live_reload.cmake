@@ -93,16 +93,23 @@ set_property(TEST live-reload.chapter-15-lab.rule-local-size APPEND PROPERTY ENV
 live_test(live-reload.chapter-15.gui-broken broken chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15> --gui)
 # A pipeline that cannot be made on reload (the fault-injection layer, tests/fault.cmake): the old
 # ones keep drawing, the same edit saved again is picked up.
-foreach(case "chapter-06;chapter-06/triangle.frag;Graphics" "chapter-10;chapter-10/lighting.frag;Graphics"
-             "chapter-14;chapter-14/light.frag;Graphics" "chapter-15;chapter-15/light.frag;Graphics"
-             "chapter-15-lab;chapter-15-lab/light.frag;Graphics")
+foreach(case "chapter-06;chapter-06/triangle.frag;chapter-06/triangle.vert"
+             "chapter-10;chapter-10/lighting.frag;chapter-10/geometry.frag"
+             "chapter-14;chapter-14/light.frag;chapter-14/scene.frag"
+             "chapter-15;chapter-15/light.frag;chapter-15/scene.frag"
+             "chapter-15-lab;chapter-15-lab/light.frag;common/post.frag")
     list(GET case 0 program)
     list(GET case 1 file)
-    list(GET case 2 kind)
+    list(GET case 2 other)
     live_test(live-reload.${program}.pipeline-fails fault ${file} COMMAND $<TARGET_FILE:${program}> --device llvmpipe)
     set_property(TEST live-reload.${program}.pipeline-fails APPEND PROPERTY ENVIRONMENT
-                 XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 PIPELINE_KIND=${kind})
+                 XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 RETOUCH=${other})
 endforeach()
+# The second of the post pass's two pipelines fails: the first, already made, is destroyed.
+live_test(live-reload.chapter-15.pipeline-fails-second fault common/post.frag
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe)
+set_property(TEST live-reload.chapter-15.pipeline-fails-second APPEND PROPERTY ENVIRONMENT
+             XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 FAULT_OFFSET=2)
 # Every way an editor saves, and an edit saved during a (slow) compile: nothing lost, the run goes on.
 foreach(style in-place truncate rename-new rename-old delete)
     live_test(live-reload.chapter-15.save-${style} save-${style} chapter-15/light.frag

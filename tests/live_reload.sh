@@ -22,10 +22,11 @@
 #              edit's magenta line: reloaded, never refused, the last frame is the edit's;
 #   rule       an interface change of the kind $RULE names (tests/live_reload_rules.py), saved by
 #              renaming: refused with the rule's message, the running pipelines stay;
-#   fault      the edit of 'edit', but the first pipeline the reload makes fails to be made
-#              (VKBOOK_FAULT=vkCreate<PIPELINE_KIND>Pipelines:n+1 of the fault-injection layer, n
-#              the pipelines made at start-up): refused, the old pipelines keep drawing; the same
-#              edit saved again is picked up (the last frame is the edit's);
+#   fault      the edit of 'edit', but the reload's FAULT_OFFSET-th pipeline (default the first)
+#              fails to be made (VKBOOK_FAULT=vkCreate<PIPELINE_KIND>Pipelines:n+FAULT_OFFSET of the
+#              fault-injection layer, n the pipelines made at start-up): refused, the old pipelines
+#              keep drawing; then RETOUCH (another shader file; default the edited one) is saved,
+#              and the edit is picked up with it (the last frame is the edit's);
 #   save-STYLE the edit of 'edit' saved as an editor does (tests/live_reload_save.py: in-place,
 #              truncate, rename-new, rename-old, delete), with pauses between the steps so that a
 #              poll may see the file in between: picked up, the chapter never ends (a step in
@@ -114,7 +115,7 @@ if [ "$scenario" = fault ]; then
     made=$(VKBOOK_FAULT_TRACE=1 "$chapter" "${chapter_options[@]}" --validation --headless --frames 1 --shader-dir "$work/edited" \
         2>&1 > /dev/null | grep -c "fault_injection: $call #")
     [ "$made" -gt 0 ] || fail "the fault-injection layer is not loaded (no $call counted)"
-    export VKBOOK_FAULT=$call:$((made + 1))
+    export VKBOOK_FAULT=$call:$((made + ${FAULT_OFFSET:-1}))
 fi
 run_options=(--shader-dir "$work/edited" --screenshot "$work/last.png")
 [ $headless = 1 ] && run_options+=(--frames 10000000)
@@ -199,7 +200,9 @@ fault)
     grep -q "did not reload: .*VK_ERROR_OUT_OF_DEVICE_MEMORY" "$work/stderr" || fail "the failure is not reported"
     grep -q "^shaders: reloaded" "$work/stdout" && fail "reported as reloaded"
     sleep 0.5
-    touch "$target"  # saved again: this time the pipelines are made
+    # Another file saved ($RETOUCH, a shader of the chapter; the edited one by default): the
+    # failed reload's shaders are compiled again with it, and this time the pipelines are made.
+    touch "$work/edited/${RETOUCH:-$shader}"
     wait_for "$work/stdout" "^shaders: reloaded .*first frame with it"
     ;;
 leak)
