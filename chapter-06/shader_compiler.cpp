@@ -32,8 +32,10 @@ struct Include {
 shaderc_include_result* findInclude(void* includeDir, const char* requested, int type, const char* requesting,
                                     size_t /*depth*/) {
     auto* include = new Include;
-    std::filesystem::path candidates[] = {std::filesystem::path(requesting).parent_path() / requested,
-                                          *static_cast<std::filesystem::path*>(includeDir) / requested};
+    // shaderc's names are UTF-8 (the file names we give it are): u8path reads them so on Windows too.
+    std::filesystem::path candidates[] = {
+        std::filesystem::u8path(requesting).parent_path() / std::filesystem::u8path(requested),
+        *static_cast<std::filesystem::path*>(includeDir) / std::filesystem::u8path(requested)};
     for (size_t i = type == shaderc_include_type_relative ? 0 : 1; i < 2 && include->name.empty(); ++i) {
         std::ifstream file(candidates[i], std::ios::binary);
         if (!file) continue;

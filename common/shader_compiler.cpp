@@ -53,7 +53,7 @@ shaderc_include_result* resolveInclude(void* userData, const char* requested, in
     auto* include = new IncludeResult;
     std::vector<fs::path> candidates;
     if (type == shaderc_include_type_relative)
-        candidates.push_back(fs::path(requesting).parent_path() / fs::u8path(requested));
+        candidates.push_back(fs::u8path(requesting).parent_path() / fs::u8path(requested));  // UTF-8 names
     candidates.push_back(context->includeDir / fs::u8path(requested));
     // Every place looked at is watched: a file that appears in an earlier one is used from then on.
     for (const fs::path& candidate : candidates) {
