@@ -257,8 +257,11 @@ private:
         for (size_t i = 3; i < pixels->rgba.size() && !prepared.hasAlpha; i += 4)
             prepared.hasAlpha = pixels->rgba[i] < 255;
         bool srgb = request.kind == TextureRequest::Kind::Albedo;
-        prepared.chain = makeMipChain(*pixels, srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
-                                      srgb ? srgbMips_ : unormMips_);
+        // Only a base colour's alpha is coverage (glTF's baseColorTexture); the other maps' alpha
+        // means nothing, and their channels are averaged each on its own.
+        prepared.chain =
+            makeMipChain(*pixels, srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                         srgb ? srgbMips_ : unormMips_, srgb ? MipAlpha::Coverage : MipAlpha::Independent);
         return prepared;
     }
 

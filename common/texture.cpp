@@ -38,12 +38,13 @@ VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLa
 }
 
 // One mip level from the one above when both sides are even: each texel the mean of a 2x2 block,
-// colour weighted by alpha (a transparent texel's colour does not bleed into its neighbours), in
+// colour weighted by alpha where it is coverage (`weighted`: a transparent texel's colour does
+// not bleed into its neighbours), in
 // linear light for sRGB data. The result is what stb_image_resize's box filter gives for these
 // sizes (its sRGB tables round slightly differently, by at most 1), about three times faster: on a
 // book-sized model the mip chains were most of the start-up (docs/performance.md). Odd sizes go
 // to stb.
-void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool srgb) {
+void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool srgb, bool weighted) {
     struct Tables {
         float toLinear[256];
         uint8_t toSrgb[65536];  // linear in [0, 1] at 16 bits: fine enough for sRGB's darkest steps
@@ -72,6 +73,7 @@ void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool s
             for (const uint8_t* t : block) {
                 float a = float(t[3]) * (1.0f / 255.0f);
                 alpha += a;
+                if (!weighted) a = 1.0f;  // alpha is data: every channel on its own
                 for (int c = 0; c < 3; ++c) {
                     float v = srgb ? tables.toLinear[t[c]] : float(t[c]) * (1.0f / 255.0f);
                     colour[c] += v * a;
@@ -79,7 +81,7 @@ void halveEven(const uint8_t* above, int width, int height, uint8_t* out, bool s
                 }
             }
             for (int c = 0; c < 3; ++c) {
-                float v = alpha > 0.0f ? colour[c] / alpha : plain[c] * 0.25f;
+                float v = !weighted ? colour[c] * 0.25f : alpha > 0.0f ? colour[c] / alpha : plain[c] * 0.25f;
                 v = std::clamp(v, 0.0f, 1.0f);
                 texel[c] =
                     srgb ? tables.toSrgb[std::min(int(v * 65536.0f), 65535)] : uint8_t(v * 255.0f + 0.5f);
@@ -232,15 +234,15 @@ bool linearFilterable(const Device& device, VkFormat format) {
     return properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
 }
 
-MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
+MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped, MipAlpha alpha) {
     uint32_t mipLevels = 1;
     if (mipmapped)
         for (uint32_t size = std::max(pixels.width, pixels.height); size > 1; size /= 2) ++mipLevels;
 
     // The mip chain is made here on the CPU, each level a 2x2 box filter of the one above (in
-    // linear light for an _SRGB format, colour weighted by alpha: halveEven, or stb_image_resize
-    // where a side is odd), and goes up with level 0 in one copy. The book blits each level into
-    // the next on the GPU instead; on lavapipe the first blits cost ~110 ms of startup (llvmpipe
+    // linear light for an _SRGB format, colour weighted by alpha where alpha is coverage: halveEven, or
+    // stb_image_resize where a side is odd), and goes up with level 0 in one copy. The book blits each level
+    // into the next on the GPU instead; on lavapipe the first blits cost ~110 ms of startup (llvmpipe
     // compiles its blit shaders then), the CPU chain of a 1024x1024 texture ~7 ms
     // (docs/performance.md).
     MipChain chain{{pixels.width, pixels.height}, format, {}, {}};
@@ -257,13 +259,14 @@ MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped) {
             int nextWidth = std::max(width / 2, 1), nextHeight = std::max(height / 2, 1);
             size_t offset = chain.bytes.size();
             chain.bytes.resize(offset + size_t(nextWidth) * size_t(nextHeight) * 4);
-            bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
+            bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB, weighted = alpha == MipAlpha::Coverage;
             if (width % 2 == 0 && height % 2 == 0)
-                halveEven(chain.bytes.data() + above, width, height, chain.bytes.data() + offset, srgb);
+                halveEven(chain.bytes.data() + above, width, height, chain.bytes.data() + offset, srgb,
+                          weighted);
             else if (!stbir_resize_uint8_generic(
                          chain.bytes.data() + above, width, height, 0, chain.bytes.data() + offset, nextWidth,
-                         nextHeight, 0, 4, 3, 0, STBIR_EDGE_WRAP, STBIR_FILTER_BOX,
-                         srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
+                         nextHeight, 0, 4, weighted ? 3 : STBIR_ALPHA_CHANNEL_NONE, 0, STBIR_EDGE_WRAP,
+                         STBIR_FILTER_BOX, srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR, nullptr))
                 throw std::runtime_error("stb_image_resize failed on a mip level");
             above = offset;
             width = nextWidth;
@@ -310,7 +313,9 @@ Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& 
 Image uploadTexture(const Device& device, StagingBatch& batch, const Pixels& pixels, VkFormat format,
                     const std::string& name) {
     // A full mip chain when the format can be sampled with linear filtering (the usual case).
-    return uploadMipChain(device, batch, makeMipChain(pixels, format, linearFilterable(device, format)),
+    // Its alpha is coverage (the GUI's font atlas) or opaque (the default textures).
+    return uploadMipChain(device, batch,
+                          makeMipChain(pixels, format, linearFilterable(device, format), MipAlpha::Coverage),
                           name);
 }
 

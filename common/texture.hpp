@@ -50,7 +50,12 @@ struct MipChain {
     std::vector<uint8_t> bytes;              // every level, one after the other
     std::vector<VkBufferImageCopy> regions;  // one per level, into `bytes`
 };
-MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped);
+// What a texture's alpha means to its mip chain. Coverage (a base colour's, glTF's alpha): the
+// colour is weighted by it, so a transparent texel's colour does not bleed into its neighbours.
+// Independent (glTF's normal, metal-rough and occlusion maps, where alpha means nothing): every
+// channel is averaged on its own.
+enum class MipAlpha { Coverage, Independent };
+MipChain makeMipChain(const Pixels& pixels, VkFormat format, bool mipmapped, MipAlpha alpha);
 // Whether the device filters `format` linearly (then a texture of it gets a full mip chain).
 bool linearFilterable(const Device& device, VkFormat format);
 // Records the upload of `chain` into a new sampled image, ending in SHADER_READ_ONLY_OPTIMAL.

@@ -53,7 +53,8 @@ TEST(MipChain, EveryLevelIsTheBoxFilterOfTheOneAbove) {
         bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB;
         // 256x64 halves evenly down to 4x1; 96x40 meets odd sides (3, 5) on the way.
         for (auto [w, h] : {std::pair{256u, 64u}, std::pair{96u, 40u}}) {
-            common::MipChain chain = common::makeMipChain(noise(w, h, true), format, true);
+            common::MipChain chain =
+                common::makeMipChain(noise(w, h, true), format, true, common::MipAlpha::Coverage);
             ASSERT_EQ(chain.regions.size(), size_t(std::bit_width(std::max(w, h))));
             for (uint32_t level = 1; level < chain.regions.size(); ++level)
                 EXPECT_LE(differenceFromStb(chain, level, srgb), 1)
@@ -66,11 +67,40 @@ TEST(MipChain, TransparentTexelsKeepTheirColour) {
     // A 2x2 block of red texels with alpha 0: the mean is red, not black.
     common::Pixels pixels{2, 2, std::vector<uint8_t>(16, 0)};
     for (size_t i = 0; i < 16; i += 4) pixels.rgba[i] = 200;
-    common::MipChain chain = common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true);
+    common::MipChain chain =
+        common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true, common::MipAlpha::Coverage);
     ASSERT_EQ(chain.regions.size(), 2u);
     const uint8_t* texel = chain.bytes.data() + chain.regions[1].bufferOffset;
     EXPECT_EQ(texel[0], 200);
     EXPECT_EQ(texel[3], 0);
+}
+
+TEST(MipChain, DataTexturesAverageEveryChannelOnItsOwn) {
+    // A normal or metal-rough map's alpha means nothing: half its texels with alpha 0 must count
+    // as much as the others, in the even path (2x2) and in stb's (3x2, an odd side).
+    for (auto [w, h] : {std::pair{2u, 2u}, std::pair{3u, 2u}}) {
+        common::Pixels pixels{w, h, std::vector<uint8_t>(size_t(w) * h * 4, 0)};
+        for (size_t i = 0; i < size_t(w) * h; ++i) {
+            bool even = i % 2 == 0;
+            pixels.rgba[i * 4 + 0] = even ? 200 : 0;
+            pixels.rgba[i * 4 + 1] = 128;
+            pixels.rgba[i * 4 + 2] = 255;
+            pixels.rgba[i * 4 + 3] = even ? 0 : 255;
+        }
+        common::MipChain data =
+            common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_UNORM, true, common::MipAlpha::Independent);
+        common::MipChain colour =
+            common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_UNORM, true, common::MipAlpha::Coverage);
+        ASSERT_GE(data.regions.size(), 2u);
+        // The level-1 texel's red: its block's mean with every texel counted, and (coverage) with
+        // only the opaque ones, whose red is 0.
+        const uint8_t* plain = data.bytes.data() + data.regions[1].bufferOffset;
+        const uint8_t* weighted = colour.bytes.data() + colour.regions[1].bufferOffset;
+        EXPECT_NEAR(plain[0], 100, 1) << w << "x" << h;
+        EXPECT_EQ(plain[1], 128) << w << "x" << h;
+        EXPECT_EQ(plain[2], 255) << w << "x" << h;
+        EXPECT_LT(weighted[0], 30) << w << "x" << h;
+    }
 }
 
 TEST(MipChain, ChainOf1024x1024) {
@@ -78,7 +108,8 @@ TEST(MipChain, ChainOf1024x1024) {
     // stb_image_resize's for the same chain (what makeMipChain used for every level before).
     common::Pixels pixels = noise(1024, 1024, true);
     auto start = std::chrono::steady_clock::now();
-    common::MipChain chain = common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true);
+    common::MipChain chain =
+        common::makeMipChain(pixels, VK_FORMAT_R8G8B8A8_SRGB, true, common::MipAlpha::Coverage);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     start = std::chrono::steady_clock::now();
     std::vector<uint8_t> above = pixels.rgba, below;
