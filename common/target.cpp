@@ -227,13 +227,27 @@ void createOffscreen(Target& target, const Device& device) {
     target.nextOffscreen = 0;
 }
 
-void destroyRetired(Target& target, const Device& device) {
-    for (Target::Retired& retired : target.retired) {
-        for (VkSemaphore semaphore : retired.semaphores)
+void destroyRetired(Target& target, const Device& device, size_t count) {
+    for (size_t i = 0; i < count; ++i) {
+        for (VkSemaphore semaphore : target.retired[i].semaphores)
             vkDestroySemaphore(device.handle, semaphore, nullptr);
-        vkDestroySwapchainKHR(device.handle, retired.swapchain, nullptr);
+        vkDestroySwapchainKHR(device.handle, target.retired[i].swapchain, nullptr);
     }
-    target.retired.clear();
+    target.retired.erase(target.retired.begin(), target.retired.begin() + std::ptrdiff_t(count));
+}
+
+// Without VK_EXT_swapchain_maintenance1: the acquire fence, seen signalled, releases the retired
+// swapchains of Target::Retired's rule (none when the image it acquired had not been presented
+// since they were retired) and is free for the next acquire. Polled: never waits.
+void collectAcquireFence(Target& target, const Device& device) {
+    if (!target.acquireFencePending) return;
+    VkResult status = vkGetFenceStatus(device.handle, target.acquireFence);
+    if (status == VK_NOT_READY) return;
+    VK_CHECK_RESULT(status, "vkGetFenceStatus");
+    VK_CHECK(vkResetFences(device.handle, 1, &target.acquireFence));
+    target.acquireFencePending = false;
+    destroyRetired(target, device, target.acquireFenceReleases);
+    target.acquireFenceReleases = 0;
 }
 
 // VK_EXT_swapchain_maintenance1: the presentations seen done give their fences back, and a retired
@@ -367,18 +381,31 @@ bool pollTarget(Target& target) {
 bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
                         uint32_t* imageIndex) {
     if (target.window) {
+        // While swapchains wait to be destroyed (Target::Retired), the acquire gets a fence too.
+        VkFence fence = VK_NULL_HANDLE;
+        if (!device.swapchainMaintenance1) {
+            collectAcquireFence(target, device);
+            if (!target.retired.empty() && !target.acquireFencePending) {
+                if (target.acquireFence == VK_NULL_HANDLE) {
+                    target.acquireFence = createFence(device, false);
+                    nameObject(device.handle, target.acquireFence, "acquire fence");
+                }
+                fence = target.acquireFence;
+            }
+        }
         VkResult result = vkAcquireNextImageKHR(device.handle, target.swapchain, UINT64_MAX, imageAvailable,
-                                                VK_NULL_HANDLE, imageIndex);
-        if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
-        // Suboptimal still signals the semaphore: draw, then recreate.
+                                                fence, imageIndex);
+        if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;  // the fence is untouched
+        // Suboptimal still signals the semaphore (and the fence): draw, then recreate.
         if (result != VK_SUBOPTIMAL_KHR) VK_CHECK_RESULT(result, "vkAcquireNextImageKHR");
         if (device.swapchainMaintenance1) {
             collectPresentFences(target, device);
-        } else if (!target.retired.empty() && target.presentedSinceRetiring[*imageIndex]) {
-            // This image was presented since the last swapchain was retired, and the presentation
-            // engine has handed it back: every presentation queued before that one is done.
-            destroyRetired(target, device);
-            target.presentedSinceRetiring.assign(target.images.size(), false);
+        } else if (fence != VK_NULL_HANDLE) {
+            // An image presented since the retirements: once the fence signals, the presentation
+            // engine is done with it, and so with every presentation queued before it.
+            target.acquireFencePending = true;
+            target.acquireFenceReleases =
+                target.presentedSinceRetiring[*imageIndex] ? target.retired.size() : 0;
         }
         return true;
     }
@@ -474,7 +501,15 @@ void destroyTargetImages(Target& target, const Device& device) {
     }
     for (VkFence fence : target.spareFences) vkDestroyFence(device.handle, fence, nullptr);
     target.spareFences.clear();
-    destroyRetired(target, device);
+    if (target.acquireFencePending)  // not VK_CHECK: teardown goes on after a lost device
+        vkWaitForFences(device.handle, 1, &target.acquireFence, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device.handle, target.acquireFence, nullptr);
+    target.acquireFence = VK_NULL_HANDLE;
+    target.acquireFencePending = false;
+    // Without maintenance1, swapchains still retired have had no acquire to tell: after the
+    // device wait, with nothing presented since, they go as the current one does (as Khronos'
+    // swapchain_recreation sample does at its end).
+    destroyRetired(target, device, target.retired.size());
     if (target.swapchain != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, target.swapchain, nullptr);
     target.swapchain = VK_NULL_HANDLE;
 }

@@ -60,17 +60,24 @@ struct Target {
 
     // A swapchain replaced by a new one, and its renderFinished semaphores: the presentation
     // engine may still be presenting its images and waiting on those semaphores, which no
-    // command-buffer fence or device wait tells. With VK_EXT_swapchain_maintenance1 each
-    // presentation signals a fence of its own, and a retired swapchain goes once the fences of
-    // all its presentations have signalled. Without it, once an image of the new swapchain comes
-    // back from the presentation engine after being presented: presentation requests on one
-    // queue complete in order, so every earlier one, the old swapchain's included, is done then.
+    // command-buffer fence or device wait tells (VUID-vkDestroySwapchainKHR-swapchain-01282). With
+    // VK_EXT_swapchain_maintenance1 each presentation signals a fence of its own, and a retired
+    // swapchain goes once the fences of all its presentations have signalled. Without it, through
+    // an image of the new swapchain that was presented and is acquired again: presentation
+    // requests on one queue complete in order, so once the presentation engine is done with that
+    // image, every earlier presentation, the old swapchain's included, is done too. Not when
+    // vkAcquireNextImageKHR hands back the image's index -- the image may still be on its way to
+    // the screen -- but when that acquire's fence signals (vkAcquireNextImageKHR's notes in the
+    // specification; Khronos' swapchain_recreation sample). The fence is polled, never waited on.
     struct Retired {
         VkSwapchainKHR swapchain = VK_NULL_HANDLE;
         std::vector<VkSemaphore> semaphores;
     };
     std::vector<Retired> retired;
     std::vector<bool> presentedSinceRetiring;  // per image of the current swapchain
+    VkFence acquireFence = VK_NULL_HANDLE;     // given to acquires while swapchains are retired
+    bool acquireFencePending = false;          // given to an acquire, not seen signalled yet
+    size_t acquireFenceReleases = 0;           // its signal releases retired[0 .. this)
     struct PresentFence {
         VkFence fence = VK_NULL_HANDLE;
         VkSwapchainKHR swapchain = VK_NULL_HANDLE;

@@ -181,6 +181,26 @@ desktop_device_test(desktop.no-depth-format VKBOOK_HIDE=D32_SFLOAT,X8_D24_UNORM_
     COMMAND $<TARGET_FILE:chapter-10> --device llvmpipe --validation --headless
     EXPECT_EXIT 1 EXPECT_STDERR "can render to and sample neither D32_SFLOAT nor X8_D24_UNORM_PACK32" ONE_LINE_STDERR)
 
+# Old swapchains destroyed only once the presentation engine is done with them
+# (VUID-vkDestroySwapchainKHR-swapchain-01282): the fault-injection layer checks every
+# vkDestroySwapchainKHR (fault_layer/fault_layer.cpp) and prints a line when the rule is broken. Without
+# VK_EXT_swapchain_maintenance1 (lavapipe has none): resizes in a window, each chapter, and 100 resizes
+# whose resident memory must not grow (a retired swapchain kept to the end would add its images).
+if(XVFB_RUN)
+    foreach(chapter 06 10 14 15 15-lab)
+        desktop_device_test(desktop.retire-swapchains.chapter-${chapter} ""
+            COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:chapter-${chapter}> --device llvmpipe
+                    --validation ${SIZE} --benchmark --warmup 0 --frames 40 --resize 500x300
+            EXPECT_STDOUT "present +window, no vsync\n" QUIET_STDERR)
+    endforeach()
+    if(JWM AND XDOTOOL)
+        desktop_device_test(desktop.retire-swapchains-window-life ""
+            COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" ${CMAKE_CURRENT_SOURCE_DIR}/window_life.sh
+                    $<TARGET_FILE:chapter-15> --device llvmpipe --validation ${SIZE}
+            EXPECT_STDOUT "resident memory slope over 100 resizes: -?[0-9]+ kB per resize" QUIET_STDERR)
+    endif()
+endif()
+
 # Old swapchains retired by present fences (VK_EXT_swapchain_maintenance1, which the layer emulates
 # on lavapipe): a run with resizes under validation, and 100 resizes whose resident memory must not
 # grow (a retired swapchain kept to the end would add its images at every resize).

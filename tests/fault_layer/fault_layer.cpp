@@ -34,8 +34,22 @@
 //                                   that retires swapchains by present fences runs here too.
 //                                   VK_EXT_surface_maintenance1, which it builds on, is offered by
 //                                   this layer's manifest and taken out before the driver sees it.
+//   VKBOOK_HIDE_LATER=FORMAT[,...]  hides those formats from a surface's formats once a swapchain
+//                                   has been made: the window moved to another screen, whose
+//                                   formats differ, and the next swapchain takes another format.
 // Only what the application asks of the physical device changes: the layers below still see the
 // real device, so validation checks what the application then does against what it enables.
+//
+// And it checks one rule no validation layer can (VUID-vkDestroySwapchainKHR-swapchain-01282):
+// a swapchain is destroyed only once the presentation engine is done with its images. Returning
+// from vkQueuePresentKHR or vkDeviceWaitIdle does not say so; what does, for a swapchain retired
+// by a newer one, is that an image of a newer swapchain presented after the retirement has been
+// acquired again and a wait on that acquire completed -- its fence seen signalled, or a
+// submission that waited on its semaphore seen done -- or (VK_EXT_swapchain_maintenance1) the
+// fences of all its presentations seen signalled. A swapchain still current is destroyed at the
+// end of a run: after a device wait, with no presentation since. A destruction that breaks the
+// rule prints "VK_LAYER_VKBOOK_fault_injection: vkDestroySwapchainKHR: ..." (a test's empty
+// stderr then fails); after a device loss nothing is checked.
 // Otherwise the layer prints nothing. It is an implicit layer that is only enabled when
 // VKBOOK_FAULT_LAYER=1 (see its manifest in tests/fault.cmake): the loader reports layers enabled
 // through VK_INSTANCE_LAYERS as a warning to the debug messenger, which --validation would count.
@@ -114,11 +128,32 @@ struct InstanceData {
     PFN_vkGetInstanceProcAddr next = nullptr;  // the next layer's (or the loader's) GetProcAddr
 };
 
+// What the layer knows of a swapchain, to check when it may be destroyed.
+struct SwapchainState {
+    bool retired = false;                      // a newer swapchain was made from it (oldSwapchain)
+    bool released = false;                     // retired, and the presentation engine is done with it
+    std::vector<VkSwapchainKHR> olderRetired;  // retired swapchains alive when this one was made
+    std::vector<bool> presented;               // per image: presented (after all of olderRetired retired)
+    std::vector<VkFence> presentFences;        // maintenance1: its presentations' fences not seen signalled
+};
+// An acquire of an image presented after `releases` were retired: once a wait on it is seen
+// complete, they are released.
+struct AcquireWait {
+    VkFence fence = VK_NULL_HANDLE;          // the acquire's fence
+    VkSemaphore semaphore = VK_NULL_HANDLE;  // the acquire's semaphore ...
+    bool waited = false;                     // ... waited on by a submission ...
+    VkFence submitFence = VK_NULL_HANDLE;    // ... with this fence
+    std::vector<VkSwapchainKHR> releases;
+};
+
 struct DeviceData {
     PFN_vkGetDeviceProcAddr getProcAddr = nullptr;  // the next layer's
     bool lost = false;         // once a loss is injected, everything that can report one does
     uint64_t allocations = 0;  // live VkDeviceMemory objects, for VKBOOK_MAX_ALLOCATIONS
-    struct {                   // the next layer's functions that we call down to
+    std::unordered_map<VkSwapchainKHR, SwapchainState> swapchains;
+    std::vector<AcquireWait> acquireWaits;
+    bool idleSincePresent = true;  // a device or queue wait returned since the last presentation
+    struct {                       // the next layer's functions that we call down to
         PFN_vkDestroyDevice destroyDevice;
         PFN_vkAllocateMemory allocateMemory;
         PFN_vkFreeMemory freeMemory;
@@ -135,6 +170,8 @@ struct DeviceData {
         PFN_vkGetQueryPoolResults getQueryPoolResults;
         PFN_vkAcquireNextImageKHR acquireNextImage;  // null without VK_KHR_swapchain
         PFN_vkQueuePresentKHR queuePresent;
+        PFN_vkCreateSwapchainKHR createSwapchain;
+        PFN_vkDestroySwapchainKHR destroySwapchain;
     } next{};
 };
 
@@ -167,8 +204,9 @@ struct Profile {
     bool maintenance1 = false;  // emulate VK_EXT_swapchain_maintenance1
     uint32_t apiVersion = 0;    // 0: the device's own
     std::vector<std::string> hidden;
-    unsigned long long heapMib = 0;  // 0: the device's own heap sizes
-    uint32_t maxAllocations = 0;     // 0: the device's own maxMemoryAllocationCount
+    std::vector<std::string> hiddenLater;  // formats hidden from surfaces once a swapchain exists
+    unsigned long long heapMib = 0;        // 0: the device's own heap sizes
+    uint32_t maxAllocations = 0;           // 0: the device's own maxMemoryAllocationCount
 };
 
 const std::unordered_map<std::string, VkFormat>& formatNames() {
@@ -224,6 +262,22 @@ Profile parseProfile() {
             start = comma + 1;
         }
     }
+    if (const char* later = std::getenv("VKBOOK_HIDE_LATER"); later && *later) {
+        std::string list = later;
+        for (size_t start = 0; start <= list.size();) {
+            size_t comma = list.find(',', start);
+            if (comma == std::string::npos) comma = list.size();
+            std::string name = list.substr(start, comma - start);
+            if (!formatNames().count(name))
+                std::fprintf(
+                    stderr,
+                    "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE_LATER names '%s', not a format it knows\n",
+                    name.c_str());
+            else
+                p.hiddenLater.push_back(name);
+            start = comma + 1;
+        }
+    }
     return p;
 }
 
@@ -238,13 +292,20 @@ bool hidden(const char* name) {
     return false;
 }
 
-bool hidden(VkFormat format) {
-    for (const std::string& h : profile().hidden) {
+bool named(const std::vector<std::string>& names, VkFormat format) {
+    for (const std::string& h : names) {
         auto found = formatNames().find(h);
         if (found != formatNames().end() && found->second == format) return true;
     }
     return false;
 }
+
+bool hidden(VkFormat format) {
+    return named(profile().hidden, format);
+}
+
+// Set once any device has made a swapchain (VKBOOK_HIDE_LATER).
+bool gSwapchainMade = false;
 
 // The extensions this layer answers for itself: never passed down.
 bool ours(const char* extension) {
@@ -368,6 +429,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createDevice(VkPhysicalDevice physical, const VkD
     resolve(data.next.getQueryPoolResults, next, *device, "vkGetQueryPoolResults");
     resolve(data.next.acquireNextImage, next, *device, "vkAcquireNextImageKHR");
     resolve(data.next.queuePresent, next, *device, "vkQueuePresentKHR");
+    resolve(data.next.createSwapchain, next, *device, "vkCreateSwapchainKHR");
+    resolve(data.next.destroySwapchain, next, *device, "vkDestroySwapchainKHR");
     std::lock_guard lock(gLock);
     gDevices[dispatchKey(*device)] = data;
     return VK_SUCCESS;
@@ -481,31 +544,114 @@ VKAPI_ATTR VkResult VKAPI_CALL createComputePipelines(VkDevice device, VkPipelin
     if (VkResult lost = deviceLoss(data, call); lost != VK_SUCCESS) return lost; \
     return data.next.function(__VA_ARGS__)
 
+// ---- When a swapchain may be destroyed (see the top of this file) --------------------------------
+// Each takes gLock.
+
+// A fence the application has seen signalled: the waits it completes release their swapchains.
+void fenceSeen(DeviceData& data, VkFence fence) {
+    std::erase_if(data.acquireWaits, [&](const AcquireWait& wait) {
+        if (wait.fence != fence && !(wait.waited && wait.submitFence == fence)) return false;
+        for (VkSwapchainKHR swapchain : wait.releases)
+            if (auto found = data.swapchains.find(swapchain); found != data.swapchains.end())
+                found->second.released = true;
+        return true;
+    });
+    for (auto& [handle, state] : data.swapchains) std::erase(state.presentFences, fence);
+}
+
+// A device or queue wait returned: every submission made is done.
+void idleSeen(DeviceData& data) {
+    std::erase_if(data.acquireWaits, [&](const AcquireWait& wait) {
+        if (!wait.waited) return false;
+        for (VkSwapchainKHR swapchain : wait.releases)
+            if (auto found = data.swapchains.find(swapchain); found != data.swapchains.end())
+                found->second.released = true;
+        return true;
+    });
+    data.idleSincePresent = true;
+}
+
+void semaphoreWaited(DeviceData& data, VkSemaphore semaphore, VkFence fence) {
+    for (AcquireWait& wait : data.acquireWaits)
+        if (!wait.waited && wait.semaphore == semaphore) {
+            wait.waited = true;
+            wait.submitFence = fence;
+        }
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL queueSubmit(VkQueue queue, uint32_t count, const VkSubmitInfo* submits,
                                            VkFence fence) {
-    LOSE_OR_PASS_DOWN(queue, "vkQueueSubmit", queueSubmit, queue, count, submits, fence);
+    DeviceData& data = deviceData(queue);
+    if (VkResult lost = deviceLoss(data, "vkQueueSubmit"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.queueSubmit(queue, count, submits, fence);
+    if (result == VK_SUCCESS) {
+        std::lock_guard lock(gLock);
+        for (uint32_t i = 0; i < count; ++i)
+            for (uint32_t w = 0; w < submits[i].waitSemaphoreCount; ++w)
+                semaphoreWaited(data, submits[i].pWaitSemaphores[w], fence);
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queueSubmit2(VkQueue queue, uint32_t count, const VkSubmitInfo2* submits,
                                             VkFence fence) {
-    LOSE_OR_PASS_DOWN(queue, "vkQueueSubmit2", queueSubmit2, queue, count, submits, fence);
+    DeviceData& data = deviceData(queue);
+    if (VkResult lost = deviceLoss(data, "vkQueueSubmit2"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.queueSubmit2(queue, count, submits, fence);
+    if (result == VK_SUCCESS) {
+        std::lock_guard lock(gLock);
+        for (uint32_t i = 0; i < count; ++i)
+            for (uint32_t w = 0; w < submits[i].waitSemaphoreInfoCount; ++w)
+                semaphoreWaited(data, submits[i].pWaitSemaphoreInfos[w].semaphore, fence);
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL waitForFences(VkDevice device, uint32_t count, const VkFence* fences,
                                              VkBool32 waitAll, uint64_t timeout) {
-    LOSE_OR_PASS_DOWN(device, "vkWaitForFences", waitForFences, device, count, fences, waitAll, timeout);
+    DeviceData& data = deviceData(device);
+    if (VkResult lost = deviceLoss(data, "vkWaitForFences"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.waitForFences(device, count, fences, waitAll, timeout);
+    if (result == VK_SUCCESS)
+        for (uint32_t i = 0; i < count; ++i)
+            if (waitAll || count == 1 || data.next.getFenceStatus(device, fences[i]) == VK_SUCCESS) {
+                std::lock_guard lock(gLock);
+                fenceSeen(data, fences[i]);
+            }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL getFenceStatus(VkDevice device, VkFence fence) {
-    LOSE_OR_PASS_DOWN(device, "vkGetFenceStatus", getFenceStatus, device, fence);
+    DeviceData& data = deviceData(device);
+    if (VkResult lost = deviceLoss(data, "vkGetFenceStatus"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.getFenceStatus(device, fence);
+    if (result == VK_SUCCESS) {
+        std::lock_guard lock(gLock);
+        fenceSeen(data, fence);
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL deviceWaitIdle(VkDevice device) {
-    LOSE_OR_PASS_DOWN(device, "vkDeviceWaitIdle", deviceWaitIdle, device);
+    DeviceData& data = deviceData(device);
+    if (VkResult lost = deviceLoss(data, "vkDeviceWaitIdle"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.deviceWaitIdle(device);
+    if (result == VK_SUCCESS) {
+        std::lock_guard lock(gLock);
+        idleSeen(data);
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queueWaitIdle(VkQueue queue) {
-    LOSE_OR_PASS_DOWN(queue, "vkQueueWaitIdle", queueWaitIdle, queue);
+    DeviceData& data = deviceData(queue);
+    if (VkResult lost = deviceLoss(data, "vkQueueWaitIdle"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.queueWaitIdle(queue);
+    if (result == VK_SUCCESS) {  // one queue per device in these programs
+        std::lock_guard lock(gLock);
+        idleSeen(data);
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL getQueryPoolResults(VkDevice device, VkQueryPool pool, uint32_t first,
@@ -515,10 +661,61 @@ VKAPI_ATTR VkResult VKAPI_CALL getQueryPoolResults(VkDevice device, VkQueryPool 
                       results, stride, flags);
 }
 
+VKAPI_ATTR VkResult VKAPI_CALL createSwapchain(VkDevice device, const VkSwapchainCreateInfoKHR* info,
+                                               const VkAllocationCallbacks* allocator,
+                                               VkSwapchainKHR* swapchain) {
+    DeviceData& data = deviceData(device);
+    VkResult result = data.next.createSwapchain(device, info, allocator, swapchain);
+    if (result != VK_SUCCESS) return result;
+    std::lock_guard lock(gLock);
+    gSwapchainMade = true;
+    if (auto old = data.swapchains.find(info->oldSwapchain); old != data.swapchains.end())
+        old->second.retired = true;
+    SwapchainState state;
+    for (auto& [handle, other] : data.swapchains)
+        if (other.retired && !other.released) state.olderRetired.push_back(handle);
+    data.swapchains[*swapchain] = std::move(state);
+    return result;
+}
+
+VKAPI_ATTR void VKAPI_CALL destroySwapchain(VkDevice device, VkSwapchainKHR swapchain,
+                                            const VkAllocationCallbacks* allocator) {
+    DeviceData& data = deviceData(device);
+    if (swapchain != VK_NULL_HANDLE) {
+        std::lock_guard lock(gLock);
+        auto found = data.swapchains.find(swapchain);
+        if (found != data.swapchains.end() && !data.lost) {
+            const SwapchainState& state = found->second;
+            bool presentFencesSeen = profile().maintenance1 && state.presentFences.empty();
+            if (!(data.idleSincePresent || state.released || (state.retired && presentFencesSeen)))
+                std::fprintf(stderr,
+                             "VK_LAYER_VKBOOK_fault_injection: vkDestroySwapchainKHR: %s swapchain destroyed "
+                             "while the presentation engine may still use its images (%s)\n",
+                             state.retired ? "a retired" : "the current",
+                             state.retired
+                                 ? "no wait on an acquire of an image presented after its retirement "
+                                   "was seen complete"
+                                 : "presented since the last device wait");
+        }
+        if (found != data.swapchains.end()) data.swapchains.erase(found);
+    }
+    data.next.destroySwapchain(device, swapchain, allocator);
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL acquireNextImage(VkDevice device, VkSwapchainKHR swapchain, uint64_t timeout,
                                                 VkSemaphore semaphore, VkFence fence, uint32_t* index) {
-    LOSE_OR_PASS_DOWN(device, "vkAcquireNextImageKHR", acquireNextImage, device, swapchain, timeout,
-                      semaphore, fence, index);
+    DeviceData& data = deviceData(device);
+    if (VkResult lost = deviceLoss(data, "vkAcquireNextImageKHR"); lost != VK_SUCCESS) return lost;
+    VkResult result = data.next.acquireNextImage(device, swapchain, timeout, semaphore, fence, index);
+    if (result == VK_SUCCESS || result == VK_SUBOPTIMAL_KHR) {
+        std::lock_guard lock(gLock);
+        auto found = data.swapchains.find(swapchain);
+        if (found != data.swapchains.end() && *index < found->second.presented.size() &&
+            found->second.presented[*index] && !found->second.olderRetired.empty())
+            data.acquireWaits.push_back(
+                {fence, semaphore, false, VK_NULL_HANDLE, found->second.olderRetired});
+    }
+    return result;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKHR* info) {
@@ -534,9 +731,22 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
     present.pNext = head.pNext;
     if (fences.previous == &head) fences.previous = nullptr;
     VkResult result = data.next.queuePresent(queue, &present);
-    if (fences.found &&
+    const auto* fenceInfo = reinterpret_cast<const VkSwapchainPresentFenceInfoEXT*>(fences.found);
+    {
+        std::lock_guard lock(gLock);
+        data.idleSincePresent = false;
+        for (uint32_t i = 0; i < info->swapchainCount; ++i) {
+            auto found = data.swapchains.find(info->pSwapchains[i]);
+            if (found == data.swapchains.end()) continue;
+            std::vector<bool>& presented = found->second.presented;
+            if (presented.size() <= info->pImageIndices[i]) presented.resize(info->pImageIndices[i] + 1);
+            presented[info->pImageIndices[i]] = true;
+            if (fenceInfo && fenceInfo->pFences[i] != VK_NULL_HANDLE)
+                found->second.presentFences.push_back(fenceInfo->pFences[i]);
+        }
+    }
+    if (fenceInfo &&
         (result == VK_SUCCESS || result == VK_SUBOPTIMAL_KHR || result == VK_ERROR_OUT_OF_DATE_KHR)) {
-        const auto* fenceInfo = reinterpret_cast<const VkSwapchainPresentFenceInfoEXT*>(fences.found);
         for (uint32_t i = 0; i < fenceInfo->swapchainCount; ++i)
             if (fenceInfo->pFences[i] != VK_NULL_HANDLE)
                 if (VkResult signalled = data.next.queueSubmit(queue, 0, nullptr, fenceInfo->pFences[i]);
@@ -666,7 +876,14 @@ VKAPI_ATTR VkResult VKAPI_CALL getPhysicalDeviceSurfaceFormats(VkPhysicalDevice 
     result = next(physical, surface, &all, offered.data());
     if (result != VK_SUCCESS && result != VK_INCOMPLETE) return result;
     offered.resize(all);
-    std::erase_if(offered, [](const VkSurfaceFormatKHR& f) { return hidden(f.format); });
+    bool later;
+    {
+        std::lock_guard lock(gLock);
+        later = gSwapchainMade;
+    }
+    std::erase_if(offered, [&](const VkSurfaceFormatKHR& f) {
+        return hidden(f.format) || (later && named(profile().hiddenLater, f.format));
+    });
     if (formats == nullptr) {
         *count = uint32_t(offered.size());
         return VK_SUCCESS;
@@ -701,6 +918,8 @@ PFN_vkVoidFunction interceptedDeviceCall(const char* name) {
         {"vkGetQueryPoolResults", reinterpret_cast<PFN_vkVoidFunction>(getQueryPoolResults)},
         {"vkAcquireNextImageKHR", reinterpret_cast<PFN_vkVoidFunction>(acquireNextImage)},
         {"vkQueuePresentKHR", reinterpret_cast<PFN_vkVoidFunction>(queuePresent)},
+        {"vkCreateSwapchainKHR", reinterpret_cast<PFN_vkVoidFunction>(createSwapchain)},
+        {"vkDestroySwapchainKHR", reinterpret_cast<PFN_vkVoidFunction>(destroySwapchain)},
     };
     auto found = calls.find(name);
     return found == calls.end() ? nullptr : found->second;
