@@ -207,9 +207,20 @@ void setUp(Chapter& c, const common::Options& options) {
 
 //> resize
 // After a resize only the images change size; the render pass and the pipeline (viewport and
-// scissor are dynamic) stay, the framebuffers that point at the images are rebuilt.
+// scissor are dynamic) stay, the framebuffers that point at the images are rebuilt. Unless the
+// images' format changed too (the window moved to a screen with other formats): the render pass
+// describes the format, and the pipeline is made for the render pass and encodes for the format.
 bool recreateTarget(Chapter& c) {
+    VkFormat format = c.target.format;
     if (!common::recreateTargetImages(c.target, c.device)) return false;
+    if (c.target.format != format) {
+        destroyPipeline(c.device, c.pipeline);
+        vkDestroyRenderPass(c.device.handle, c.renderPass, nullptr);
+        c.renderPass = VK_NULL_HANDLE;
+        c.renderPass = createRenderPass(c.device, c.target.format, c.target.presentLayout);
+        c.pipeline =
+            createPipeline(c.device, c.pipelineCache.handle, c.renderPass, c.vertexInput, c.target.format);
+    }
     destroyFramebuffers(c.device.handle, c.framebuffers);
     c.framebuffers = createFramebuffers(c.device, c.renderPass, c.target);
     return true;

@@ -108,6 +108,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
                                 const common::Target& target, const GBuffer& gbuffer) {
     LightingPass pass;
     pass.renderPass = createLightingRenderPass(device, target);
+    pass.targetFormat = target.format;
     // One framebuffer per target image, as chapter-06 makes them (common/target.cpp).
     pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
 
@@ -146,9 +147,18 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     return pass;
 }
 
-void resizeLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
-                        const GBuffer& gbuffer) {
+void resizeLightingPass(const common::Device& device, VkPipelineCache cache, LightingPass& pass,
+                        const common::Target& target, const GBuffer& gbuffer) {
     common::destroyFramebuffers(device, pass.framebuffers);
+    if (target.format != pass.targetFormat) {
+        vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+        vkDestroyRenderPass(device.handle, pass.renderPass, nullptr);
+        pass.pipeline = VK_NULL_HANDLE;
+        pass.renderPass = VK_NULL_HANDLE;
+        pass.renderPass = createLightingRenderPass(device, target);
+        pass.targetFormat = target.format;
+        pass.pipeline = makePipeline(device, cache, pass, target.format);
+    }
     pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
     writeAttachments(device, pass, gbuffer);
 }

@@ -27,7 +27,8 @@ static_assert(sizeof(LightingView) == 12 && offsetof(LightingView, near) == 4 &&
 
 struct LightingPass {
     VkRenderPass renderPass = VK_NULL_HANDLE;
-    std::vector<VkFramebuffer> framebuffers;  // one per target image
+    VkFormat targetFormat = VK_FORMAT_UNDEFINED;  // what the render pass and the pipeline were made for
+    std::vector<VkFramebuffer> framebuffers;      // one per target image
     VkDescriptorSetLayout attachmentsLayout = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkDescriptorSet attachmentsSet = VK_NULL_HANDLE;
@@ -41,9 +42,10 @@ struct LightingPass {
 LightingPass createLightingPass(const common::Device& device, VkPipelineCache cache,
                                 const common::Target& target, const GBuffer& gbuffer);
 // After a resize: new framebuffers for the new target images, the descriptor set pointed at the
-// new G-buffer. The device must be idle.
-void resizeLightingPass(const common::Device& device, LightingPass& pass, const common::Target& target,
-                        const GBuffer& gbuffer);
+// new G-buffer; and when the images' format changed (the window moved to a screen with other
+// formats), a render pass and a pipeline for the new one. The device must be idle.
+void resizeLightingPass(const common::Device& device, VkPipelineCache cache, LightingPass& pass,
+                        const common::Target& target, const GBuffer& gbuffer);
 // (Re-)records every target image's command buffer. The device must be idle.
 // Live reload: a new pipeline into `swap` when the reload changed lighting.vert or lighting.frag;
 // true when so (the command buffers must be recorded again once it is in place).

@@ -181,11 +181,12 @@ void setUp(Chapter& c, const common::Options& options) {
 //> resize
 // A new target size: new G-buffer attachments and geometry framebuffer, new lighting
 // framebuffers and descriptors, a new projection, and the lighting command buffers
-// recorded again. Render passes and pipelines stay.
+// recorded again. Render passes and pipelines stay, unless the target's format changed (the
+// lighting pass's, which write the target).
 bool recreateTarget(Chapter& c) {
     if (!common::recreateTargetImages(c.target, c.device)) return false;  // waits for the device
     resizeGeometryPass(c.device, c.geometryPass, c.target.extent);
-    resizeLightingPass(c.device, c.lightingPass, c.target, c.geometryPass.gbuffer);
+    resizeLightingPass(c.device, c.pipelineCache.handle, c.lightingPass, c.target, c.geometryPass.gbuffer);
     recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
     setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
                                                            c.scene.camera.near, c.scene.camera.far));

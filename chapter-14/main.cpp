@@ -167,6 +167,10 @@ bool recreateTarget(Chapter& c) {
     resizeScenePass(c.device, c.scenePass, c.target.extent);
     resizeLightPass(c.device, c.lightPass, c.target.extent, c.scenePass.gbuffer);
     common::resizePostPass(c.device, c.postPass, c.lightPass.output);
+    // The window may have moved to a screen with other formats: what writes the image follows.
+    common::retargetPostPass(c.device, c.pipelineCache.handle, c.postPass, c.target.format);
+    if (c.gui.enabled)
+        common::retargetGuiPass(c.device, c.pipelineCache.handle, c.guiPass, c.target.encodedFormat);
     return true;
 }
 //< resize

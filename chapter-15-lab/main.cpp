@@ -335,6 +335,9 @@ void run(const common::Options& options) {
         if (light.compute.pipeline) writeComputeOutput(device, light.compute, light.pass);
         if (tiled) resizeLightCulling(device, culling, target.extent);
         common::resizePostPass(device, postPass, light.pass.output);
+        // The window may have moved to a screen with other formats: what writes the image follows.
+        common::retargetPostPass(device, pipelineCache.handle, postPass, target.format);
+        if (gui.enabled) common::retargetGuiPass(device, pipelineCache.handle, guiPass, target.encodedFormat);
         return true;
     };
 

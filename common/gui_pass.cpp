@@ -106,6 +106,14 @@ void remakeGuiPipeline(const common::Device& device, VkPipelineCache cache, GuiP
                             [&] { return createGuiPipeline(device, cache, pass.pipelineLayout, format); });
 }
 
+void retargetGuiPass(const common::Device& device, VkPipelineCache cache, GuiPass& pass, VkFormat format) {
+    if (pass.pipeline == VK_NULL_HANDLE || format == pass.format) return;
+    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    pass.pipeline = VK_NULL_HANDLE;
+    pass.pipeline = createGuiPipeline(device, cache, pass.pipelineLayout, format);
+    pass.format = format;
+}
+
 GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFormat format,
                       uint32_t framesInFlight) {
     GuiPass pass;
@@ -140,6 +148,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     nameObject(device.handle, pass.pipelineLayout, "gui");
     pass.pipeline = createGuiPipeline(device, cache, pass.pipelineLayout, format);
+    pass.format = format;
     pass.frames.resize(framesInFlight);
     return pass;
 }

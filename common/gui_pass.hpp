@@ -35,6 +35,7 @@ struct GuiPass {
     VkDescriptorSet fontSet = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;  // of the view it draws through
     std::vector<GuiFrame> frames;
     uint32_t growths = 0;                            // how often a frame's buffers grew (reported at the end)
     size_t largestVertices = 0, largestIndices = 0;  // the most one frame drew
@@ -48,6 +49,9 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
 // Live reload: a new pipeline into `swap` when the reload changed gui.vert or gui.frag.
 void remakeGuiPipeline(const common::Device& device, VkPipelineCache cache, GuiPass& pass, VkFormat format,
                        const common::ShaderReload& reload, common::PipelineSwap& swap);
+// After the target was made again: when the format of the view it draws through changed (the
+// window moved to a screen with other formats), a pipeline for the new one. The device must be idle.
+void retargetGuiPass(const common::Device& device, VkPipelineCache cache, GuiPass& pass, VkFormat format);
 // Copies this frame's draw data (nullptr: none) into its buffers, growing them if needed. After
 // the frame's fence.
 void updateGuiBuffers(const common::Device& device, GuiPass& pass, uint32_t frame, const ImDrawData* draw);

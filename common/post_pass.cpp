@@ -10,6 +10,36 @@
 #include "common/formats.hpp"
 
 namespace common {
+namespace {
+
+//> post-specialization
+void createPostPipelines(const Device& device, VkPipelineCache cache, PostPass& pass, VkFormat targetFormat) {
+    // Two variants of one shader: constant_id 0 switches FXAA, constant_id 1 the sRGB encoding
+    // (only needed when the target format is not _SRGB, i.e. the hardware does not encode).
+    struct Constants {
+        VkBool32 fxaa;
+        VkBool32 encodeSrgb;
+    };
+    std::array<VkSpecializationMapEntry, 2> entries{{
+        {0, offsetof(Constants, fxaa), sizeof(VkBool32)},
+        {1, offsetof(Constants, encodeSrgb), sizeof(VkBool32)},
+    }};
+    for (uint32_t fxaa = 0; fxaa < 2; ++fxaa) {
+        Constants constants{fxaa, common::encodesSrgb(targetFormat) ? VK_FALSE : VK_TRUE};
+        VkSpecializationInfo specialization{
+            .mapEntryCount = uint32_t(entries.size()),
+            .pMapEntries = entries.data(),
+            .dataSize = sizeof(constants),
+            .pData = &constants,
+        };
+        pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "common/post.frag", targetFormat,
+                                                        {pass.inputLayout}, 0, &specialization);
+    }
+}
+//< post-specialization
+
+}  // namespace
+
 PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
                         const Image& lightOutput) {
     PostPass pass;
@@ -39,30 +69,14 @@ PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat ta
     nameObject(device.handle, pass.sampler, "post: input sampler");
     resizePostPass(device, pass, lightOutput);
 
-    //> post-specialization
-    // Two variants of one shader: constant_id 0 switches FXAA, constant_id 1 the sRGB encoding
-    // (only needed when the target format is not _SRGB, i.e. the hardware does not encode).
-    struct Constants {
-        VkBool32 fxaa;
-        VkBool32 encodeSrgb;
-    };
-    std::array<VkSpecializationMapEntry, 2> entries{{
-        {0, offsetof(Constants, fxaa), sizeof(VkBool32)},
-        {1, offsetof(Constants, encodeSrgb), sizeof(VkBool32)},
-    }};
-    for (uint32_t fxaa = 0; fxaa < 2; ++fxaa) {
-        Constants constants{fxaa, common::encodesSrgb(targetFormat) ? VK_FALSE : VK_TRUE};
-        VkSpecializationInfo specialization{
-            .mapEntryCount = uint32_t(entries.size()),
-            .pMapEntries = entries.data(),
-            .dataSize = sizeof(constants),
-            .pData = &constants,
-        };
-        pass.pipelines[fxaa] = createFullscreenPipeline(device, cache, "common/post.frag", targetFormat,
-                                                        {pass.inputLayout}, 0, &specialization);
-    }
-    //< post-specialization
+    createPostPipelines(device, cache, pass, targetFormat);
     return pass;
+}
+
+void retargetPostPass(const Device& device, VkPipelineCache cache, PostPass& pass, VkFormat targetFormat) {
+    if (pass.pipelines[0].outputFormat == targetFormat) return;
+    for (FullscreenPipeline& pipeline : pass.pipelines) destroyFullscreenPipeline(device, pipeline);
+    createPostPipelines(device, cache, pass, targetFormat);
 }
 
 void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutput) {

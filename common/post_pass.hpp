@@ -26,6 +26,10 @@ struct PostPass {
 PostPass createPostPass(const Device& device, VkPipelineCache cache, VkFormat targetFormat,
                         const Image& lightOutput);
 void resizePostPass(const Device& device, PostPass& pass, const Image& lightOutput);
+// After the target was made again: when its format changed (the window moved to a screen with
+// other formats), pipelines for the new one (its format and whether the shader sRGB-encodes).
+// The device must be idle.
+void retargetPostPass(const Device& device, VkPipelineCache cache, PostPass& pass, VkFormat targetFormat);
 void recordPostPass(VkCommandBuffer cmd, const PostPass& pass, const Target& target, uint32_t imageIndex,
                     bool fxaa, bool guiFollows = false);
 void destroyPostPass(const Device& device, PostPass& pass);

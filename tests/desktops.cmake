@@ -181,6 +181,41 @@ desktop_device_test(desktop.no-depth-format VKBOOK_HIDE=D32_SFLOAT,X8_D24_UNORM_
     COMMAND $<TARGET_FILE:chapter-10> --device llvmpipe --validation --headless
     EXPECT_EXIT 1 EXPECT_STDERR "can render to and sample neither D32_SFLOAT nor X8_D24_UNORM_PACK32" ONE_LINE_STDERR)
 
+# The window moved to a screen with other formats: after the first swapchain, the layer takes
+# B8G8R8A8_SRGB out of the surface's formats (VKBOOK_HIDE_LATER), so the swapchain made at the
+# resize is B8G8R8A8_UNORM. Whatever writes the image (render passes, pipelines, the post pass's sRGB
+# encoding, the overlay) must follow: the image after the resize is the golden one, validation-clean.
+if(XVFB_RUN)
+    foreach(chapter 06 10 14 15 15-lab)
+        set(start --width 320 --height 180)
+        set(end 640x360)
+        set(golden ${GOLDEN}/chapter-${chapter}-final.png)
+        if(chapter STREQUAL "06")
+            set(start ${SIZE})
+            set(end 1280x720)
+            set(golden ${GOLDEN}/chapter-06.png)
+        elseif(chapter STREQUAL "15-lab")
+            set(golden ${GOLDEN}/chapter-15-final.png)
+        endif()
+        set(name desktop.format-change.chapter-${chapter})
+        desktop_image_test(${name} ${golden}
+            COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" $<TARGET_FILE:chapter-${chapter}> --device llvmpipe
+                    --validation ${start} --benchmark --warmup 0 --frames 6 --resize ${end}
+                    --screenshot ${TEST_OUT}/${name}.png
+            EXPECT_STDOUT "target_format +B8G8R8A8_UNORM, SRGB_NONLINEAR" QUIET_STDERR)
+        set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE_LATER=B8G8R8A8_SRGB")
+    endforeach()
+    foreach(chapter 14 15 15-lab)
+        set(name desktop.format-change.chapter-${chapter}-gui)
+        desktop_image_test(${name} ${GOLDEN}/chapter-${chapter}-gui.png
+            COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" $<TARGET_FILE:chapter-${chapter}> --device llvmpipe
+                    --validation --width 320 --height 180 --gui --gui-still --frames 6 --resize 640x360
+                    --screenshot ${TEST_OUT}/${name}.png
+            QUIET_STDERR)
+        set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE_LATER=B8G8R8A8_SRGB")
+    endforeach()
+endif()
+
 # Old swapchains destroyed only once the presentation engine is done with them
 # (VUID-vkDestroySwapchainKHR-swapchain-01282): the fault-injection layer checks every
 # vkDestroySwapchainKHR (fault_layer/fault_layer.cpp) and prints a line when the rule is broken. Without
