@@ -136,7 +136,7 @@ case "${1:-}" in
     section=$(cat <<MARKDOWN
 Measured on **$(field device)** ($(field driver); host: $(cat "$work/machine.txt")), $(date -u +%Y-%m-%d), by
 \`bench/run.sh --gpu\` (Release binaries built on the lavapipe machine, copied to this one and run
-headless; every command below also had \`--json FILE\`).
+headless; every command below also had \`--json FILE\`). <!-- no test: how the figures were measured -->
 
 $(results "bandwidth --device NVIDIA --mib 1024")
 MARKDOWN
