@@ -54,6 +54,17 @@ function(ch10_bad name expected)
                  EXPECT_EXIT 2 EXPECT_STDERR "^chapter-10: error: ${expected}" ONE_LINE_STDERR)
 endfunction()
 ch10_bad(missing-model "/no/such/model.obj: no such file" --model /no/such/model.obj)
+# The camera's pitch: +-89 degrees accepted, a hair beyond refused (lookAt needs the view off vertical).
+foreach(pitch 90 -89.01 89)
+    file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/scenes/pitch${pitch}.json
+         "{\"models\": [{\"file\": \"${CMAKE_BINARY_DIR}/bin/scenes/default/courtyard.obj\"}], \"camera\": {\"position\": [0, 3, 12], \"pitch\": ${pitch}}}\n")
+endforeach()
+ch10_bad(pitch-beyond-89 ".*pitch90.json: camera.pitch: must be between -89 and 89, got 90"
+         --scene ${CMAKE_CURRENT_BINARY_DIR}/scenes/pitch90.json)
+ch10_bad(pitch-below-89 ".*pitch-89.01.json: camera.pitch: must be between -89 and 89, got -89.01"
+         --scene ${CMAKE_CURRENT_BINARY_DIR}/scenes/pitch-89.01.json)
+chapter_test(chapter-10.pitch-89 COMMAND ${CH10_RUN} --headless --frames 1
+             --scene ${CMAKE_CURRENT_BINARY_DIR}/scenes/pitch89.json QUIET_STDERR)
 ch10_bad(missing-scene "/no/such/scene.json: no such file" --scene /no/such/scene.json)
 ch10_bad(empty-obj ".*empty.obj: the model has no triangles" --model ${DATA}/empty.obj)
 ch10_bad(obj-index-range ".*bad_index.obj: a face refers to a vertex" --model ${DATA}/bad_index.obj)

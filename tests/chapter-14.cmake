@@ -15,7 +15,7 @@ foreach(view final albedo depth)
     # Render-pass deferred shading (chapter-10) and dynamic rendering (chapter-14) agree, on
     # images both rendered in this run.
     add_test(NAME chapter-14.same-as-chapter-10-${view} COMMAND image_compare ${TEST_OUT}/chapter-14-${view}.png
-        --golden ${TEST_OUT}/chapter-10-${view}.png --max-diff 5 --max-fraction 0.001)
+        --golden ${TEST_OUT}/chapter-10-${view}.png --max-diff 1 --max-fraction 0)
     set_tests_properties(chapter-14.same-as-chapter-10-${view} PROPERTIES FIXTURES_REQUIRED "ch14-${view};ch10-${view}")
 endforeach()
 

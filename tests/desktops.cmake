@@ -89,6 +89,18 @@ if(XVFB_RUN)
                     --gui --gui-still --frames 3 --screenshot ${TEST_OUT}/desktop.depth30.chapter-${chapter}-gui.png
             QUIET_STDERR)
     endforeach()
+    # A swapchain that cannot be viewed as _UNORM (no VK_KHR_swapchain_mutable_format): the overlay's
+    # vertex shader decodes its colours instead, so its opaque pixels are those of the sRGB golden
+    # image and its translucent panels blend in linear light (their own golden image,
+    # chapter-NN-gui-linear-blend.png: the panels a little lighter, nothing else differs).
+    foreach(chapter 14 15)
+        set(name desktop.no-mutable-swapchain.chapter-${chapter}-gui)
+        desktop_image_test(${name} ${GOLDEN}/chapter-${chapter}-gui-linear-blend.png
+            COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:chapter-${chapter}> --device llvmpipe
+                    --validation ${SIZE} --gui --gui-still --frames 3 --screenshot ${TEST_OUT}/${name}.png
+            QUIET_STDERR)
+        set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE=VK_KHR_swapchain_mutable_format")
+    endforeach()
     # A format the surface does not offer, and a surface that offers none we can use.
     chapter_test(desktop.window-format-not-offered
         COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:chapter-06> --device llvmpipe
@@ -173,6 +185,18 @@ desktop_image_test(desktop.no-d32.chapter-15-depth ${GOLDEN}/chapter-15-depth.pn
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless ${SIZE} --view depth
             --screenshot ${TEST_OUT}/desktop.no-d32.chapter-15-depth.png QUIET_STDERR)
 set_tests_properties(desktop.no-d32.chapter-15-depth PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE=D32_SFLOAT")
+# Vulkan 1.0: every chapter refused in one line (chapters 06 and 10 need 1.1).
+foreach(chapter 06 10)
+    desktop_device_test(desktop.vulkan-1.0.chapter-${chapter} VKBOOK_DEVICE_API=1.0
+        COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
+        EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.0. this chapter needs Vulkan 1.1" ONE_LINE_STDERR)
+endforeach()
+# Headless on a device that cannot render to B8G8R8A8_SRGB: R8G8B8A8_SRGB, the same image.
+desktop_image_test(desktop.no-bgra-srgb.chapter-06 ${GOLDEN}/chapter-06.png
+    COMMAND $<TARGET_FILE:chapter-06> --device llvmpipe --validation --headless --benchmark --warmup 0 --frames 1
+            --screenshot ${TEST_OUT}/desktop.no-bgra-srgb.chapter-06.png
+    EXPECT_STDOUT "target_format +R8G8B8A8_SRGB, SRGB_NONLINEAR" QUIET_STDERR)
+set_tests_properties(desktop.no-bgra-srgb.chapter-06 PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE=B8G8R8A8_SRGB")
 # Reversed-Z needs float depth: the lab's compact layout is refused in one line.
 desktop_device_test(desktop.no-d32.lab-reversed-z VKBOOK_HIDE=D32_SFLOAT
     COMMAND $<TARGET_FILE:chapter-15-lab> --device llvmpipe --validation --headless --gbuffer compact

@@ -26,7 +26,9 @@ foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/scene.
         EXPECT_STDOUT "error: .*${file}:[0-9]+: error: .*runtime_shaders: error: ok")
     set_property(TEST shaders.${program}.compile-error APPEND PROPERTY ENVIRONMENT FILE=${file})
 endforeach()
-foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/light.frag")
+foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-10;chapter-10/lighting.frag"
+             "chapter-14;chapter-14/light.frag" "chapter-15;chapter-15/light.frag"
+             "chapter-15-lab;chapter-15-lab/light.frag")
     list(GET case 0 program)
     list(GET case 1 file)
     chapter_test(shaders.${program}.interface-change-refused
@@ -34,6 +36,21 @@ foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-15;chapter-15/light.
                 $<TARGET_FILE:image_compare> $<TARGET_FILE:${program}> ${SMALL}
         EXPECT_STDOUT "interface changed: .*runtime_shaders: interface: ok")
     set_property(TEST shaders.${program}.interface-change-refused APPEND PROPERTY ENVIRONMENT FILE=${file})
+endforeach()
+# --check-output fails on a bad light output: every pixel negative, then NaN.
+foreach(case "chapter-15;chapter-15/light.frag" "chapter-15-lab;chapter-15-lab/light.frag")
+    list(GET case 0 program)
+    list(GET case 1 file)
+    foreach(value "negative;-1.0;0 NaN, 0 infinite, [0-9]+ negative" "nan;uintBitsToFloat(0x7fc00000u);[0-9]+ NaN, 0 infinite")
+        list(GET value 0 kind)
+        list(GET value 1 glsl)
+        list(GET value 2 expected)
+        chapter_test(shaders.${program}.check-output-${kind}
+            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh bad-output ${SHADER_SOURCES}
+                    $<TARGET_FILE:image_compare> $<TARGET_FILE:${program}> ${SMALL}
+            EXPECT_STDOUT "light output 320x180: ${expected}")
+        set_property(TEST shaders.${program}.check-output-${kind} APPEND PROPERTY ENVIRONMENT FILE=${file} VALUE=${glsl})
+    endforeach()
 endforeach()
 chapter_test(shaders.chapter-06.copied-without-sources
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh no-sources ${SHADER_SOURCES}

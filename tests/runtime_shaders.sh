@@ -30,8 +30,13 @@ newer)
     cp -r "$shaders" "$work/shaders"
     sed -i 's/vec3(1.0, 0.0, 0.0)/vec3(1.0, 0.0, 1.0)/' "$work/shaders/$FILE"
     grep -q "vec3(1.0, 0.0, 1.0)" "$work/shaders/$FILE" || fail "the edit did not apply to $FILE"
+    # The build's SPIR-V stays the build's: the program compiles in memory and writes no .spv.
+    spirv=$(cd "$(dirname "$chapter")/shaders" && find . -name '*.spv' -exec md5sum {} + | sort)
     "$chapter" "$@" --headless --shader-dir "$work/shaders" --screenshot "$work/edited.png" > "$work/stdout" ||
         fail "the run with the edited source failed"
+    [ "$(cd "$(dirname "$chapter")/shaders" && find . -name '*.spv' -exec md5sum {} + | sort)" = "$spirv" ] ||
+        fail "the run changed the build's .spv files"
+    [ -z "$(find "$work/shaders" -name '*.spv')" ] || fail "the run wrote .spv files beside the sources"
     grep -q "^shaders: compiled $FILE (its source is newer than the build's SPIR-V)" "$work/stdout" ||
         fail "no 'compiled $FILE' line: $(cat "$work/stdout")"
     "$image_compare" "$work/edited.png" $PIXELS || fail "the edit is not in the image"
@@ -77,6 +82,25 @@ EOF
     grep -q "$FILE: interface changed: it uses set 6 binding 0 (uniform block ExtraInput)" "$work/stderr" ||
         fail "not refused as an interface change: $(cat "$work/stderr")"
     cat "$work/stderr"
+    ;;
+bad-output)
+    # --check-output on a light output with a bad value (VALUE: a GLSL float written to every
+    # pixel by the light shader FILE): exit 1 and one line.
+    cp -r "$shaders" "$work/shaders"
+    python3 - "$work/shaders/$FILE" "$VALUE" << 'EOF'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+end = text.rindex('}')
+start = text.rindex('\n', 0, end) + 1
+open(path, 'w').write(text[:start] + '    outColor = vec4(vec3(%s), 1.0);\n' % sys.argv[2] + text[start:])
+EOF
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" --check-output --frames 2 > "$work/stdout" 2> "$work/stderr"
+    status=$?
+    [ $status = 1 ] || fail "exit code $status, expected 1"
+    [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
+    grep -q "the light output has NaN, infinite or negative values" "$work/stderr" || fail "$(cat "$work/stderr")"
+    grep "^light output" "$work/stdout"
     ;;
 no-sources)
     mkdir -p "$work/bin"

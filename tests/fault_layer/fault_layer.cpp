@@ -19,7 +19,7 @@
 // and keep a consistent picture. VKBOOK_FAULT_TRACE=1 prints each counted call, to choose n.
 //
 // It also makes the device look older or poorer than it is, as a reader's may be:
-//   VKBOOK_DEVICE_API=1.2 (or 1.1)  the physical device reports that Vulkan version;
+//   VKBOOK_DEVICE_API=1.2 (1.1, 1.0) the physical device reports that Vulkan version;
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...) and
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
 //                                   among a surface's formats).
@@ -235,13 +235,15 @@ Profile parseProfile() {
                 emulate);
     }
     if (const char* api = std::getenv("VKBOOK_DEVICE_API"); api && *api) {
-        if (std::strcmp(api, "1.1") == 0)
+        if (std::strcmp(api, "1.0") == 0)
+            p.apiVersion = VK_API_VERSION_1_0;
+        else if (std::strcmp(api, "1.1") == 0)
             p.apiVersion = VK_API_VERSION_1_1;
         else if (std::strcmp(api, "1.2") == 0)
             p.apiVersion = VK_API_VERSION_1_2;
         else
             std::fprintf(stderr,
-                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.1 or 1.2\n", api);
+                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.0, 1.1 or 1.2\n", api);
     }
     if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap)
         p.heapMib = std::strtoull(heap, nullptr, 10);

@@ -179,6 +179,10 @@ void writeSame(const fs::path& dir) {
     file.writeGltf(dir / "model.gltf");
     file.writeEmbedded(dir / "model_embedded.gltf", dir);
     file.writeGlb(dir / "model.glb", dir);
+    // No scene at all (3.5.1 leaves it optional): every root node is drawn, the same two quads.
+    file.root.erase("scene");
+    file.root.erase("scenes");
+    file.writeGltf(dir / "model_no_scene.gltf");
 }
 
 // ---- Hostile files --------------------------------------------------------------------------
