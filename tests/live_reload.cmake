@@ -98,9 +98,13 @@ foreach(rule block-grown member-moved image-type array-size push-grown output-mo
     live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()
-foreach(rule accept-unused-member accept-fewer-resources)
+foreach(rule accept-unused-member accept-fewer-resources accept-renamed accept-new-constant accept-capabilities)
     live_test(live-reload.chapter-15.${rule} accept chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
+endforeach()
+foreach(rule input-components new-varying)
+    live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/scene.frag COMMAND $<TARGET_FILE:chapter-15>)
+    set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()
 live_test(live-reload.chapter-15.rule-constant-type rule chapter-15/scene.frag COMMAND $<TARGET_FILE:chapter-15>)
 set_property(TEST live-reload.chapter-15.rule-constant-type APPEND PROPERTY ENVIRONMENT RULE=constant-type)
@@ -121,6 +125,16 @@ foreach(case "chapter-06;chapter-06/triangle.frag;chapter-06/triangle.vert"
     live_test(live-reload.${program}.pipeline-fails fault ${file} COMMAND $<TARGET_FILE:${program}> --device llvmpipe)
     set_property(TEST live-reload.${program}.pipeline-fails APPEND PROPERTY ENVIRONMENT
                  XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 RETOUCH=${other})
+endforeach()
+# A reload makes only the pipelines whose shaders changed: chapter-15's light shader, one; the post
+# shader, two (with and without FXAA); none of the scene pass's.
+foreach(case "light;chapter-15/light.frag;1" "post;common/post.frag;2")
+    list(GET case 0 kind)
+    list(GET case 1 file)
+    list(GET case 2 count)
+    live_test(live-reload.chapter-15.pipelines-${kind} edit ${file} COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe)
+    set_property(TEST live-reload.chapter-15.pipelines-${kind} APPEND PROPERTY ENVIRONMENT
+                 XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=${count})
 endforeach()
 # The second of the post pass's two pipelines fails: the first, already made, is destroyed.
 live_test(live-reload.chapter-15.pipeline-fails-second fault common/post.frag

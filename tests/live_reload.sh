@@ -37,6 +37,9 @@
 #              resident memory is read every 5th and its least-squares slope must stay under
 #              SLOPE_LIMIT_KB per reload (tests/window_life.sh's method); the exit code covers
 #              leaked Vulkan objects (--validation reports them at exit).
+# With EXPECT_PIPELINES=N (and the fault-injection layer loaded, VKBOOK_FAULT_LAYER=1), the reload
+# must make exactly N pipelines (vkCreateGraphicsPipelines and vkCreateComputePipelines calls,
+# counted by the layer's VKBOOK_FAULT_TRACE): only those whose shaders the edit changed.
 # Exit code 0 when all holds; the chapter's own exit code must be 0 (with --validation: no message).
 set -u
 scenario=$1 shaders=$2 shader=${3%%=*} shader_name=${3#*=} image_compare=$4 chapter=$5
@@ -116,6 +119,12 @@ if [ "$scenario" = fault ]; then
         2>&1 > /dev/null | grep -c "fault_injection: $call #")
     [ "$made" -gt 0 ] || fail "the fault-injection layer is not loaded (no $call counted)"
     export VKBOOK_FAULT=$call:$((made + ${FAULT_OFFSET:-1}))
+fi
+if [ -n "${EXPECT_PIPELINES:-}" ]; then
+    made=$(VKBOOK_FAULT_TRACE=1 "$chapter" "${chapter_options[@]}" --validation --headless --frames 1 --shader-dir "$work/edited" \
+        2>&1 > /dev/null | grep -cE "fault_injection: vkCreate(Graphics|Compute)Pipelines #")
+    [ "$made" -gt 0 ] || fail "the fault-injection layer is not loaded (no pipeline counted)"
+    export VKBOOK_FAULT_TRACE=1
 fi
 run_options=(--shader-dir "$work/edited" --screenshot "$work/last.png")
 [ $headless = 1 ] && run_options+=(--frames 10000000)
@@ -237,6 +246,15 @@ wait "$pid"
 status=$?
 [ $status = 0 ] || fail "the chapter exited with $status"
 grep "^shaders: reloaded" "$work/stdout" | tail -1
+if [ -n "${EXPECT_PIPELINES:-}" ]; then
+    total=$(grep -cE "fault_injection: vkCreate(Graphics|Compute)Pipelines #" "$work/stderr")
+    [ $((total - made)) = "$EXPECT_PIPELINES" ] ||
+        fail "the reload made $((total - made)) pipelines ($total in all, $made at start-up), not $EXPECT_PIPELINES"
+    echo "live_reload: the reload made $((total - made)) pipeline(s), as expected"
+    grep -v "^VK_LAYER_VKBOOK_fault_injection: " "$work/stderr" > "$work/stderr.kept"
+    mv "$work/stderr.kept" "$work/stderr"
+    unset VKBOOK_FAULT_TRACE
+fi
 
 # With the object-names layer (tests/names.cmake): every object the run made, the reloads'
 # pipelines included, has a name.
