@@ -67,5 +67,20 @@ file(MAKE_DIRECTORY ${TEST_OUT}/dir.png)
 # A damaged or foreign pipeline cache is ignored with a warning and then replaced.
 add_test(NAME chapter-06.pipeline-cache COMMAND ${CMAKE_COMMAND} -DCHAPTER=${CH06}
          -DCACHE_HOME=${CMAKE_CURRENT_BINARY_DIR}/cache-test-06 -P ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_cache.cmake)
+# A run killed between writing its new cache and the rename that replaces the old one: the old
+# cache whole, the next run quiet (gdb stops it at rename(), tests/cache_crash.sh). And runs at
+# once, several rounds, sharing one cache: every run quiet.
+find_program(GDB gdb)
+if(GDB AND CMAKE_SYSTEM_NAME STREQUAL "Linux")
+    chapter_test(chapter-06.pipeline-cache-killed-at-rename
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cache_crash.sh $<TARGET_FILE:chapter-06> --headless --device llvmpipe
+                --frames 1
+        EXPECT_STDOUT "killed at rename.*the old cache is whole.*the next run loads the old cache")
+endif()
+chapter_test(chapter-15.pipeline-cache-concurrent-runs
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/concurrent_runs.sh 4 3 -- $<TARGET_FILE:chapter-15> --headless
+            --device llvmpipe --validation --width 320 --height 180 --frames 2)
+set_tests_properties(chapter-15.pipeline-cache-concurrent-runs PROPERTIES
+    ENVIRONMENT XDG_CACHE_HOME=${CMAKE_CURRENT_BINARY_DIR}/cache-concurrent)
 
 standalone_build_test(06 BUILD_TYPE Debug)  # shaders with debug information

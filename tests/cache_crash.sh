@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# A run killed between writing its new pipeline cache and renaming it over the old one, as a crash
+# or a power cut would kill it: gdb stops the chapter at rename() (common/pipeline.cpp,
+# savePipelineCache) and kills it there. The old cache must be untouched (the same bytes), and the
+# next run must load it with nothing on stderr and leave no temporary file of its own.
+#
+#   cache_crash.sh CHAPTER [options...]
+set -u
+chapter=$1
+shift
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export XDG_CACHE_HOME=$work/cache
+fail() {
+    echo "cache_crash: $*"
+    exit 1
+}
+"$chapter" "$@" > /dev/null 2> "$work/err" || fail "first run failed: $(cat "$work/err")"
+cache=$(ls "$XDG_CACHE_HOME"/vulkan-book-cpp/*.bin 2> /dev/null | head -1)
+[ -n "$cache" ] || fail "the first run wrote no cache"
+before=$(md5sum < "$cache")
+# Only our rename: Mesa's own shader cache, which renames files too, is off for this run.
+MESA_SHADER_CACHE_DISABLE=true gdb -batch -nx -ex 'set breakpoint pending on' -ex 'break rename' -ex run -ex bt -ex kill \
+    --args "$chapter" "$@" > "$work/gdb.txt" 2>&1
+grep -q "hit Breakpoint 1.*rename" "$work/gdb.txt" || fail "the run did not stop at rename(): $(tail -5 "$work/gdb.txt")"
+grep -q "savePipelineCache" "$work/gdb.txt" || fail "stopped at another rename(): $(grep -A8 'hit Breakpoint' "$work/gdb.txt")"
+temporary=$(ls "$XDG_CACHE_HOME"/vulkan-book-cpp/*.tmp* 2> /dev/null | head -1)
+[ -n "$temporary" ] || fail "no temporary file: the run was not killed between the write and the rename"
+[ "$(md5sum < "$cache")" = "$before" ] || fail "the cache changed although the run died before its rename"
+echo "cache_crash: killed at rename(); the old cache is whole, $(basename "$temporary") left behind"
+"$chapter" "$@" > /dev/null 2> "$work/err" || fail "the next run failed: $(cat "$work/err")"
+[ -s "$work/err" ] && fail "the next run printed: $(cat "$work/err")"
+echo "cache_crash: the next run loads the old cache with nothing on stderr"
