@@ -488,7 +488,38 @@ void writeHostile(const fs::path& dir) {
         f.root["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
             f.values(colors, gltf::kFloat, "VEC4");
     });
+    make("skin.gltf", [](gltf::File& f) {
+        f.root["skins"] = json::array({{{"joints", {0}}}});
+        f.root["nodes"][0]["skin"] = 0;
+    });
+    make("morph_targets.gltf", [](gltf::File& f) {
+        std::vector<vec3> offsets(3, vec3(0, 0, 0.5f));
+        f.root["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", f.positions(offsets)}}});
+        f.root["meshes"][0]["weights"] = {1.0};
+    });
+    make("camera.gltf", [](gltf::File& f) {
+        f.root["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}});
+    });
+    make("animation.gltf", [](gltf::File& f) {
+        std::vector<float> times{0.0f, 1.0f};
+        std::vector<vec3> moves{vec3(0), vec3(1, 0, 0)};
+        int input = f.values(times, gltf::kFloat, "SCALAR");
+        f.root["accessors"][input]["min"] = {0.0};
+        f.root["accessors"][input]["max"] = {1.0};
+        int output = f.values(moves, gltf::kFloat, "VEC3");
+        f.root["animations"] = json::array(
+            {{{"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})},
+              {"samplers", json::array({{{"input", input}, {"output", output}}})}}});
+    });
     writePng(dir / "white.png", 1, 1, 4, {255, 255, 255, 255});
+    make("second_uv_set.gltf", [](gltf::File& f) {
+        std::vector<glm::vec2> uv(3, glm::vec2(0.5f));
+        f.root["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = f.values(uv, gltf::kFloat, "VEC2");
+        f.root["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = f.values(uv, gltf::kFloat, "VEC2");
+        json info = {{"index", f.texture(f.image("white.png"))}, {"texCoord", 1}};
+        f.root["meshes"][0]["primitives"][0]["material"] =
+            f.material({{"pbrMetallicRoughness", {{"baseColorTexture", info}}}});
+    });
     make("texture_transform.gltf", [](gltf::File& f) {
         f.root["extensionsUsed"] = {"KHR_texture_transform"};
         json info = {{"index", f.texture(f.image("white.png"))},
