@@ -43,6 +43,14 @@ foreach(light ambient sun)
     set_tests_properties(gltf.cases-${light}-image PROPERTIES FIXTURES_REQUIRED gltf-cases-${light})
 endforeach()
 
+# Zero normals and tangents under a normal map that decodes to almost nothing: no NaN, no
+# infinity, nothing negative in the light output, validation-clean.
+chapter_test(gltf.zero-tangent-frame WORKDIR /
+    COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 320 --height 180
+            --model ${GLTF}/degenerate/zero_frame.gltf --check-output
+    EXPECT_STDOUT "chapter-15: 1 draws, 2 triangles.*light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+set_tests_properties(gltf.zero-tangent-frame PROPERTIES FIXTURES_REQUIRED gltf-cases)
+
 # The same model as .gltf + .bin, .gltf with data: URIs, and .glb: the same image, to the bit; and
 # without a scene, whose root nodes are then all drawn.
 foreach(form model.gltf model_embedded.gltf model.glb model_no_scene.gltf)

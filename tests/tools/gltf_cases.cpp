@@ -185,6 +185,35 @@ void writeSame(const fs::path& dir) {
     file.writeGltf(dir / "model_no_scene.gltf");
 }
 
+// ---- A degenerate tangent frame --------------------------------------------------------------
+
+// A normal-mapped quad whose normals and tangents are all zero (an exporter's bug, or vectors
+// interpolated to nothing), under a normal map whose texel decodes to almost nothing and with
+// normalTexture.scale 0: every normalisation in the scene shader meets a zero vector, and its
+// fallback must keep NaN out of the image.
+void writeDegenerate(const fs::path& dir) {
+    fs::create_directories(dir);
+    writePng(dir / "flat_normal.png", 1, 1, 4, {128, 128, 128, 255});
+    gltf::File file;
+    json normalTexture = {{"index", file.texture(file.image("flat_normal.png"))}, {"scale", 0.0}};
+    int m = file.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)},
+                           {"normalTexture", normalTexture},
+                           {"doubleSided", true}});
+    Quad q;
+    std::vector<vec3> zeros(4, vec3(0));
+    std::vector<glm::vec4> zeroTangents(4, glm::vec4(0, 0, 0, 1));
+    json attributes = {{"POSITION", file.positions(q.positions)},
+                       {"TEXCOORD_0", file.values(q.uvs, gltf::kFloat, "VEC2")},
+                       {"NORMAL", file.values(zeros, gltf::kFloat, "VEC3")},
+                       {"TANGENT", file.values(zeroTangents, gltf::kFloat, "VEC4")}};
+    json primitive = {{"attributes", attributes},
+                      {"indices", file.values(q.indices, gltf::kUnsignedShort, "SCALAR")},
+                      {"material", m}};
+    file.node({{"mesh", file.mesh(json::array({primitive}))}});
+    file.scene({0});
+    file.writeGltf(dir / "zero_frame.gltf");
+}
+
 // ---- Hostile files --------------------------------------------------------------------------
 
 // A valid triangle model's JSON and buffer, for the hostile cases to break.
@@ -627,6 +656,7 @@ int main(int argc, char** argv) {
         fs::path dir = argv[1];
         writeCases(dir / "cases");
         writeSame(dir / "same");
+        writeDegenerate(dir / "degenerate");
         writeHostile(dir / "hostile");
         writeBookClone(dir / "book");
         return 0;
