@@ -7,9 +7,10 @@
                                          "(test: NAME)" or "(tests: NAME, NAME)", or says why it
                                          needs none in a comment right after it,
                                          "<!-- no test: WHY -->" (it describes the book, an
-                                         algorithm, a figure; or "UNTESTED: ..." for a promise no
-                                         test checks yet, which the check counts and prints);
-                                         and every NAME cited is a test of
+                                         algorithm, a figure, or says itself what no test
+                                         covers); a WHY that starts "UNTESTED" marks a promise
+                                         no test checks yet, and fails the check like a missing
+                                         citation; and every NAME cited is a test of
                                          `ctest -N` in BUILD (a NAME may end in '*': then at least
                                          one test starts with the part before it)
   docs_promises.py anchors ROOT          every link from these pages to a page of the repository
@@ -112,6 +113,8 @@ def check_promises(root, build, problem):
     for page, line, sentence, cited, exempt in promises(root):
         if not cited and not exempt:
             problem(f"{page}:{line}: a promise with no (test: ...) and no <!-- no test: ... -->: {sentence[:160]}")
+        if "no test: UNTESTED" in sentence:
+            problem(f"{page}:{line}: a promise marked UNTESTED: test it, or say only what is tested: {sentence[:160]}")
         for name in cited:
             if not name:
                 problem(f"{page}:{line}: an empty test name in a citation")
@@ -178,9 +181,6 @@ def main():
         check_anchors(root, problems.append)
     for p in problems:
         print(p)
-    if mode == "promises":
-        untested = sum(1 for _, _, sentence, _, _ in promises(root) if "no test: UNTESTED" in sentence)
-        print(f"docs_promises.py: {untested} promise(s) marked UNTESTED (no test checks them yet)")
     if problems:
         print(f"{len(problems)} problem(s)")
         return 1
