@@ -401,8 +401,8 @@ FileUris checkGltfJson(const json& root, const std::string& origin, bool glb) {
 
 // The file system as tinygltf sees it: files inside the model's directory only (tinygltf also
 // looks in the working directory), regular files only (a pipe would block), no path expansion
-// (tinygltf's own runs the shell's wordexp on the URI), nothing written. Image files are not read
-// here: tinygltf would read each one whole only for us to drop the bytes (the texture upload reads
+// (tinygltf's own ran the shell's wordexp on the URI before version 2.6), nothing written. Image files are
+// not read here: tinygltf would read each one whole only for us to drop the bytes (the texture upload reads
 // and decodes them, on every core), so they are refused, which tinygltf takes as a warning and
 // keeps the image's URI.
 struct ModelFiles {

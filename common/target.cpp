@@ -506,12 +506,12 @@ void destroyTargetImages(Target& target, const Device& device) {
     vkDestroyFence(device.handle, target.acquireFence, nullptr);
     target.acquireFence = VK_NULL_HANDLE;
     target.acquireFencePending = false;
-    // Without maintenance1, swapchains still retired have had no acquire to tell: after the
-    // device wait, with nothing presented since, they go as the current one does (as Khronos'
-    // swapchain_recreation sample does at its end).
-    destroyRetired(target, device, target.retired.size());
     if (target.swapchain != VK_NULL_HANDLE) vkDestroySwapchainKHR(device.handle, target.swapchain, nullptr);
     target.swapchain = VK_NULL_HANDLE;
+    // Without maintenance1, swapchains still retired have had no acquire to tell: after the
+    // device wait, with nothing presented since and no swapchain left in use, they go as the
+    // current one did (as Khronos' swapchain_recreation sample does at its end).
+    destroyRetired(target, device, target.retired.size());
 }
 
 void destroyTargetSurface(Target& target, const Instance& instance) {

@@ -43,30 +43,40 @@ for program in "${programs[@]}"; do
     [ -f "$program" ] || { echo "gpu_package.sh: $program is missing (build it first)" >&2; exit 1; }
 done
 
-# The package that owns a library ldd resolved (Debian 12 merges /lib into /usr/lib: a library
-# found under /lib is registered under /usr/lib).
+# The package that owns a library ldd resolved. Debian 12 merges /lib into /usr/lib, and a
+# package registers its files under either: try the path as found, with /usr added or taken
+# away, and the file a symbolic link points at. (dpkg -S also prints diversions; those lines are
+# not owners.)
 owner() {
     local path=$1 candidate
-    for candidate in "$path" "/usr$path" "$(readlink -f "$path")"; do
-        dpkg -S "$candidate" 2>/dev/null | sed -n '1s/:.*//p' | grep . && return 0
+    for candidate in "$path" "/usr$path" "${path#/usr}" "$(readlink -f "$path")"; do
+        dpkg -S "$candidate" 2>/dev/null | grep -v '^diversion by ' | sed -n '1{s/: .*//;s/:[a-z0-9]*$//;p}' | grep . && return 0
     done
     return 1
 }
 declare -A packages=([vulkan-validationlayers]=1 [time]=1)
 for program in "${programs[@]}"; do
     [ "$(head -c 4 "$program" | tail -c 3)" = ELF ] || continue  # scripts among the binaries
-    while read -r name arrow path _; do
-        if [ "$path" = "not" ]; then
-            echo "gpu_package.sh: ${program#"$root"/} loads $name, which ldd cannot find" >&2
-            exit 1
-        fi
-        [ "$arrow" = "=>" ] && [ -n "$path" ] || continue
+    # ldd's lines: "NAME => PATH (ADDRESS)", "NAME => not found", or a name alone (the vDSO, the
+    # dynamic loader). PATH may hold spaces.
+    while IFS= read -r line; do
+        case $line in
+            *" => not found"*)
+                echo "gpu_package.sh: ${program#"$root"/} loads ${line%% =>*}, which ldd cannot find" >&2
+                exit 1
+                ;;
+            *" => "*) ;;
+            *) continue ;;
+        esac
+        path=${line#* => }
+        path=${path% (0x*)}
+        [ -n "$path" ] || continue
         package=$(owner "$path") || {
             echo "gpu_package.sh: ${program#"$root"/} loads $path, which no installed package owns" >&2
             exit 1
         }
         packages[$package]=1
-    done < <(ldd "$program")
+    done < <(ldd "$program" | sed 's/^[[:space:]]*//')
 done
 for library in "${glvnd[@]}"; do
     package=$(owner "$library") || { echo "gpu_package.sh: no installed package owns $library" >&2; exit 1; }

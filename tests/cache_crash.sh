@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A run killed between writing its new pipeline cache and renaming it over the old one, as a crash
-# or a power cut would kill it: gdb stops the chapter at rename() (common/pipeline.cpp,
+# would kill it (a power cut could also lose what the kernel had not written yet: we do not fsync): gdb stops the chapter at rename() (common/pipeline.cpp,
 # savePipelineCache) and kills it there. The old cache must be untouched (the same bytes), and the
 # next run must load it with nothing on stderr and leave no temporary file of its own.
 #
@@ -28,6 +28,10 @@ temporary=$(ls "$XDG_CACHE_HOME"/vulkan-book-cpp/*.tmp* 2> /dev/null | head -1)
 [ -n "$temporary" ] || fail "no temporary file: the run was not killed between the write and the rename"
 [ "$(md5sum < "$cache")" = "$before" ] || fail "the cache changed although the run died before its rename"
 echo "cache_crash: killed at rename(); the old cache is whole, $(basename "$temporary") left behind"
+leftover=$(basename "$temporary")
 "$chapter" "$@" > /dev/null 2> "$work/err" || fail "the next run failed: $(cat "$work/err")"
 [ -s "$work/err" ] && fail "the next run printed: $(cat "$work/err")"
+for file in "$XDG_CACHE_HOME"/vulkan-book-cpp/*.tmp*; do
+    [ "$(basename "$file")" = "$leftover" ] || fail "the next run left $(basename "$file") behind"
+done
 echo "cache_crash: the next run loads the old cache with nothing on stderr"

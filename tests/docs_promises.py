@@ -2,8 +2,9 @@
 """docs.promises and docs.anchors: the docs promise only what a test checks, and link only to what exists.
 
   docs_promises.py promises ROOT BUILD   every sentence of README.md and docs/*.md that promises
-                                         behaviour -- it says "refused", "never", "always", "every",
-                                         "cannot", "exits N" -- cites the tests that check it, as
+                                         behaviour -- it says "refused", "rejects", "never",
+                                         "always", "every(thing)", "cannot", "can't", "won't",
+                                         "must not", "exits N" -- cites the tests that check it, as
                                          "(test: NAME)" or "(tests: NAME, NAME)", or says why it
                                          needs none in a comment right after it,
                                          "<!-- no test: WHY -->" (it describes the book, an
@@ -26,7 +27,8 @@ import re
 import subprocess
 import sys
 
-PROMISE = re.compile(r"\b(refused|never|always|every|cannot|exits? (with )?(code )?[0-9])\b", re.IGNORECASE)
+PROMISE = re.compile(r"\b(refused|refuses|rejects|never|always|every|everything|cannot|can't|won't|must not|"
+                     r"exits? (with )?(code )?[0-9])\b", re.IGNORECASE)
 CITATION = re.compile(r"\(tests?: ([^)]*)\)")
 NO_TEST = re.compile(r"<!-- no test: [^>]*[a-z][^>]*-->")
 
@@ -48,7 +50,7 @@ def prose_blocks(text):
         if fenced:
             continue
         stripped = line.strip()
-        new_item = re.match(r"^(\s*[-*] |\s*[0-9]+\. |\|)", line) is not None
+        new_item = re.match(r"^(\s*[-*+] |\s*[0-9]+\. |\|)", line) is not None
         if not stripped or stripped.startswith("#") or new_item or re.match(r"^<!-- (listing|options-for)", stripped):
             if block:
                 yield start, "\n".join(block)
@@ -73,7 +75,7 @@ def sentences(block):
 
     masked = re.sub(r"`[^`]*`|\]\([^)]*\)|<!--.*?-->|\([^()]*\)", mask, block, flags=re.DOTALL)
     parts, begin = [], 0
-    for m in re.finditer(r"[.!?:](?=\s+(?:[A-Z(`*\[]|<!--|$))|[.!?]$", masked):
+    for m in re.finditer(r"[.!?:](?=\s+(?:[A-Z0-9(`*\[]|<!--|$))|[.!?]$", masked):
         end = m.end()
         # A comment right after the sentence belongs to it.
         after = re.match(r"\s*(<!--.*?-->)", block[end:], re.DOTALL)
@@ -97,9 +99,10 @@ def promises(root):
                 if not PROMISE.search(words):
                     continue
                 line = start + block[:offset + len(sentence) - len(sentence.lstrip())].count("\n")
-                cited = [name.strip() for group in CITATION.findall(sentence) for name in group.split(",")]
+                outside_code = re.sub(r"`[^`]*`", "", sentence)
+                cited = [name.strip() for group in CITATION.findall(outside_code) for name in group.split(",")]
                 found.append((page.relative_to(root), line, " ".join(sentence.split()), cited,
-                              NO_TEST.search(sentence) is not None))
+                              NO_TEST.search(outside_code) is not None))
     return found
 
 
@@ -113,7 +116,7 @@ def check_promises(root, build, problem):
     for page, line, sentence, cited, exempt in promises(root):
         if not cited and not exempt:
             problem(f"{page}:{line}: a promise with no (test: ...) and no <!-- no test: ... -->: {sentence[:160]}")
-        if "no test: UNTESTED" in sentence:
+        if re.search(r"no test: untested", sentence, re.IGNORECASE):
             problem(f"{page}:{line}: a promise marked UNTESTED: test it, or say only what is tested: {sentence[:160]}")
         for name in cited:
             if not name:
@@ -152,7 +155,10 @@ def check_anchors(root, problem):
         text = page.read_text(encoding="utf-8")
         text = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.DOTALL)
         for number, line in enumerate(text.split("\n"), 1):
-            for target in re.findall(r"\]\(([^)\s]+)\)", line):
+            # [text](target), [text](target "title"), and reference definitions "[name]: target".
+            targets = re.findall(r"\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)", line)
+            targets += re.findall(r"^\s*\[[^\]]+\]:\s+(\S+)", line)
+            for target in targets:
                 if re.match(r"^[a-z]+:", target):
                     continue  # https:, mailto:
                 path, _, anchor = target.partition("#")

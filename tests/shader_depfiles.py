@@ -29,7 +29,10 @@ def unconditional(text):
         elif word == "endif":
             depth -= 1
         elif word == "include" and depth == 0:
-            names.append(re.match(r'"([^"]+)"', rest).group(1))
+            name = re.match(r'["<]([^">]+)[">]', rest)
+            if not name:
+                sys.exit(f"an #include we cannot read: {line.strip()}")
+            names.append(name.group(1))
     return names
 
 
@@ -50,8 +53,13 @@ def includes(path, seen):
 problems = checked = with_includes = 0
 for depfile in sorted(built.rglob("*.spv.d")):
     shader = source / depfile.relative_to(built).as_posix()[: -len(".spv.d")]
-    if not shader.exists():
-        continue  # a variant built under another name: its .source file names the GLSL
+    if not shader.exists():  # a variant built under another name: its .source file names the GLSL
+        described = depfile.with_name(depfile.name[: -len(".spv.d")] + ".source")
+        if not described.exists():
+            print(f"{depfile}: no shader {shader} and no {described.name} naming its source")
+            problems += 1
+            continue
+        shader = source / described.read_text().split("\n")[0].strip()
     text = depfile.read_text().replace("\\\n", " ")
     listed = {pathlib.Path(p).resolve() for p in text.split(":", 1)[1].split()}
     wanted = {shader.resolve()} | includes(shader, set())

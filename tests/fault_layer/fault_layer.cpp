@@ -46,8 +46,9 @@
 // by a newer one, is that an image of a newer swapchain presented after the retirement has been
 // acquired again and a wait on that acquire completed -- its fence seen signalled, or a
 // submission that waited on its semaphore seen done -- or (VK_EXT_swapchain_maintenance1) the
-// fences of all its presentations seen signalled. A swapchain still current is destroyed at the
-// end of a run: after a device wait, with no presentation since. A destruction that breaks the
+// fences of all its presentations seen signalled. At the end of a run, without present fences,
+// no more can be known than a device wait with nothing presented since: that lets the current
+// swapchain go, and the retired ones once no current one is left. A destruction that breaks the
 // rule prints "VK_LAYER_VKBOOK_fault_injection: vkDestroySwapchainKHR: ..." (a test's empty
 // stderr then fails); after a device loss nothing is checked.
 // Otherwise the layer prints nothing. It is an implicit layer that is only enabled when
@@ -135,6 +136,7 @@ struct SwapchainState {
     std::vector<VkSwapchainKHR> olderRetired;  // retired swapchains alive when this one was made
     std::vector<bool> presented;               // per image: presented (after all of olderRetired retired)
     std::vector<VkFence> presentFences;        // maintenance1: its presentations' fences not seen signalled
+    uint64_t presentsWithoutFence = 0;         // presentations no fence reports on
 };
 // An acquire of an image presented after `releases` were retired: once a wait on it is seen
 // complete, they are released.
@@ -243,7 +245,8 @@ Profile parseProfile() {
             p.apiVersion = VK_API_VERSION_1_2;
         else
             std::fprintf(stderr,
-                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.0, 1.1 or 1.2\n", api);
+                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_DEVICE_API='%s' is not 1.0, 1.1 or 1.2\n",
+                         api);
     }
     if (const char* heap = std::getenv("VKBOOK_HEAP_MIB"); heap && *heap)
         p.heapMib = std::strtoull(heap, nullptr, 10);
@@ -688,16 +691,26 @@ VKAPI_ATTR void VKAPI_CALL destroySwapchain(VkDevice device, VkSwapchainKHR swap
         auto found = data.swapchains.find(swapchain);
         if (found != data.swapchains.end() && !data.lost) {
             const SwapchainState& state = found->second;
-            bool presentFencesSeen = profile().maintenance1 && state.presentFences.empty();
-            if (!(data.idleSincePresent || state.released || (state.retired && presentFencesSeen)))
-                std::fprintf(stderr,
-                             "VK_LAYER_VKBOOK_fault_injection: vkDestroySwapchainKHR: %s swapchain destroyed "
-                             "while the presentation engine may still use its images (%s)\n",
-                             state.retired ? "a retired" : "the current",
-                             state.retired
-                                 ? "no wait on an acquire of an image presented after its retirement "
-                                   "was seen complete"
-                                 : "presented since the last device wait");
+            // Every presentation carried a fence (VK_EXT_swapchain_maintenance1), each seen
+            // signalled; also true of a swapchain never presented.
+            bool presentFencesSeen = state.presentsWithoutFence == 0 && state.presentFences.empty();
+            // A device wait says nothing of the presentation engine, but with nothing presented
+            // since, at the end of a run (no swapchain left in use), nothing better can be known
+            // without present fences: the current swapchain then, and the retired ones after it.
+            bool current = false;
+            for (const auto& [handle, other] : data.swapchains) current = current || !other.retired;
+            bool endOfRun = data.idleSincePresent && (!state.retired || !current);
+            if (!(presentFencesSeen || state.released || endOfRun))
+                std::fprintf(
+                    stderr,
+                    "VK_LAYER_VKBOOK_fault_injection: vkDestroySwapchainKHR: %s swapchain destroyed "
+                    "while the presentation engine may still use its images (%s)\n",
+                    state.retired ? "a retired" : "the current",
+                    state.retired
+                        ? "no wait on an acquire of an image presented after its retirement "
+                          "was seen complete"
+                        : "presented since the last device wait, and not every presentation's fence seen "
+                          "signalled");
         }
         if (found != data.swapchains.end()) data.swapchains.erase(found);
     }
@@ -745,6 +758,8 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
             presented[info->pImageIndices[i]] = true;
             if (fenceInfo && fenceInfo->pFences[i] != VK_NULL_HANDLE)
                 found->second.presentFences.push_back(fenceInfo->pFences[i]);
+            else
+                ++found->second.presentsWithoutFence;
         }
     }
     if (fenceInfo &&

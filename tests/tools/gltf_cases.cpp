@@ -173,8 +173,13 @@ void writeSame(const fs::path& dir) {
     int m = file.material({{"pbrMetallicRoughness", pbr}, {"doubleSided", true}});
     int quad = file.mesh(json::array({quadPrimitive(file, m)}));
     int a = file.node({{"mesh", quad}, {"translation", {-1.2, 0, 0}}});
-    int b =
-        file.node({{"mesh", quad}, {"translation", {1.2, 0, 0}}, {"rotation", {0, 0.3826834, 0, 0.9238795}}});
+    // A child, small, placed relative to its parent: drawn as a root (at its own translation) it
+    // would stand elsewhere.
+    int child = file.node({{"mesh", quad}, {"translation", {0, 0.9, 0.2}}, {"scale", {0.3, 0.3, 0.3}}});
+    int b = file.node({{"mesh", quad},
+                       {"translation", {1.2, 0, 0}},
+                       {"rotation", {0, 0.3826834, 0, 0.9238795}},
+                       {"children", {child}}});
     file.scene({a, b});
     file.writeGltf(dir / "model.gltf");
     file.writeEmbedded(dir / "model_embedded.gltf", dir);
@@ -527,7 +532,8 @@ void writeHostile(const fs::path& dir) {
         f.root["meshes"][0]["weights"] = {1.0};
     });
     make("camera.gltf", [](gltf::File& f) {
-        f.root["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}});
+        f.root["cameras"] =
+            json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}});
     });
     make("animation.gltf", [](gltf::File& f) {
         std::vector<float> times{0.0f, 1.0f};
@@ -537,7 +543,8 @@ void writeHostile(const fs::path& dir) {
         f.root["accessors"][input]["max"] = {1.0};
         int output = f.values(moves, gltf::kFloat, "VEC3");
         f.root["animations"] = json::array(
-            {{{"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})},
+            {{{"channels",
+               json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})},
               {"samplers", json::array({{{"input", input}, {"output", output}}})}}});
     });
     writePng(dir / "white.png", 1, 1, 4, {255, 255, 255, 255});
@@ -561,7 +568,7 @@ void writeHostile(const fs::path& dir) {
         f.root["meshes"][0]["primitives"][0]["material"] = f.material({{"pbrMetallicRoughness", pbr}});
     });
     // A URI with the shell's syntax: read as a file name, never expanded (tinygltf's own file
-    // callbacks would run it through wordexp).
+    // callbacks ran it through wordexp before tinygltf 2.6).
     edit("shell_uri.gltf",
          [](json& root) { root["buffers"][0]["uri"] = "$(touch shell_was_run)`touch shell_was_run`.bin"; });
     // GLB: one whose header claims more bytes than the file has (cut short), and one whose JSON
