@@ -80,7 +80,7 @@ endif()
 chapter_test(chapter-15.pipeline-cache-concurrent-runs
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/concurrent_runs.sh 4 3 -- $<TARGET_FILE:chapter-15> --headless
             --device llvmpipe --validation --width 320 --height 180 --frames 2)
-set_tests_properties(chapter-15.pipeline-cache-concurrent-runs PROPERTIES
+set_property(TEST chapter-15.pipeline-cache-concurrent-runs APPEND PROPERTY
     ENVIRONMENT XDG_CACHE_HOME=${CMAKE_CURRENT_BINARY_DIR}/cache-concurrent)
 
 standalone_build_test(06 BUILD_TYPE Debug)  # shaders with debug information

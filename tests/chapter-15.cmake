@@ -17,6 +17,9 @@ endforeach()
 
 # The light pass's float output: no NaN, no infinity, nothing negative, at 1280x720, with FXAA
 # and 3 frames in flight for good measure.
+# The book's G-buffer: four R16G16B16A16_SFLOAT attachments and D32_SFLOAT depth, 36 bytes a pixel.
+chapter_test(chapter-15.gbuffer-bytes-per-pixel COMMAND ${CH15_RUN} --headless --benchmark --warmup 0 --frames 1
+    EXPECT_STDOUT "gbuffer_bytes_per_pixel +36\n" QUIET_STDERR)
 chapter_test(chapter-15.output-finite COMMAND ${CH15_RUN} --headless --check-output --fxaa --frames 4 --frames-in-flight 3
     EXPECT_STDOUT "light output 1280x720: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
 

@@ -29,7 +29,7 @@ import sys
 
 PROMISE = re.compile(r"\b(refused|refuses|rejects|never|always|every|everything|cannot|can't|won't|must not|"
                      r"exits? (with )?(code )?[0-9])\b", re.IGNORECASE)
-CITATION = re.compile(r"\(tests?: ([^)]*)\)")
+CITATION = re.compile(r"\(tests?:\s+([^)]*)\)")
 NO_TEST = re.compile(r"<!-- no test: [^>]*[a-z][^>]*-->")
 
 

@@ -37,6 +37,20 @@ foreach(case "chapter-06;chapter-06/triangle.frag" "chapter-10;chapter-10/lighti
         EXPECT_STDOUT "interface changed: .*runtime_shaders: interface: ok")
     set_property(TEST shaders.${program}.interface-change-refused APPEND PROPERTY ENVIRONMENT FILE=${file})
 endforeach()
+# At start-up, an included file newer than the build's SPIR-V: exactly the shaders that include it
+# are compiled (chapter-06's own compiler and common's).
+foreach(case "chapter-06;include/srgb.glsl;chapter-06/triangle.frag"
+             "chapter-15;chapter-15/light_inputs.glsl;chapter-15/light.frag")
+    list(GET case 0 program)
+    list(GET case 1 include)
+    list(GET case 2 compiled)
+    chapter_test(shaders.${program}.newer-include-compiled
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/runtime_shaders.sh newer-include ${SHADER_SOURCES}
+                $<TARGET_FILE:image_compare> $<TARGET_FILE:${program}> ${SMALL}
+        EXPECT_STDOUT "shaders: compiled ${compiled} ")
+    set_property(TEST shaders.${program}.newer-include-compiled APPEND PROPERTY ENVIRONMENT
+                 INCLUDE=${include} COMPILED=${compiled})
+endforeach()
 # --check-output fails on a bad light output: every pixel negative, then NaN.
 foreach(case "chapter-15;chapter-15/light.frag" "chapter-15-lab;chapter-15-lab/light.frag")
     list(GET case 0 program)

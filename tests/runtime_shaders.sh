@@ -83,6 +83,23 @@ EOF
         fail "not refused as an interface change: $(cat "$work/stderr")"
     cat "$work/stderr"
     ;;
+newer-include)
+    # Sources copied with their times (older than the build's SPIR-V), then one included file
+    # (INCLUDE) made newer: the shaders that include it (COMPILED, space-separated) are compiled,
+    # and no other.
+    cp -rp "$shaders" "$work/shaders"
+    touch "$work/shaders/$INCLUDE"
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" --frames 1 > "$work/stdout" ||
+        fail "the run failed"
+    for file in $COMPILED; do
+        grep -q "^shaders: compiled $file (its source is newer than the build's SPIR-V)" "$work/stdout" ||
+            fail "$file, which includes $INCLUDE, was not compiled: $(grep '^shaders:' "$work/stdout")"
+    done
+    count=$(grep -c "^shaders: compiled .* (its source is newer" "$work/stdout")
+    [ "$count" = "$(wc -w <<< "$COMPILED")" ] ||
+        fail "$count shaders compiled, not only those that include $INCLUDE: $(grep '(its source is newer' "$work/stdout")"
+    grep "^shaders: compiled .* (its source is newer" "$work/stdout"
+    ;;
 bad-output)
     # --check-output on a light output with a bad value (VALUE: a GLSL float written to every
     # pixel by the light shader FILE): exit 1 and one line.

@@ -20,9 +20,9 @@
 //
 // It also makes the device look older or poorer than it is, as a reader's may be:
 //   VKBOOK_DEVICE_API=1.2 (1.1, 1.0) the physical device reports that Vulkan version;
-//   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...) and
+//   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...),
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
-//                                   among a surface's formats).
+//                                   among a surface's formats) and the feature scalarBlockLayout.
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
 //   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
@@ -258,7 +258,7 @@ Profile parseProfile() {
             size_t comma = list.find(',', start);
             if (comma == std::string::npos) comma = list.size();
             std::string name = list.substr(start, comma - start);
-            if (!name.starts_with("VK_") && !formatNames().count(name))
+            if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout")
                 std::fprintf(stderr,
                              "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
                              "nor a format it knows\n",
@@ -838,6 +838,13 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
     if (maintenance1.found)
         reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)
             ->swapchainMaintenance1 = profile().maintenance1 ? VK_TRUE : VK_FALSE;
+    if (hidden("scalarBlockLayout"))
+        for (auto* s = reinterpret_cast<VkBaseOutStructure*>(features); s; s = s->pNext) {
+            if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES)
+                reinterpret_cast<VkPhysicalDeviceVulkan12Features*>(s)->scalarBlockLayout = VK_FALSE;
+            if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SCALAR_BLOCK_LAYOUT_FEATURES)
+                reinterpret_cast<VkPhysicalDeviceScalarBlockLayoutFeatures*>(s)->scalarBlockLayout = VK_FALSE;
+        }
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL enumerateDeviceExtensionProperties(VkPhysicalDevice physical,
