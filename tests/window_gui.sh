@@ -82,7 +82,7 @@ f1)
     ;;
 esac
 sleep 0.5
-xdotool mousemove --window "$window" 500 300 key Escape  # away from the overlay; Escape ends the run
+xdotool mousemove --window "$window" 500 300 key Escape 2> /dev/null  # away from the overlay; Escape ends the run (a BadWindow if it closes before the release)
 wait $pid
 rc=$?
 cat "$out"

@@ -85,8 +85,10 @@ echo "anonymous resident memory at ${width}x${height} after every 10th resize (k
 echo "resident memory slope over 100 resizes: ${slope} kB per resize (limit ${SLOPE_LIMIT_KB})"
 [ "$slope" -le "$SLOPE_LIMIT_KB" ] || fail "memory grew by ${slope} kB per resize"
 
-# 4. Close it as a user would.
-xdotool key --window "$window" Escape
+# 4. Close it as a user would. The chapter may close the window on the key press, before xdotool
+# sends the release: X then reports a BadWindow to xdotool, which is no failure of the chapter
+# (whether it closed is checked next).
+xdotool key --window "$window" Escape 2> /dev/null
 for _ in $(seq 1 100); do
     kill -0 "$pid" 2> /dev/null || break
     sleep 0.1
