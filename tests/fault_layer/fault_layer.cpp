@@ -225,6 +225,20 @@ const std::unordered_map<std::string, VkFormat>& formatNames() {
     return names;
 }
 
+// "A,B,C" -> {"A", "B", "C"}; an unset or empty variable -> {}.
+std::vector<std::string> commaList(const char* value) {
+    std::vector<std::string> names;
+    if (value == nullptr || *value == '\0') return names;
+    std::string list = value;
+    for (size_t start = 0; start <= list.size();) {
+        size_t comma = list.find(',', start);
+        if (comma == std::string::npos) comma = list.size();
+        names.push_back(list.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return names;
+}
+
 Profile parseProfile() {
     Profile p;
     if (const char* emulate = std::getenv("VKBOOK_EMULATE"); emulate && *emulate) {
@@ -252,36 +266,22 @@ Profile parseProfile() {
         p.heapMib = std::strtoull(heap, nullptr, 10);
     if (const char* count = std::getenv("VKBOOK_MAX_ALLOCATIONS"); count && *count)
         p.maxAllocations = uint32_t(std::strtoul(count, nullptr, 10));
-    if (const char* hide = std::getenv("VKBOOK_HIDE"); hide && *hide) {
-        std::string list = hide;
-        for (size_t start = 0; start <= list.size();) {
-            size_t comma = list.find(',', start);
-            if (comma == std::string::npos) comma = list.size();
-            std::string name = list.substr(start, comma - start);
-            if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout")
-                std::fprintf(stderr,
-                             "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
-                             "nor a format it knows\n",
-                             name.c_str());
-            if (!name.empty()) p.hidden.push_back(name);
-            start = comma + 1;
-        }
+    for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE"))) {
+        if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout")
+            std::fprintf(stderr,
+                         "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
+                         "nor a format it knows\n",
+                         name.c_str());
+        if (!name.empty()) p.hidden.push_back(name);
     }
-    if (const char* later = std::getenv("VKBOOK_HIDE_LATER"); later && *later) {
-        std::string list = later;
-        for (size_t start = 0; start <= list.size();) {
-            size_t comma = list.find(',', start);
-            if (comma == std::string::npos) comma = list.size();
-            std::string name = list.substr(start, comma - start);
-            if (!formatNames().count(name))
-                std::fprintf(
-                    stderr,
-                    "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE_LATER names '%s', not a format it knows\n",
-                    name.c_str());
-            else
-                p.hiddenLater.push_back(name);
-            start = comma + 1;
-        }
+    for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE_LATER"))) {
+        if (formatNames().count(name))
+            p.hiddenLater.push_back(name);
+        else
+            std::fprintf(
+                stderr,
+                "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE_LATER names '%s', not a format it knows\n",
+                name.c_str());
     }
     return p;
 }
