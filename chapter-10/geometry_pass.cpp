@@ -203,19 +203,31 @@ void createDescriptors(const common::Device& device, GeometryPass& pass, const c
 
 const std::vector<std::string> kGeometryShaders{"chapter-10/geometry.vert", "chapter-10/geometry.frag"};
 
-// The pipeline from the shaders' current code: at start-up, and again on a live reload.
-VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const GeometryPass& pass) {
+// A class's pipeline from the shaders' current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const GeometryPass& pass,
+                        const MaterialClass& materialClass) {
     common::ShaderModule vertex(device, kGeometryShaders[0]);
     common::ShaderModule fragment(device, kGeometryShaders[1]);
     common::SceneVertexInput vertexInput;
     common::describeSceneVertexInput(vertexInput,
                                      common::kPosition | common::kUv);  // all geometry.vert reads
+    //> class-constants
+    // The class's two constants, constant_id 0 and 1 of geometry.frag (as chapter-06 sets its one).
+    std::array<VkBool32, 2> constants{materialClass.alphaTest, materialClass.baseColorMap};
+    std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, 4, sizeof(VkBool32)}}};
+    VkSpecializationInfo specialization{.mapEntryCount = uint32_t(entries.size()),
+                                        .pMapEntries = entries.data(),
+                                        .dataSize = sizeof(constants),
+                                        .pData = constants.data()};
+    //< class-constants
+    std::string name = std::string("geometry: ") + (materialClass.alphaTest ? "cut-out" : "opaque") +
+                       (materialClass.baseColorMap ? ", texture" : "");
     return common::createGraphicsPipeline(
         device, cache,
         {
-            .name = "geometry",
+            .name = name,
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
             .vertexInput = &vertexInput.state,
             .depthTest = true,
             .depthWrite = true,
@@ -225,7 +237,8 @@ VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, con
         });
 }
 
-void createPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass) {
+void createPipelines(const common::Device& device, VkPipelineCache cache, GeometryPass& pass,
+                     const common::GpuScene& scene, bool generic) {
     std::array<VkDescriptorSetLayout, 4> layouts{pass.matrixLayout, pass.matrixLayout, pass.textureLayout,
                                                  pass.materialLayout};
     VkPushConstantRange modelMatrix{
@@ -240,13 +253,26 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, Geometr
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "geometry");
 
-    pass.pipeline = makePipeline(device, cache, pass);
+    //> material-classes
+    // The material classes the scene has: a cut-out is a material whose alpha is tested; one
+    // without a texture samples none. Generic: one class, both on, right for every material.
+    std::vector<bool> used = common::usedMaterials(scene);  // a material no draw uses adds no class
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const common::GpuMaterial& material = scene.materials[i];
+        pass.materialClasses.add(
+            generic ? MaterialClass{}
+                    : MaterialClass{material.alphaTested, material.albedo.image != common::kWhiteTexture},
+            used[i]);
+    }
+    for (const MaterialClass& materialClass : pass.materialClasses.classes)
+        pass.pipelines.push_back(makePipeline(device, cache, pass, materialClass));
+    //< material-classes
 }
 
 }  // namespace
 
 GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                                const common::GpuScene& scene, uint32_t framesInFlight) {
+                                const common::GpuScene& scene, uint32_t framesInFlight, bool generic) {
     GeometryPass pass;
     // D32_SFLOAT where the device has it, else a 24-bit depth format (common/formats.hpp).
     pass.depthFormat = common::chooseDepthFormat(device);
@@ -254,7 +280,7 @@ GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache ca
     pass.gbuffer = createGBuffer(device, extent, pass.depthFormat);
     pass.framebuffer = createGeometryFramebuffer(device, pass.renderPass, pass.gbuffer);
     createDescriptors(device, pass, scene, framesInFlight);
-    createPipeline(device, cache, pass);
+    createPipelines(device, cache, pass, scene, generic);
     return pass;
 }
 
@@ -290,7 +316,6 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
         .pClearValues = clears.data(),
     };
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
@@ -300,7 +325,11 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
     std::array<VkDescriptorSet, 2> matrices{pass.projectionSet, pass.views[frame].set};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, matrices.data(),
                             0, nullptr);
+    VkPipeline bound = VK_NULL_HANDLE;
     for (const common::Draw& draw : scene.draws) {
+        // The pipeline of the draw's material class, bound when it differs from the last draw's.
+        VkPipeline pipeline = pass.pipelines[pass.materialClasses.ofMaterial[draw.material]];
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
@@ -320,11 +349,14 @@ void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const com
 void remakeGeometryPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass,
                             const common::ShaderReload& reload, common::PipelineSwap& swap) {
     if (reload.changed(kGeometryShaders))
-        common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass); });
+        for (size_t i = 0; i < pass.pipelines.size(); ++i)
+            common::replacePipeline(swap, pass.pipelines[i], [&] {
+                return makePipeline(device, cache, pass, pass.materialClasses.classes[i]);
+            });
 }
 
 void destroyGeometryPass(const common::Device& device, GeometryPass& pass) {
-    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    for (VkPipeline pipeline : pass.pipelines) vkDestroyPipeline(device.handle, pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);  // frees its sets
     common::destroyBuffer(device, pass.materials);

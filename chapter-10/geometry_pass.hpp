@@ -38,6 +38,13 @@ struct GeometryMaterial {
     float padding[3];
 };
 
+// A material class: what a geometry pipeline is specialised for (geometry.frag's constants).
+struct MaterialClass {
+    bool alphaTest = true;     // a cut-out
+    bool baseColorMap = true;  // has a texture
+    bool operator==(const MaterialClass&) const = default;
+};
+
 struct GeometryPass {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkRenderPass renderPass = VK_NULL_HANDLE;
@@ -60,18 +67,21 @@ struct GeometryPass {
     VkDescriptorSet materialSet = VK_NULL_HANDLE;
 
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
+    common::MaterialClasses<MaterialClass> materialClasses;  // the classes, and each material's
+    std::vector<VkPipeline> pipelines;                       // one per class
 };
 
+// `generic` (--pipelines generic): one pipeline, with the alpha test and the texture, for every
+// material; otherwise one per material class the scene has.
 GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                                const common::GpuScene& scene, uint32_t framesInFlight);
-// New attachments and framebuffer at the new size; the render pass and pipeline stay.
+                                const common::GpuScene& scene, uint32_t framesInFlight, bool generic = false);
+// New attachments and framebuffer at the new size; the render pass and pipelines stay.
 void resizeGeometryPass(const common::Device& device, GeometryPass& pass, VkExtent2D extent);
 void setProjection(GeometryPass& pass, const glm::mat4& projection);
 void setView(GeometryPass& pass, uint32_t frame, const glm::mat4& view);
 void recordGeometryPass(VkCommandBuffer cmd, const GeometryPass& pass, const common::GpuScene& scene,
                         uint32_t frame);
-// Live reload: a new pipeline into `swap` when the reload changed geometry.vert or geometry.frag.
+// Live reload: new pipelines into `swap` when the reload changed geometry.vert or geometry.frag.
 void remakeGeometryPipeline(const common::Device& device, VkPipelineCache cache, GeometryPass& pass,
                             const common::ShaderReload& reload, common::PipelineSwap& swap);
 void destroyGeometryPass(const common::Device& device, GeometryPass& pass);

@@ -35,6 +35,8 @@ const common::ChapterInfo kChapter{
     "chapter-10",
     "deferred shading with render passes (the book's chapter 10)",
     {"final", "albedo", "depth"},  // --view names; their order is the lighting shader's `view`
+    {},
+    {common::kPipelinesChoice},
 };
 
 // What one frame in flight owns: common::FrameSync (its fence, the image-available semaphore, a
@@ -103,6 +105,8 @@ struct Chapter {
     common::Camera camera;
     common::CameraInput cameraInput;
     LightingView lightingView;
+    bool genericPipelines = false;  // --pipelines generic
+    double passesMs = 0.0;          // how long createPasses took at start-up (pipelines, mostly)
 };
 //< chapter-state
 
@@ -110,8 +114,8 @@ struct Chapter {
 // The two passes. The lighting pass's command buffers are recorded once here, the geometry pass's
 // every frame.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
-    c.geometryPass =
-        createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
+    c.geometryPass = createGeometryPass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                        framesInFlight, c.genericPipelines);
     c.lightingPass = createLightingPass(c.device, c.pipelineCache.handle, c.target, c.geometryPass.gbuffer);
     recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
     setProjection(c.geometryPass, common::projectionMatrix(c.scene.camera.fov, c.target.extent,
@@ -171,7 +175,10 @@ void setUp(Chapter& c, const common::Options& options) {
 
     c.pipelineCache = common::loadPipelineCache(c.device, "chapter-10");
     c.lightingView = {int(options.view), c.scene.camera.near, c.scene.camera.far};
+    c.genericPipelines = common::genericPipelines(options);
+    double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
+    c.passesMs = common::millisecondsSinceStart() - passesStart;
     c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
     c.run = common::createRunControl(options, c.device, {"geometry", "lighting"});
     c.imageInFlight.assign(c.target.images.size(), VK_NULL_HANDLE);
@@ -313,9 +320,10 @@ void run(const common::Options& options) {
     Chapter chapter;
     setUp(chapter, options);
     frameLoop(chapter, options);
-    common::reportRun(chapter.run, chapter.device,
-                      common::benchmarkInfo(kChapter, options, chapter.device, chapter.target,
-                                            chapter.geometryPass.depthFormat));
+    std::vector<std::pair<std::string, std::string>> info = common::benchmarkInfo(
+        kChapter, options, chapter.device, chapter.target, chapter.geometryPass.depthFormat);
+    common::addPipelineInfo(info, chapter.geometryPass.pipelines.size(), chapter.passesMs);
+    common::reportRun(chapter.run, chapter.device, info);
     tearDown(chapter);
 }
 //< run

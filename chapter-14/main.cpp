@@ -43,7 +43,7 @@ const common::ChapterInfo kChapter{
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      common::kGuiSwitch,
      common::kGuiStillSwitch},
-    {common::kGuiClickChoice, common::kGuiScaleChoice},
+    {common::kGuiClickChoice, common::kGuiScaleChoice, common::kPipelinesChoice},
 };
 
 //> overlay
@@ -79,14 +79,16 @@ struct Chapter {
     common::CameraInput cameraInput;
     LightView lightView;
     bool fxaa = false;
+    bool genericPipelines = false;  // --pipelines generic
+    double passesMs = 0.0;          // how long createPasses took at start-up (pipelines, mostly)
 };
 //< chapter-state
 
 //> passes
 // The passes, in the order a frame records them.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
-    c.scenePass =
-        createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
+    c.scenePass = createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                  framesInFlight, c.genericPipelines);
     c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer);
     c.postPass =
         common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
@@ -150,7 +152,10 @@ void setUp(Chapter& c, const common::Options& options) {
 
     c.pipelineCache = common::loadPipelineCache(c.device, "chapter-14");
     c.gui = common::createGui(options, c.target);
+    c.genericPipelines = common::genericPipelines(options);
+    double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
+    c.passesMs = common::millisecondsSinceStart() - passesStart;
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -296,9 +301,10 @@ void report(Chapter& c, const common::Options& options) {
         std::printf("chapter-14: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
                     c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
                     c.camera.pitch);
-    common::reportRun(
-        c.run, c.device,
-        common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.gbuffer.depth.format));
+    std::vector<std::pair<std::string, std::string>> info =
+        common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.gbuffer.depth.format);
+    common::addPipelineInfo(info, c.scenePass.pipelines.size(), c.passesMs);
+    common::reportRun(c.run, c.device, info);
     if (c.gui.enabled)
         std::printf("chapter-14: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
                     c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);

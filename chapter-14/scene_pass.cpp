@@ -81,8 +81,9 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
 //> scene-pipeline
 const std::vector<std::string> kSceneShaders{"chapter-14/scene.vert", "chapter-14/scene.frag"};
 
-// The pipeline from the shaders' current code: at start-up, and again on a live reload.
-VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const ScenePass& pass) {
+// A class's pipeline from the shaders' current code: at start-up, and again on a live reload.
+VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const ScenePass& pass,
+                        const MaterialClass& materialClass) {
     // Without a render pass, the pipeline is told the formats it will render to: one per colour
     // attachment (each gets its own blend state), plus depth.
     VkPipelineRenderingCreateInfo rendering{
@@ -95,12 +96,21 @@ VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, con
     common::ShaderModule fragment(device, kSceneShaders[1]);
     common::SceneVertexInput vertexInput;
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
+    // The class's two constants, constant_id 0 and 1 of scene.frag (as chapter-06 sets its one).
+    std::array<VkBool32, 2> constants{materialClass.alphaTest, materialClass.baseColorMap};
+    std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, 4, sizeof(VkBool32)}}};
+    VkSpecializationInfo specialization{.mapEntryCount = uint32_t(entries.size()),
+                                        .pMapEntries = entries.data(),
+                                        .dataSize = sizeof(constants),
+                                        .pData = constants.data()};
+    std::string name = std::string("scene: ") + (materialClass.alphaTest ? "cut-out" : "opaque") +
+                       (materialClass.baseColorMap ? ", texture" : "");
     return common::createGraphicsPipeline(
         device, cache,
         {
-            .name = "scene",
+            .name = name,
             .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)},
+                       common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
             .vertexInput = &vertexInput.state,
             .depthTest = true,
             .depthWrite = true,
@@ -111,7 +121,8 @@ VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, con
         });
 }
 
-void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass) {
+void createPipelines(const common::Device& device, VkPipelineCache cache, ScenePass& pass,
+                     const common::GpuScene& scene, bool generic) {
     std::array<VkDescriptorSetLayout, 3> layouts{pass.cameraLayout, pass.materialsLayout, pass.textureLayout};
     std::array<VkPushConstantRange, 2> pushConstants{{
         {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(glm::mat4)},  // model matrix
@@ -129,7 +140,18 @@ void createPipeline(const common::Device& device, VkPipelineCache cache, ScenePa
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "scene");
 
-    pass.pipeline = makePipeline(device, cache, pass);
+    // The material classes the scene has: a cut-out is a material whose alpha is tested; one
+    // without a texture samples none. Generic: one class, both on, right for every material.
+    std::vector<bool> used = common::usedMaterials(scene);  // a material no draw uses adds no class
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const common::GpuMaterial& material = scene.materials[i];
+        pass.materialClasses.add(
+            generic ? MaterialClass{}
+                    : MaterialClass{material.alphaTested, material.albedo.image != common::kWhiteTexture},
+            used[i]);
+    }
+    for (const MaterialClass& materialClass : pass.materialClasses.classes)
+        pass.pipelines.push_back(makePipeline(device, cache, pass, materialClass));
 }
 //< scene-pipeline
 
@@ -256,11 +278,11 @@ void beginRendering(VkCommandBuffer cmd, const GBuffer& gbuffer) {
 }  // namespace
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight) {
+                          const common::GpuScene& scene, uint32_t framesInFlight, bool generic) {
     ScenePass pass;
     pass.gbuffer = createGBuffer(device, extent, common::chooseDepthFormat(device));
     createDescriptors(device, pass, scene, framesInFlight);
-    createPipeline(device, cache, pass);
+    createPipelines(device, cache, pass, scene, generic);
     return pass;
 }
 
@@ -281,7 +303,6 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     beginRendering(cmd, pass.gbuffer);
     VkExtent2D extent = pass.gbuffer.depth.extent;
 
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
     VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, extent};
@@ -289,7 +310,11 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
     std::array<VkDescriptorSet, 2> shared{pass.cameras[frame].set, pass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
+    VkPipeline bound = VK_NULL_HANDLE;
     for (const common::Draw& draw : scene.draws) {
+        // The pipeline of the draw's material class, bound when it differs from the last draw's.
+        VkPipeline pipeline = pass.pipelines[pass.materialClasses.ofMaterial[draw.material]];
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
@@ -311,11 +336,14 @@ void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::G
 void remakeScenePipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass,
                          const common::ShaderReload& reload, common::PipelineSwap& swap) {
     if (reload.changed(kSceneShaders))
-        common::replacePipeline(swap, pass.pipeline, [&] { return makePipeline(device, cache, pass); });
+        for (size_t i = 0; i < pass.pipelines.size(); ++i)
+            common::replacePipeline(swap, pass.pipelines[i], [&] {
+                return makePipeline(device, cache, pass, pass.materialClasses.classes[i]);
+            });
 }
 
 void destroyScenePass(const common::Device& device, ScenePass& pass) {
-    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    for (VkPipeline pipeline : pass.pipelines) vkDestroyPipeline(device.handle, pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
     vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
     common::destroyBuffer(device, pass.materials);

@@ -41,6 +41,13 @@ struct SceneMaterial {
 };
 static_assert(sizeof(SceneMaterial) == 32);
 
+// A material class: what a scene pipeline is specialised for (scene.frag's constants).
+struct MaterialClass {
+    bool alphaTest = true;     // a cut-out
+    bool baseColorMap = true;  // has a texture
+    bool operator==(const MaterialClass&) const = default;
+};
+
 struct ScenePass {
     GBuffer gbuffer;
     VkDescriptorSetLayout cameraLayout = VK_NULL_HANDLE;     // set 0: projection + view, per frame
@@ -52,16 +59,19 @@ struct ScenePass {
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> textureSets;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
+    common::MaterialClasses<MaterialClass> materialClasses;  // the classes, and each material's
+    std::vector<VkPipeline> pipelines;                       // one per class
 };
 
+// `generic` (--pipelines generic): one pipeline, with the alpha test and the texture, for every
+// material; otherwise one per material class the scene has.
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
-                          const common::GpuScene& scene, uint32_t framesInFlight);
+                          const common::GpuScene& scene, uint32_t framesInFlight, bool generic = false);
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 void recordScenePass(VkCommandBuffer cmd, const ScenePass& pass, const common::GpuScene& scene,
                      uint32_t frame);
-// Live reload: a new pipeline into `swap` when the reload changed scene.vert or scene.frag.
+// Live reload: new pipelines into `swap` when the reload changed scene.vert or scene.frag.
 void remakeScenePipeline(const common::Device& device, VkPipelineCache cache, ScenePass& pass,
                          const common::ShaderReload& reload, common::PipelineSwap& swap);
 void destroyScenePass(const common::Device& device, ScenePass& pass);

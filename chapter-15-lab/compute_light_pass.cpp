@@ -35,9 +35,12 @@ namespace {
 // The pipeline from the shader's current code: at start-up, and again on a live reload.
 VkPipeline makePipeline(const common::Device& device, VkPipelineCache cache, const ComputeLightPass& pass) {
     common::ShaderModule module(device, pass.shader);
+    LightConstants constants(pass.kinds);  // the light pass's specialisation (light_loop.glsl)
+    VkSpecializationInfo specialization = constants.info();
     VkComputePipelineCreateInfo pipelineInfo{
         .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
+        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module,
+                                     pass.kinds == LightKinds{} ? nullptr : &specialization),
         .layout = pass.pipelineLayout,
     };
     VkPipeline pipeline = VK_NULL_HANDLE;
@@ -82,6 +85,7 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
     VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
     common::nameObject(device.handle, pass.pipelineLayout, "compute light");
     pass.shader = shader;
+    pass.kinds = lightPass.kinds;
     pass.pipeline = makePipeline(device, cache, pass);
     return pass;
 }

@@ -25,6 +25,7 @@ struct ComputeLightPass {
     VkPipeline pipeline = VK_NULL_HANDLE;
     std::string shader;  // what the pipeline is made from
     bool tiled = false;  // set 4: the tile lists
+    LightKinds kinds;    // what the pipeline is specialised to (the light pass's)
 };
 
 // The setup of a LightPass for the compute form: sets 0-2 read by compute (and by `alsoStages`).

@@ -82,7 +82,8 @@ const common::ChapterInfo kChapter{
       "output (the book's); late: submit the scene and light passes first, then acquire and submit "
       "the post and GUI passes, which alone wait for the image"},
      common::kGuiClickChoice,
-     common::kGuiScaleChoice},
+     common::kGuiScaleChoice,
+     common::kPipelinesChoice},
 };
 
 // chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
@@ -186,16 +187,6 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 }
 //< overlay
 
-std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
-    std::vector<ShaderLight> lights;
-    for (const common::Light& light : scene.lights) {
-        bool directional = light.type == common::Light::Type::Directional;
-        lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
-                          light.intensity, light.color, directional ? 0.0f : light.range});
-    }
-    return lights;
-}
-
 // The light pass for a layout and form, with the compute form's pipeline or the tile lists' set.
 struct LightPasses {
     LightPass pass;
@@ -204,20 +195,25 @@ struct LightPasses {
 
 LightPasses createLightPasses(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                               const ScenePass& scenePass, const LabLayout& layout, LightPassKind kind,
-                              uint32_t framesInFlight, uint32_t lightCount, VkDescriptorSetLayout tileLists) {
+                              uint32_t framesInFlight, uint32_t lightCount, LightKinds kinds,
+                              VkDescriptorSetLayout tileLists) {
     LightPasses passes;
     bool tiled = tileLists != VK_NULL_HANDLE;
+    if (tiled) kinds = {};  // the tile lists pick the lights: chapter-15's loops are not used
     // With tile lists, the culling passes (compute) read sets 0-2 too.
     VkShaderStageFlags culling = tiled ? VK_SHADER_STAGE_COMPUTE_BIT : 0;
     if (kind == LightPassKind::Compute) {
-        passes.pass = createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount,
-                                      computeLightPassSetup());
+        LightPassSetup setup = computeLightPassSetup();
+        setup.kinds = kinds;
+        passes.pass =
+            createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount, setup);
         passes.compute = createComputeLightPass(device, cache, passes.pass,
                                                 labLightShader(layout, "comp", tiled), tileLists);
         return passes;
     }
     LightPassSetup setup{.fragmentShader = labLightShader(layout, "frag", tiled),
-                         .stages = VK_SHADER_STAGE_FRAGMENT_BIT | culling};
+                         .stages = VK_SHADER_STAGE_FRAGMENT_BIT | culling,
+                         .kinds = kinds};
     if (tiled) setup.moreSets = {tileLists};  // set 3
     passes.pass =
         createLightPass(device, cache, extent, scenePass.gbuffer, framesInFlight, lightCount, setup);
@@ -279,30 +275,37 @@ void run(const common::Options& options) {
     LightCullingPass culling;  // --light-culling tiled
     LightPasses light;
     ForwardPass forwardPass;  // --shading forward
+    bool generic = common::genericPipelines(options);
+    double passesMs = 0.0;  // how long the passes took to make at start-up
     auto createPasses = [&] {
         if (forward) {
             scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
-                                        options.framesInFlight, kForwardDepthOnly);
+                                        options.framesInFlight, kForwardDepthOnly, {}, generic);
             light.pass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
                                          options.framesInFlight, uint32_t(scene.lights.size()),
                                          {.fragmentShader = ""});
             forwardPass = createForwardPass(device, pipelineCache.handle, scenePass, light.pass);
             return;
         }
-        scenePass = createScenePass(device, pipelineCache.handle, target.extent, gpuScene,
-                                    options.framesInFlight, layout->layout, labSceneShaders(*layout));
+        scenePass =
+            createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight,
+                            layout->layout, labSceneShaders(*layout), generic);
         if (tiled)
             culling =
                 createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
                                    layout->layout, gpuScene.boundsMin, gpuScene.boundsMax);
-        light = createLightPasses(device, pipelineCache.handle, target.extent, scenePass, *layout, lightKind,
-                                  options.framesInFlight, uint32_t(scene.lights.size()), culling.setLayout);
+        light =
+            createLightPasses(device, pipelineCache.handle, target.extent, scenePass, *layout, lightKind,
+                              options.framesInFlight, uint32_t(scene.lights.size()),
+                              generic ? LightKinds{} : lightKinds(shaderLights(scene)), culling.setLayout);
         if (tiled)
             createLightCullingPipelines(
                 device, pipelineCache.handle, culling, light.pass,
                 std::string("chapter-15-lab/light_cull_bounds") + layout->shaderSuffix + ".comp");
     };
+    double passesStart = common::millisecondsSinceStart();
     createPasses();
+    passesMs = common::millisecondsSinceStart() - passesStart;
     common::PostPass postPass =
         common::createPostPass(device, pipelineCache.handle, target.format, light.pass.output);
 
@@ -550,6 +553,9 @@ void run(const common::Options& options) {
         common::benchmarkInfo(kChapter, options, device, target, scenePass.formats.depth);
     // What the scene pass allocated: the G-buffer's attachments, depth alone for forward shading.
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.formats))});
+    common::addPipelineInfo(
+        info, scenePass.pipelines.pipelines.size() + forwardPass.pipelines.pipelines.size(), passesMs);
+    info.push_back({"light_pipeline", describeLightKinds(light.pass.kinds)});
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -37,6 +37,8 @@ inline constexpr uint32_t kMaterialNormalMap = 1u;      // MATERIAL_NORMAL_MAP
 inline constexpr uint32_t kMaterialMetalRoughMap = 2u;  // MATERIAL_METAL_ROUGH_MAP
 inline constexpr uint32_t kMaterialOcclusionMap = 4u;   // MATERIAL_OCCLUSION_MAP
 inline constexpr uint32_t kMaterialDoubleSided = 8u;    // MATERIAL_DOUBLE_SIDED
+inline constexpr uint32_t kMaterialBaseColorMap = 16u;  // MATERIAL_BASE_COLOR_MAP
+inline constexpr uint32_t kMaterialNormalScale = 32u;   // MATERIAL_NORMAL_SCALE
 struct ShaderMaterial {
     glm::vec4 diffuse;
     float roughness;

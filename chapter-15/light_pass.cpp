@@ -39,6 +39,31 @@ void writeAttachments(const common::Device& device, LightPass& pass, const commo
 
 }  // namespace
 
+//> shader-lights
+std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
+    std::vector<ShaderLight> lights;
+    for (bool directionalPass : {true, false})
+        for (const common::Light& light : scene.lights) {
+            bool directional = light.type == common::Light::Type::Directional;
+            if (directional != directionalPass) continue;
+            lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
+                              light.intensity, light.color, directional ? 0.0f : light.range});
+        }
+    return lights;
+}
+//< shader-lights
+
+LightKinds lightKinds(const std::vector<ShaderLight>& lights) {
+    auto directional = std::count_if(lights.begin(), lights.end(),
+                                     [](const ShaderLight& light) { return light.directional != 0u; });
+    return {int32_t(directional), int32_t(lights.size()) - int32_t(directional)};
+}
+
+std::string describeLightKinds(LightKinds kinds) {
+    if (kinds == LightKinds{}) return "generic";
+    return std::to_string(kinds.directional) + " directional, " + std::to_string(kinds.point) + " point";
+}
+
 LightPass createLightPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GBuffer& gbuffer, uint32_t framesInFlight, uint32_t lightCapacity,
                           const LightPassSetup& setup) {
@@ -98,11 +123,19 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
     }
     //< light-buffers
 
+    pass.kinds = setup.kinds;
     if (setup.fragmentShader.empty()) return pass;
     std::vector<VkDescriptorSetLayout> sets{pass.attachmentsLayout, pass.lightsLayout, pass.sceneLayout};
     sets.insert(sets.end(), setup.moreSets.begin(), setup.moreSets.end());
+    //> light-specialization
+    // The pipeline for the scene's lights: their number of each kind as constants (none given:
+    // the generic pipeline).
+    LightConstants constants(pass.kinds);
+    VkSpecializationInfo specialization = constants.info();
     pass.pipeline = common::createFullscreenPipeline(device, cache, setup.fragmentShader.c_str(),
-                                                     kLightOutputFormat, sets, sizeof(LightView));
+                                                     kLightOutputFormat, sets, sizeof(LightView),
+                                                     pass.kinds == LightKinds{} ? nullptr : &specialization);
+    //< light-specialization
     return pass;
 }
 
@@ -117,6 +150,10 @@ void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight
                   const ShaderSceneInfo& scene) {
     // std::copy_n, not memcpy: a scene with no lights has lights.data() == nullptr, which memcpy
     // must not be given even for 0 bytes (UndefinedBehaviorSanitizer reports it).
+    if (pass.kinds != LightKinds{} && lightKinds(lights) != pass.kinds)
+        throw common::Failure("the scene's lights changed kind or number: the light pass was made for " +
+                              std::to_string(pass.kinds.directional) + " directional and " +
+                              std::to_string(pass.kinds.point) + " point lights");
     uint32_t count = std::min<uint32_t>(uint32_t(lights.size()), pass.lightCapacity);
     std::copy_n(lights.data(), count, static_cast<ShaderLight*>(pass.frames[frame].lights.mapped));
     ShaderSceneInfo info = scene;

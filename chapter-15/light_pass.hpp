@@ -5,6 +5,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "common/fullscreen.hpp"
 #include "common/gbuffer.hpp"
 #include "common/image.hpp"
+#include "common/scene.hpp"
 #include "gpu_types.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -29,6 +32,35 @@ struct LightFrame {
     VkDescriptorSet sceneSet = VK_NULL_HANDLE;
 };
 
+//> light-kinds
+// How many lights of each kind the scene has: the light pass's loops are specialised to them
+// (light_loop.glsl's constants). -1: not known to the pipeline (--pipelines generic), which
+// loops over the scene info's light count and asks each light its kind.
+struct LightKinds {
+    int32_t directional = -1;
+    int32_t point = -1;
+    bool operator==(const LightKinds&) const = default;
+};
+
+// The specialization constants for `kinds`: constant_id 3 DIRECTIONAL_LIGHTS, 4 POINT_LIGHTS.
+struct LightConstants {
+    std::array<int32_t, 2> counts;
+    std::array<VkSpecializationMapEntry, 2> entries{{{3, 0, sizeof(int32_t)}, {4, 4, sizeof(int32_t)}}};
+    explicit LightConstants(LightKinds kinds) : counts{kinds.directional, kinds.point} {}
+    VkSpecializationInfo info() const {  // points into this object: use it while this lives
+        return {uint32_t(entries.size()), entries.data(), sizeof(counts), counts.data()};
+    }
+};
+//< light-kinds
+
+// The scene's lights as the light pass reads them: the directional ones first, then the point
+// lights, each kind in the scene's order (so constant loops over each kind cover them all).
+std::vector<ShaderLight> shaderLights(const common::Scene& scene);
+// The kinds of `lights` (shaderLights' order).
+LightKinds lightKinds(const std::vector<ShaderLight>& lights);
+// "1 directional, 1 point", or "generic": for the benchmark report.
+std::string describeLightKinds(LightKinds kinds);
+
 // How a light pass is made. The defaults are the book's: light.frag's full-screen triangle, the
 // only stage that reads the pass's sets, drawing into the output as a colour attachment.
 struct LightPassSetup {
@@ -36,6 +68,7 @@ struct LightPassSetup {
     VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT;  // what reads sets 0-2
     VkImageUsageFlags outputUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;  // how the output is written
     std::vector<VkDescriptorSetLayout> moreSets;                          // the pipeline's sets 3..
+    LightKinds kinds;  // what the pipeline is specialised to; the default: generic
 };
 
 struct LightPass {
@@ -48,6 +81,7 @@ struct LightPass {
     VkDescriptorSet attachmentsSet = VK_NULL_HANDLE;
     std::vector<LightFrame> frames;
     uint32_t lightCapacity = 0;
+    LightKinds kinds;  // the pipelines' specialisation: updateLights is given lights of these kinds
     VkSampler sampler = VK_NULL_HANDLE;
     common::FullscreenPipeline pipeline;
 };
@@ -58,7 +92,8 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
                           const LightPassSetup& setup = {});
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
-// Writes this frame's lights and scene info (lights.size() <= lightCapacity).
+// Writes this frame's lights and scene info (lights.size() <= lightCapacity). Throws Failure when
+// a specialised pass is given lights of other kinds than it was made for.
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
                   const ShaderSceneInfo& scene);
 // `moreSets`: the sets from 3 on, when the setup's pipeline has them.

@@ -49,7 +49,7 @@ const common::ChapterInfo kChapter{
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
      common::kGuiSwitch,
      common::kGuiStillSwitch},
-    {common::kGuiClickChoice, common::kGuiScaleChoice},
+    {common::kGuiClickChoice, common::kGuiScaleChoice, common::kPipelinesChoice},
 };
 
 //> light-controls
@@ -145,18 +145,6 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 }
 //< overlay
 
-//> shader-lights
-std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
-    std::vector<ShaderLight> lights;
-    for (const common::Light& light : scene.lights) {
-        bool directional = light.type == common::Light::Type::Directional;
-        lights.push_back({directional ? light.direction : light.position, directional ? 1u : 0u,
-                          light.intensity, light.color, directional ? 0.0f : light.range});
-    }
-    return lights;
-}
-//< shader-lights
-
 //> chapter-state
 // Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
 // reverse), and what the frames change.
@@ -180,16 +168,22 @@ struct Chapter {
     LightControls lightControls;
     LightView lightView;
     bool fxaa = false;
+    bool genericPipelines = false;  // --pipelines generic
+    double passesMs = 0.0;          // how long createPasses took at start-up (pipelines, mostly)
 };
 //< chapter-state
 
 //> passes
 // The passes, in the order a frame records them.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
-    c.scenePass =
-        createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight);
-    c.lightPass = createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
-                                  framesInFlight, uint32_t(c.scene.lights.size()));
+    // Pipelines made for this scene: one per material class its materials have, and the light
+    // pass's for its lights of each kind (unless --pipelines generic).
+    c.scenePass = createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene,
+                                  framesInFlight, kBookGBuffer, {}, c.genericPipelines);
+    c.lightPass =
+        createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
+                        framesInFlight, uint32_t(c.scene.lights.size()),
+                        {.kinds = c.genericPipelines ? LightKinds{} : lightKinds(shaderLights(c.scene))});
     c.postPass =
         common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
     if (c.gui.enabled)
@@ -253,7 +247,10 @@ void setUp(Chapter& c, const common::Options& options) {
 
     c.pipelineCache = common::loadPipelineCache(c.device, "chapter-15");
     c.gui = common::createGui(options, c.target);
+    c.genericPipelines = common::genericPipelines(options);
+    double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
+    c.passesMs = common::millisecondsSinceStart() - passesStart;
     std::vector<std::string> passes{"scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
@@ -407,6 +404,8 @@ void report(Chapter& c, const common::Options& options) {
     std::vector<std::pair<std::string, std::string>> info =
         common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.formats.depth);
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
+    common::addPipelineInfo(info, c.scenePass.pipelines.pipelines.size(), c.passesMs);
+    info.push_back({"light_pipeline", describeLightKinds(c.lightPass.kinds)});
     common::reportRun(c.run, c.device, info);
     if (c.gui.enabled)
         std::printf("chapter-15: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -58,17 +58,23 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
     pass.cameras = common::createCameraFrames(device, pass.descriptorPool, pass.cameraLayout, framesInFlight);
 
     //> shader-materials
-    // Each material as the shaders read it: its factors, and flags for the maps it has (a
-    // material without one samples the default texture and skips the work).
+    // Each material as the shaders read it: its factors, and flags for the features it uses --
+    // its class, which picks the pipeline it draws with (a material without a map never samples
+    // the default texture bound in its place).
     std::vector<ShaderMaterial> shaderMaterials;
-    for (const common::GpuMaterial& m : scene.materials)
-        shaderMaterials.push_back(
-            {m.diffuse, m.roughness, m.metallic,
-             (m.normal.image != common::kFlatNormalTexture ? kMaterialNormalMap : 0u) |
-                 (m.metalRough.image != common::kWhiteTexture ? kMaterialMetalRoughMap : 0u) |
-                 (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
-                 (m.doubleSided ? kMaterialDoubleSided : 0u),
-             m.alphaCutoff, m.normalScale, m.occlusionStrength, glm::vec2(0.0f)});
+    for (const common::GpuMaterial& m : scene.materials) {
+        bool normalMap = m.normal.image != common::kFlatNormalTexture;
+        uint32_t features = (m.albedo.image != common::kWhiteTexture ? kMaterialBaseColorMap : 0u) |
+                            (normalMap ? kMaterialNormalMap : 0u) |
+                            (normalMap && m.normalScale != 1.0f ? kMaterialNormalScale : 0u) |
+                            (m.metalRough.image != common::kWhiteTexture ? kMaterialMetalRoughMap : 0u) |
+                            (m.occlusion.image != common::kWhiteTexture ? kMaterialOcclusionMap : 0u) |
+                            (m.doubleSided ? kMaterialDoubleSided : 0u);
+        shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic, features, m.alphaCutoff, m.normalScale,
+                                   m.occlusionStrength, glm::vec2(0.0f)});
+        pass.materialClasses.push_back({features, m.alphaTested});
+    }
+    pass.materialUsed = common::usedMaterials(scene);
     //< shader-materials
     common::StagingBatch batch = common::beginStaging(device);
     pass.materials = common::uploadStaged(device, batch, shaderMaterials.data(),
@@ -81,10 +87,23 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                                   pass.materials.handle, VK_WHOLE_SIZE);
 }
 
-// The four pipelines of a scene pipeline layout (opaque, cutout, then both double-sided), from the
-// target's shaders; none left behind when one fails.
-std::array<VkPipeline, 4> makeScenePipelineSet(const common::Device& device, VkPipelineCache cache,
-                                               VkPipelineLayout layout, const ScenePipelineTarget& target) {
+// "scene: cut-out, double-sided, base colour, normal map": what a class's pipeline is called.
+std::string className(const MaterialClass& materialClass, bool generic) {
+    std::string name = materialClass.alphaTest ? "scene: cut-out" : "scene: opaque";
+    if (generic) name += ", generic";
+    const std::pair<uint32_t, const char*> features[] = {
+        {kMaterialDoubleSided, "double-sided"},  {kMaterialBaseColorMap, "base colour"},
+        {kMaterialNormalMap, "normal map"},      {kMaterialNormalScale, "normal scale"},
+        {kMaterialMetalRoughMap, "metal-rough"}, {kMaterialOcclusionMap, "occlusion"}};
+    for (auto [bit, feature] : features)
+        if ((materialClass.features & bit) != 0u) name += std::string(", ") + feature;
+    return name;
+}
+
+// One pipeline per class, from the target's shaders; none left behind when one fails.
+std::vector<VkPipeline> makeScenePipelineSet(const common::Device& device, VkPipelineCache cache,
+                                             const ScenePipelines& pipelines, bool generic) {
+    const ScenePipelineTarget& target = pipelines.target;
     //> scene-pipeline
     // The G-buffer's four colour attachments: as many formats and blend states.
     VkPipelineRenderingCreateInfo rendering{
@@ -99,42 +118,53 @@ std::array<VkPipeline, 4> makeScenePipelineSet(const common::Device& device, VkP
     //< scene-pipeline
     common::ShaderModule vertex(device, target.shaders.vertex);
     common::ShaderModule fragment(device, target.shaders.fragment);
-    std::array<VkPipeline, 4> made{};
+    std::vector<VkPipeline> made;
     try {
-        for (VkBool32 alphaTest : {VK_FALSE, VK_TRUE})
-            for (bool doubleSided : {false, true}) {
-                VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-                VkSpecializationInfo specialization{.mapEntryCount = 1,
-                                                    .pMapEntries = &entry,
-                                                    .dataSize = sizeof(VkBool32),
-                                                    .pData = &alphaTest};
-                made[(doubleSided ? 2 : 0) + (alphaTest ? 1 : 0)] = common::createGraphicsPipeline(
-                    device, cache,
-                    {
-                        .name = std::string("scene ") + (alphaTest ? "cutout" : "opaque") +
-                                (doubleSided ? ", double-sided" : ""),
-                        .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-                                   common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment,
-                                                       &specialization)},
-                        .vertexInput = &vertexInput.state,
-                        // Back faces are never seen on closed meshes (the book culls none): culling them
-                        // saves their fragments, and removes depth ties where a back face meets a front face
-                        // at a silhouette edge -- ties that standard and reversed-Z break differently. Models
-                        // wind front faces counter-clockwise; the flipped viewport keeps that orientation on
-                        // screen. Double-sided materials show both faces.
-                        .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
-                                                : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
-                        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-                        .depthTest = true,
-                        .depthWrite = true,
-                        // Reversed-Z: nearer is larger.
-                        .depthCompare =
-                            target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
-                        .colorAttachmentCount = uint32_t(target.colorFormats.size()),
-                        .layout = layout,
-                        .pNext = &rendering,
-                    });
-            }
+        for (const MaterialClass& materialClass : pipelines.materials.classes) {
+            //> class-constants
+            // The class's constants (scene_surface.glsl): constant_id 0 ALPHA_TEST, 1
+            // MATERIAL_FEATURES, 2 FEATURES_AT_RUN_TIME, each 4 bytes of `constants`.
+            struct {
+                VkBool32 alphaTest;
+                uint32_t features;
+                VkBool32 atRunTime;
+            } constants{materialClass.alphaTest, materialClass.features, generic};
+            std::array<VkSpecializationMapEntry, 3> entries{{
+                {.constantID = 0, .offset = 0, .size = sizeof(VkBool32)},
+                {.constantID = 1, .offset = 4, .size = sizeof(uint32_t)},
+                {.constantID = 2, .offset = 8, .size = sizeof(VkBool32)},
+            }};
+            VkSpecializationInfo specialization{.mapEntryCount = uint32_t(entries.size()),
+                                                .pMapEntries = entries.data(),
+                                                .dataSize = sizeof(constants),
+                                                .pData = &constants};
+            //< class-constants
+            bool doubleSided = (materialClass.features & kMaterialDoubleSided) != 0u;
+            made.push_back(common::createGraphicsPipeline(
+                device, cache,
+                {
+                    .name = className(materialClass, generic),
+                    .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                               common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
+                    .vertexInput = &vertexInput.state,
+                    // Back faces are never seen on closed meshes (the book culls none): culling them
+                    // saves their fragments, and removes depth ties where a back face meets a front face
+                    // at a silhouette edge -- ties that standard and reversed-Z break differently. Models
+                    // wind front faces counter-clockwise; the flipped viewport keeps that orientation on
+                    // screen. Double-sided materials show both faces.
+                    .cullMode = doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE)
+                                            : VkCullModeFlags(VK_CULL_MODE_BACK_BIT),
+                    .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+                    .depthTest = true,
+                    .depthWrite = true,
+                    // Reversed-Z: nearer is larger.
+                    .depthCompare =
+                        target.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
+                    .colorAttachmentCount = uint32_t(target.colorFormats.size()),
+                    .layout = pipelines.layout,
+                    .pNext = &rendering,
+                }));
+        }
     } catch (...) {
         for (VkPipeline pipeline : made) vkDestroyPipeline(device.handle, pipeline, nullptr);
         throw;
@@ -166,9 +196,23 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     common::nameObject(device.handle, pipelines.layout, "scene");
 
     pipelines.target = target;
-    std::array<VkPipeline, 4> made = makeScenePipelineSet(device, cache, pipelines.layout, target);
-    pipelines.opaque = made[0], pipelines.cutout = made[1];
-    pipelines.opaqueDoubleSided = made[2], pipelines.cutoutDoubleSided = made[3];
+    //> material-classes
+    // The classes the scene's materials have (common::MaterialClasses). Generic pipelines are
+    // told only what the pipeline state itself needs: the alpha test (so opaque draws keep early
+    // depth testing) and the culling.
+    for (size_t i = 0; i < pass.materialClasses.size(); ++i) {
+        MaterialClass materialClass = pass.materialClasses[i];
+        if (pass.genericPipelines) materialClass.features &= kMaterialDoubleSided;
+        pipelines.materials.add(materialClass, pass.materialUsed[i]);
+    }
+    //< material-classes
+    try {
+        pipelines.pipelines = makeScenePipelineSet(device, cache, pipelines, pass.genericPipelines);
+    } catch (...) {
+        vkDestroyPipelineLayout(device.handle, pipelines.layout, nullptr);
+        throw;
+    }
+    pipelines.generic = pass.genericPipelines;
     return pipelines;
 }
 
@@ -177,26 +221,22 @@ void remakeScenePipelines(const common::Device& device, VkPipelineCache cache, S
     if (pipelines.layout == VK_NULL_HANDLE ||
         !reload.changed({pipelines.target.shaders.vertex, pipelines.target.shaders.fragment}))
         return;
-    std::array<VkPipeline, 4> made = makeScenePipelineSet(device, cache, pipelines.layout, pipelines.target);
-    VkPipeline* places[] = {&pipelines.opaque, &pipelines.cutout, &pipelines.opaqueDoubleSided,
-                            &pipelines.cutoutDoubleSided};
-    for (size_t i = 0; i < made.size(); ++i) swap.pipelines.emplace_back(places[i], made[i]);
+    std::vector<VkPipeline> made = makeScenePipelineSet(device, cache, pipelines, pipelines.generic);
+    for (size_t i = 0; i < made.size(); ++i) swap.pipelines.emplace_back(&pipelines.pipelines[i], made[i]);
 }
 
 void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelines) {
-    vkDestroyPipeline(device.handle, pipelines.cutoutDoubleSided, nullptr);
-    vkDestroyPipeline(device.handle, pipelines.opaqueDoubleSided, nullptr);
-    vkDestroyPipeline(device.handle, pipelines.cutout, nullptr);
-    vkDestroyPipeline(device.handle, pipelines.opaque, nullptr);
+    for (VkPipeline pipeline : pipelines.pipelines) vkDestroyPipeline(device.handle, pipeline, nullptr);
     vkDestroyPipelineLayout(device.handle, pipelines.layout, nullptr);
     pipelines = {};
 }
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight, const GBufferLayout& layout,
-                          const SceneShaders& shaders) {
+                          const SceneShaders& shaders, bool genericPipelines) {
     ScenePass pass;
     pass.layout = &layout;
+    pass.genericPipelines = genericPipelines;
     for (VkFormat format : common::colorFormats(layout.formats)) {
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(device.physical, format, &properties);
@@ -274,11 +314,8 @@ void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines
     VkPipeline bound = VK_NULL_HANDLE;
     for (uint32_t index : pass.order) {
         const common::Draw& draw = scene.draws[index];
-        const common::GpuMaterial& material = scene.materials[draw.material];
         VkPipeline pipeline =
-            material.doubleSided
-                ? (material.alphaTested ? pipelines.cutoutDoubleSided : pipelines.opaqueDoubleSided)
-                : (material.alphaTested ? pipelines.cutout : pipelines.opaque);
+            pipelines.pipelines[pipelines.materials.ofMaterial[draw.material]];  // its class's
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;

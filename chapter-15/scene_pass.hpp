@@ -38,15 +38,23 @@ struct ScenePipelineTarget {
     std::vector<VkDescriptorSetLayout> moreSets;  // sets 3.. after the scene pass's own
 };
 
-// The scene's pipelines from one fragment shader: without the alpha test (opaque materials:
-// early depth testing) and with it (cut-outs); each with back faces culled, and without culling
-// for double-sided materials (glTF's doubleSided).
+// A material class: the features of a material that a scene pipeline is specialised for
+// (scene_surface.glsl's constants). Materials of one class draw with one pipeline.
+struct MaterialClass {
+    uint32_t features = 0;   // the MATERIAL_ bits (gpu_types.hpp)
+    bool alphaTest = false;  // a cut-out: alpha below its cutoff is discarded
+    bool operator==(const MaterialClass&) const = default;
+};
+
+// The scene's pipelines from one fragment shader: one per material class the scene's materials
+// have (none for classes no material has), each with back faces culled unless the class is
+// double-sided (glTF's doubleSided). Generic ones (--pipelines generic) ask each material's
+// features as they run: one per alpha test and sidedness the scene has.
 struct ScenePipelines {
     VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
-    VkPipeline opaque = VK_NULL_HANDLE;
-    VkPipeline cutout = VK_NULL_HANDLE;
-    VkPipeline opaqueDoubleSided = VK_NULL_HANDLE;
-    VkPipeline cutoutDoubleSided = VK_NULL_HANDLE;
+    common::MaterialClasses<MaterialClass> materials;  // the classes, and each material's
+    std::vector<VkPipeline> pipelines;                 // one per class
+    bool generic = false;                              // FEATURES_AT_RUN_TIME
     ScenePipelineTarget target;  // what they were made for, to make them again on a reload
 };
 
@@ -62,6 +70,9 @@ struct ScenePass {
     common::Buffer materials;
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialTextureSets;
+    std::vector<MaterialClass> materialClasses;  // per material: the features it uses
+    std::vector<bool> materialUsed;              // per material: whether a draw uses it
+    bool genericPipelines = false;               // --pipelines generic
     ScenePipelines pipelines;
     std::vector<uint32_t> order;  // the draws' indices in the order they are recorded
     glm::vec3 orderedFrom{0.0f};  // the camera position `order` was made for
@@ -72,7 +83,8 @@ struct ScenePass {
 // or X8_D24_UNORM_PACK32, or to D32_SFLOAT for a reversed-Z layout).
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
-                          const GBufferLayout& layout = kBookGBuffer, const SceneShaders& shaders = {});
+                          const GBufferLayout& layout = kBookGBuffer, const SceneShaders& shaders = {},
+                          bool genericPipelines = false);
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.

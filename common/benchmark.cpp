@@ -148,6 +148,14 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     }
 }
 
+void addPipelineInfo(std::vector<std::pair<std::string, std::string>>& info, size_t scenePipelines,
+                     double passesMs) {
+    info.push_back({"scene_pipelines", std::to_string(scenePipelines)});
+    char ms[32];
+    std::snprintf(ms, sizeof(ms), "%.1f ms", passesMs);
+    info.push_back({"passes_startup", ms});
+}
+
 std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo& chapter,
                                                                const Options& options, const Device& device,
                                                                const Target& target, VkFormat depthFormat) {

@@ -76,4 +76,10 @@ std::vector<std::pair<std::string, std::string>> benchmarkInfo(const ChapterInfo
                                                                const Target& target,
                                                                VkFormat depthFormat = VK_FORMAT_UNDEFINED);
 
+// The pipelines a scene chapter made at start-up, for the report: `scenePipelines` (one per
+// material class the scene has) and how long making the passes took (`passesMs`: their pipelines,
+// mostly -- a cold pipeline cache shows here).
+void addPipelineInfo(std::vector<std::pair<std::string, std::string>>& info, size_t scenePipelines,
+                     double passesMs);
+
 }  // namespace common

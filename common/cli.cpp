@@ -252,6 +252,11 @@ Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& c
     return options;
 }
 
+bool genericPipelines(const Options& options) {
+    auto chosen = options.choices.find(kPipelinesChoice.name);
+    return chosen != options.choices.end() && chosen->second == 1;
+}
+
 uint32_t frameCount(const Options& options) {
     if (options.benchmark) return options.warmup + (options.frames != 0 ? options.frames : 100);
     if (options.frames != 0) return options.frames;

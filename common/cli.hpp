@@ -69,6 +69,17 @@ struct ChapterInfo {
     std::vector<Choice> choices = {};
 };
 
+// --pipelines, for the chapters that draw scenes (10 on): "specialised" (the default) makes the
+// pipelines for what the scene holds -- one per material class its materials have, the light
+// pass for its lights of each kind -- so features a scene does not use cost nothing; "generic"
+// makes one set for any scene, which asks each material's flags and each light's kind as it runs
+// (to measure what specialising saves).
+inline const Choice kPipelinesChoice{
+    "pipelines",
+    {"specialised", "generic"},
+    "pipelines made for the scene's material classes and lights, or generic ones that ask as they run"};
+bool genericPipelines(const Options& options);
+
 // Parses argv with CLI11, each option bound to its field and each value checked as it is given;
 // throws InputError with a one-line message naming the first bad argument.
 Options parseCommandLine(int argc, const char* const* argv, const ChapterInfo& chapter);

@@ -522,4 +522,10 @@ void describeSceneVertexInput(SceneVertexInput& input, uint32_t attributes) {
     };
 }
 
+std::vector<bool> usedMaterials(const GpuScene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Draw& draw : scene.draws) used[draw.material] = true;
+    return used;
+}
+
 }  // namespace common

@@ -109,4 +109,31 @@ struct SceneVertexInput {
 };
 void describeSceneVertexInput(SceneVertexInput& input, uint32_t attributes);
 
+//> material-classes
+// Materials grouped by the pipeline they draw with: the distinct classes (what a pipeline's
+// specialization constants are set from; any type with ==), in the order materials first use
+// them, and each material's index into them. A scene pass makes one pipeline per class, so a
+// scene pays only for the features its materials use; a material no draw uses adds no class.
+template <typename Class>
+struct MaterialClasses {
+    static constexpr uint32_t kUnused = UINT32_MAX;
+    std::vector<Class> classes;
+    std::vector<uint32_t> ofMaterial;  // material index -> index into classes (kUnused: no draw)
+
+    void add(const Class& materialClass, bool used) {  // the next material's class
+        if (!used) {
+            ofMaterial.push_back(kUnused);
+            return;
+        }
+        uint32_t index = 0;
+        while (index < classes.size() && !(classes[index] == materialClass)) ++index;
+        if (index == classes.size()) classes.push_back(materialClass);
+        ofMaterial.push_back(index);
+    }
+};
+//< material-classes
+
+// Per material of the scene: whether some draw uses it.
+std::vector<bool> usedMaterials(const GpuScene& scene);
+
 }  // namespace common

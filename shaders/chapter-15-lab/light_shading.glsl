@@ -37,11 +37,7 @@ SurfaceSample readGBuffer(vec2 uv) {
 #ifdef TILED_LIGHTS
 #include "light_tiles.glsl"
 #else
-vec3 shadeLights(ivec2 pixel, SurfaceSample s, vec3 N, vec3 V) {  // chapter-15's: every light
-    vec3 color = vec3(0.0);
-    for (uint i = 0u; i < scene.lightCount; ++i) color += shadeLight(i, s, N, V);
-    return color;
-}
+#include "../chapter-15/light_loop.glsl"  // chapter-15's: every light
 #endif
 
 #include "../chapter-15/shade_pixel.glsl"

@@ -31,12 +31,18 @@ struct SurfaceSample {
     float depth;
 };
 
-// Light i's contribution to a surface point (camera-relative position, unit N and V).
-vec3 shadeLight(uint i, SurfaceSample s, vec3 N, vec3 V) {
+// Light i's contribution to a surface point (camera-relative position, unit N and V), the light
+// known to be `directional` or not (a constant where the pipeline knows it: the other kind's
+// code goes).
+vec3 shadeLightOfKind(uint i, bool directional, SurfaceSample s, vec3 N, vec3 V) {
     ShaderLight light = lights[i];
-    bool directional = light.directional != 0u;
     vec3 lightPosition = directional ? light.position : light.position - scene.cameraPosition;
     return evaluateLightInRange(directional, lightPosition, light.color, light.intensity, light.range, s.position, N,
                                 V, s.albedo, s.pbr.b, s.pbr.g);
+}
+
+// Light i's contribution, its kind read from the light.
+vec3 shadeLight(uint i, SurfaceSample s, vec3 N, vec3 V) {
+    return shadeLightOfKind(i, lights[i].directional != 0u, s, N, V);
 }
 //< light-inputs

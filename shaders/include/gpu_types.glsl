@@ -28,11 +28,13 @@ const uint MATERIAL_NORMAL_MAP = 1u;       // flags: the material has a normal m
 const uint MATERIAL_METAL_ROUGH_MAP = 2u;  //        ... a metal-rough map
 const uint MATERIAL_OCCLUSION_MAP = 4u;    //        ... an occlusion map (glTF)
 const uint MATERIAL_DOUBLE_SIDED = 8u;     //        back faces are seen: their normals are flipped
+const uint MATERIAL_BASE_COLOR_MAP = 16u;  //        a base-colour (albedo) texture
+const uint MATERIAL_NORMAL_SCALE = 32u;    //        a normal map whose scale is not 1 (glTF)
 struct ShaderMaterial {
     vec4 diffuse;
     float roughness;  // factors, multiplied by the metal-rough texture's when there is one
     float metallic;
-    uint flags;       // the MATERIAL_ bits: textures not worth sampling are skipped
+    uint flags;       // the MATERIAL_ bits: the features the material uses (its class)
     float alphaCutoff;        // cut-outs: alpha below it is discarded
     float normalScale;        // glTF normalTexture.scale: scales the map's x and y
     float occlusionStrength;  // glTF occlusionTexture.strength: ao = 1 + strength * (sample - 1)

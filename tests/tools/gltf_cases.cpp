@@ -190,6 +190,99 @@ void writeSame(const fs::path& dir) {
     file.writeGltf(dir / "model_no_scene.gltf");
 }
 
+// ---- Every material feature ------------------------------------------------------------------
+
+// Nine quads in a 3 x 3 grid, one material each, between them every feature a scene pipeline is
+// specialised for -- base-colour texture, normal map (scale 1 and not), metal-rough texture,
+// occlusion map, alpha mask, double-sided -- alone and all at once; two materials of one class
+// (plain colours), so the scene has 8 material classes; and one material no primitive uses. Lit by
+// a sun and two point lights.
+void writeFeatures(const fs::path& dir) {
+    fs::create_directories(dir);
+    std::vector<uint8_t> checker(16 * 16 * 4), bumps(16 * 16 * 3), metalRough(16 * 16 * 3),
+        occlusion(16 * 16 * 3);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            size_t i = size_t(y * 16 + x);
+            bool odd = (x / 4 + y / 4) % 2 != 0;
+            uint8_t* c = &checker[i * 4];
+            c[0] = odd ? 230 : 60, c[1] = odd ? 200 : 120, c[2] = odd ? 90 : 220;
+            c[3] = uint8_t(std::lround((x + 0.5) / 16.0 * 255.0));  // alpha rises left to right
+            // Normals tilted +x on the left half, -x on the right, in tangent space.
+            uint8_t* n = &bumps[i * 3];
+            n[0] = x < 8 ? 200 : 56, n[1] = 128, n[2] = 230;
+            uint8_t* m = &metalRough[i * 3];
+            m[0] = 0, m[1] = uint8_t(40 + 12 * y), m[2] = odd ? 255 : 0;  // G roughness, B metallic
+            uint8_t* o = &occlusion[i * 3];
+            o[0] = o[1] = o[2] = uint8_t(64 + 12 * x);
+        }
+    writePng(dir / "checker_alpha.png", 16, 16, 4, checker);
+    writePng(dir / "bumps.png", 16, 16, 3, bumps);
+    writePng(dir / "metal_rough.png", 16, 16, 3, metalRough);
+    writePng(dir / "occlusion.png", 16, 16, 3, occlusion);
+
+    gltf::File file;
+    int checkerTexture = file.texture(file.image("checker_alpha.png"));
+    int bumpsTexture = file.texture(file.image("bumps.png"));
+    int metalRoughTexture = file.texture(file.image("metal_rough.png"));
+    int occlusionTexture = file.texture(file.image("occlusion.png"));
+    auto withBase = [&](json pbr) {
+        pbr["baseColorTexture"] = {{"index", checkerTexture}};
+        return pbr;
+    };
+    auto withMetalRough = [&](json pbr) {
+        pbr["metallicFactor"] = 1.0;
+        pbr["metallicRoughnessTexture"] = {{"index", metalRoughTexture}};
+        return pbr;
+    };
+    std::vector<json> materials{
+        {{"pbrMetallicRoughness", color(0.8f, 0.3f, 0.2f)}},  // none of the extras
+        {{"pbrMetallicRoughness", withBase(color(1, 1, 1))}},
+        {{"pbrMetallicRoughness", withBase(color(1, 1, 1))}, {"normalTexture", {{"index", bumpsTexture}}}},
+        {{"pbrMetallicRoughness", color(0.7f, 0.7f, 0.7f)},
+         {"normalTexture", {{"index", bumpsTexture}, {"scale", 0.5}}}},
+        {{"pbrMetallicRoughness", withMetalRough(color(0.9f, 0.8f, 0.5f))}},
+        {{"pbrMetallicRoughness", color(0.6f, 0.8f, 0.6f)},
+         {"occlusionTexture", {{"index", occlusionTexture}, {"strength", 0.7}}}},
+        {{"pbrMetallicRoughness", withBase(color(0.5f, 0.9f, 0.9f))},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.4},
+         {"doubleSided", true}},
+        {{"pbrMetallicRoughness", withMetalRough(withBase(color(1, 1, 1)))},
+         {"normalTexture", {{"index", bumpsTexture}, {"scale", 2.0}}},
+         {"occlusionTexture", {{"index", occlusionTexture}, {"strength", 0.5}}},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.3},
+         {"doubleSided", true}},
+        {{"pbrMetallicRoughness", color(0.2f, 0.4f, 0.9f)}},  // the first one's class again
+    };
+    json roots = json::array();
+    for (size_t k = 0; k < materials.size(); ++k) {
+        int m = file.material(materials[k]);
+        float x = -2.5f + 2.5f * float(k % 3), y = 2.5f - 2.5f * float(k / 3);
+        // The double-sided ones turned half away, so their back faces show too.
+        json node = {{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}, {"translation", {x, y, 0}}};
+        if (k == 6 || k == 7) node["rotation"] = {0, 0.9238795, 0, 0.3826834};  // 135 degrees about y
+        roots.push_back(file.node(node));
+    }
+    // A material no primitive uses, of a class of its own: it must make no pipeline.
+    file.material({{"pbrMetallicRoughness", color(0.5f, 0.5f, 0.5f)},
+                   {"occlusionTexture", {{"index", occlusionTexture}}},
+                   {"doubleSided", true}});
+    file.scene(roots);
+    file.writeGltf(dir / "features.gltf");
+
+    json lights = json::array(
+        {{{"type", "point"}, {"position", {-2, 1, 2}}, {"color", {1, 0.9, 0.8}}, {"intensity", 6.0}},
+         {{"type", "directional"}, {"direction", {-0.3, -0.4, -1}}, {"intensity", 1.5}},
+         {{"type", "point"}, {"position", {2.5, -1.5, 1.5}}, {"intensity", 4.0}, {"range", 6.0}}});
+    json root = {{"models", json::array({{{"file", "features.gltf"}}})},
+                 {"camera", {{"position", {0, 0, 9}}, {"fov", 60}, {"near", 0.5}, {"far", 50}}},
+                 {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.2}}},
+                 {"lights", lights}};
+    writeText(dir / "features.json", root.dump(2));
+}
+
 // ---- A degenerate tangent frame --------------------------------------------------------------
 
 // A normal-mapped quad whose normals and tangents are all zero (an exporter's bug, or vectors
@@ -664,6 +757,7 @@ int main(int argc, char** argv) {
         writeCases(dir / "cases");
         writeSame(dir / "same");
         writeDegenerate(dir / "degenerate");
+        writeFeatures(dir / "features");
         writeHostile(dir / "hostile");
         writeBookClone(dir / "book");
         return 0;
