@@ -6,7 +6,7 @@
 #
 # BUILD_DIR defaults to build (Release); RUNS (default 5) alternating runs of each form, after one
 # run of each that fills the pipeline cache. Scenes: the default courtyard, the Sponza stand-in
-# (bench/sponza_standin.cpp, --book-scene) and the glTF scene of every material feature
+# (bench/sponza_standin.cpp, --book-scene) and the glTF scene of all the material features
 # (tests/tools/gltf_cases.cpp, features/). Prints one markdown row per chapter, scene and form: the
 # medians over the runs of the GPU frame, scene pass and light pass (--benchmark --warmup 10
 # --frames 40, 1280x720 unless --size), the pipelines made for the scene, the time the passes took
@@ -85,6 +85,6 @@ echo "| chapter | scene | pipelines | GPU frame ms | scene pass ms | light pass 
 echo "|---|---|---|---|---|---|---|---|---|"
 compare chapter-15 default
 compare chapter-15 "Sponza stand-in" --book-scene "$work/sponza/Sponza.gltf"
-compare chapter-15 "every feature" --scene "$work/gltf/features/features.json"
+compare chapter-15 "all features" --scene "$work/gltf/features/features.json"
 compare chapter-14 default
 compare chapter-10 default

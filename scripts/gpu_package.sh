@@ -3,7 +3,8 @@
 # headless and the benchmarks there: the Release binaries, shaders and scenes of BUILD_DIR/bin
 # into .gpu/build/bin, the scene generator into .gpu/build/tools, the Sponza stand-in's generator
 # and the bandwidth probe (bench/run.sh --gpu) into .gpu/build/bench/bin (bench/startup.sh writes
-# the model there: it is too large to carry),
+# the model there: it is too large to carry), the glTF cases' generator (bench/specialisation.sh)
+# into .gpu/build/tests/bin,
 # and into .gpu/debs the Debian (amd64) packages of every shared library those programs load --
 # found by ldd, each library mapped to its package with dpkg -S, so a library a chapter starts to
 # load is packed without anyone listing it -- plus the Khronos validation layer (and what it loads),
@@ -38,7 +39,7 @@ for library in libGLdispatch.so.0 libGLX.so.0 libGL.so.1 libEGL.so.1 libOpenGL.s
     glvnd+=("$path")
 done
 programs=("$build"/bin/chapter-* "$build/tools/generate_light_scene" "$build/bench/bin/sponza_standin"
-          "$build/bench/bin/bandwidth" "$layer" "${glvnd[@]}")
+          "$build/bench/bin/bandwidth" "$build/tests/bin/gltf_cases" "$layer" "${glvnd[@]}")
 for program in "${programs[@]}"; do
     [ -f "$program" ] || { echo "gpu_package.sh: $program is missing (build it first)" >&2; exit 1; }
 done
@@ -99,10 +100,12 @@ for package in "${wanted[@]}"; do
     compgen -G "$root/.gpu/debs/${package}_*.deb" > /dev/null ||
         { echo "gpu_package.sh: $package was not downloaded" >&2; exit 1; }
 done
-rm -rf "$root/.gpu/build/bin" "$root/.gpu/build/tools" "$root/.gpu/build/bench"
+rm -rf "$root/.gpu/build/bin" "$root/.gpu/build/tools" "$root/.gpu/build/bench" "$root/.gpu/build/tests"
 cp -r "$build/bin" "$root/.gpu/build/bin"
 mkdir -p "$root/.gpu/build/tools"  # bench/light_scaling.sh makes scenes with it
 cp "$build/tools/generate_light_scene" "$root/.gpu/build/tools/"
 mkdir -p "$root/.gpu/build/bench/bin"
 cp "$build/bench/bin/sponza_standin" "$build/bench/bin/bandwidth" "$root/.gpu/build/bench/bin/"
+mkdir -p "$root/.gpu/build/tests/bin"  # bench/specialisation.sh writes its glTF scene with it
+cp "$build/tests/bin/gltf_cases" "$root/.gpu/build/tests/bin/"
 echo "gpu_package.sh: ${#wanted[@]} packages; $(du -sh "$root/.gpu" | cut -f1) in .gpu"
