@@ -1,0 +1,105 @@
+// chapter-16: the cascades of a directional light's shadow.
+#include "cascades.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+//> cascade-splits
+std::vector<float> cascadeSplits(float near, float far, uint32_t count, float lambda) {
+    std::vector<float> splits(count + 1);
+    splits[0] = near;
+    for (uint32_t i = 1; i < count; ++i) {
+        // p of the way from near to far: logarithmically (each cascade as many times deeper than
+        // the one before) and uniformly, mixed by lambda. In double: far / near may be 1e5.
+        double p = double(i) / double(count);
+        double logarithmic = double(near) * std::pow(double(far) / double(near), p);
+        double uniform = double(near) + (double(far) - double(near)) * p;
+        splits[i] = float(double(lambda) * logarithmic + (1.0 - double(lambda)) * uniform);
+    }
+    splits[count] = far;  // exactly: the last cascade ends where the view does
+    return splits;
+}
+//< cascade-splits
+
+//> light-up
+glm::vec3 lightUp(glm::vec3 direction) {
+    // The book switches to z only when |dot(direction, y)| is exactly 1: a light a hair off
+    // vertical keeps y, and lookAt's cross product of two nearly parallel vectors is nearly zero
+    // (its normalisation then amplifies rounding into a random frame). Taking the axis of the
+    // smaller |dot| keeps the two at least 45 degrees apart.
+    glm::vec3 d = glm::normalize(direction);
+    return std::abs(d.y) <= std::abs(d.z) ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+//< light-up
+
+std::vector<glm::vec3> sliceCorners(const CascadeCamera& camera, float from, float to) {
+    // In view space a corner at view distance d is (+-d tan(fovY/2) aspect, +-d tan(fovY/2), -d):
+    // no inverse of the projection, whose far plane may be 1e5 times its near one.
+    glm::mat4 toWorld = glm::inverse(camera.view);
+    float tanY = std::tan(camera.fovY * 0.5f), tanX = tanY * camera.aspect;
+    std::vector<glm::vec3> corners;
+    for (float d : {from, to})
+        for (glm::vec2 sign : {glm::vec2(-1, 1), glm::vec2(1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
+            corners.push_back(glm::vec3(toWorld * glm::vec4(sign.x * d * tanX, sign.y * d * tanY, -d, 1.0f)));
+    return corners;
+}
+
+//> compute-cascades
+std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 lightDirection,
+                                     const CascadeSettings& settings) {
+    std::vector<float> splits = cascadeSplits(camera.near, camera.far, settings.count, settings.lambda);
+    glm::vec3 direction = glm::normalize(lightDirection);
+    glm::vec3 up = lightUp(direction);
+    std::vector<Cascade> cascades(settings.count);
+    for (uint32_t i = 0; i < settings.count; ++i) {
+        Cascade& cascade = cascades[i];
+        cascade.splitNear = splits[i];
+        cascade.splitFar = splits[i + 1];
+        // The slice's bounding sphere: centred on its corners' mean, radius rounded up to 1/16
+        // so that it changes only in steps as the camera turns (the projection's scale, and so
+        // the size of a texel in the world, stays put between the steps).
+        std::vector<glm::vec3> corners = sliceCorners(camera, cascade.splitNear, cascade.splitFar);
+        glm::vec3 center(0.0f);
+        for (const glm::vec3& corner : corners) center += corner / 8.0f;
+        float radius = 0.0f;
+        for (const glm::vec3& corner : corners) radius = std::max(radius, glm::length(corner - center));
+        radius = std::ceil(radius * 16.0f) / 16.0f;
+        cascade.center = center;
+        cascade.radius = radius;
+
+        // The light's camera: on the sphere, looking along the light through its centre. The
+        // orthographic box is the sphere's square plus one texel on every side, so that the
+        // snapping below (less than a texel) never moves the slice out of it; depth 0 at the eye,
+        // 1 at twice the radius. Casters between the light and the box are kept by depth clamping
+        // (the shadow pass's pipeline).
+        float texel = 2.0f * radius / float(settings.mapSize - 2);  // a texel's size in the world
+        float half = radius + texel;
+        cascade.view = glm::lookAt(center - direction * radius, center, up);
+        cascade.projection = glm::ortho(-half, half, -half, half, 0.0f, 2.0f * radius);
+
+        // Texel snapping: where the world's origin lands in the shadow map, in texels, and the
+        // projection moved by what rounds that to a whole texel. The book rounds the origin's
+        // position in the light's *view* (world units), which does not snap to texels.
+        glm::vec4 origin = cascade.projection * cascade.view * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        float texelsPerUnit = float(settings.mapSize) * 0.5f;  // clip x and y span -1..1
+        glm::vec2 texels = glm::vec2(origin) * texelsPerUnit;
+        glm::vec2 offset = (glm::round(texels) - texels) / texelsPerUnit;
+        cascade.projection[3][0] += offset.x;
+        cascade.projection[3][1] += offset.y;
+        cascade.viewProjection = cascade.projection * cascade.view;
+    }
+    return cascades;
+}
+//< compute-cascades
+
+float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far) {
+    float farthest = near;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 corner((i & 1) ? boundsMax.x : boundsMin.x, (i & 2) ? boundsMax.y : boundsMin.y,
+                         (i & 4) ? boundsMax.z : boundsMin.z);
+        farthest = std::max(farthest, -(view * glm::vec4(corner, 1.0f)).z);  // view distance
+    }
+    return std::clamp(farthest, near, far);
+}
