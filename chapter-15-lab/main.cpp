@@ -555,7 +555,9 @@ void run(const common::Options& options) {
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(scenePass.formats))});
     common::addPipelineInfo(
         info, scenePass.pipelines.pipelines.size() + forwardPass.pipelines.pipelines.size(), passesMs);
-    info.push_back({"light_pipeline", describeLightKinds(light.pass.kinds)});
+    // Forward shading has no light pass: forward.frag loops over the lights itself.
+    info.push_back(
+        {"light_pipeline", forward ? "none (forward shading)" : describeLightKinds(light.pass.kinds)});
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -53,6 +53,13 @@ std::vector<ShaderLight> shaderLights(const common::Scene& scene) {
 }
 //< shader-lights
 
+bool inKindOrder(const std::vector<ShaderLight>& lights, LightKinds kinds) {
+    if (int64_t(lights.size()) != int64_t(kinds.directional) + kinds.point) return false;
+    for (size_t i = 0; i < lights.size(); ++i)
+        if ((lights[i].directional != 0u) != (int64_t(i) < kinds.directional)) return false;
+    return true;
+}
+
 LightKinds lightKinds(const std::vector<ShaderLight>& lights) {
     auto directional = std::count_if(lights.begin(), lights.end(),
                                      [](const ShaderLight& light) { return light.directional != 0u; });
@@ -150,10 +157,10 @@ void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight
                   const ShaderSceneInfo& scene) {
     // std::copy_n, not memcpy: a scene with no lights has lights.data() == nullptr, which memcpy
     // must not be given even for 0 bytes (UndefinedBehaviorSanitizer reports it).
-    if (pass.kinds != LightKinds{} && lightKinds(lights) != pass.kinds)
-        throw common::Failure("the scene's lights changed kind or number: the light pass was made for " +
-                              std::to_string(pass.kinds.directional) + " directional and " +
-                              std::to_string(pass.kinds.point) + " point lights");
+    if (pass.kinds != LightKinds{} && !inKindOrder(lights, pass.kinds))
+        throw common::Failure("the light pass was made for " + describeLightKinds(pass.kinds) +
+                              " lights, directional first; it was given " +
+                              describeLightKinds(lightKinds(lights)) + " (or another order)");
     uint32_t count = std::min<uint32_t>(uint32_t(lights.size()), pass.lightCapacity);
     std::copy_n(lights.data(), count, static_cast<ShaderLight*>(pass.frames[frame].lights.mapped));
     ShaderSceneInfo info = scene;

@@ -58,6 +58,9 @@ struct LightConstants {
 std::vector<ShaderLight> shaderLights(const common::Scene& scene);
 // The kinds of `lights` (shaderLights' order).
 LightKinds lightKinds(const std::vector<ShaderLight>& lights);
+// Whether `lights` are `kinds.directional` directional lights followed by `kinds.point` point
+// lights: what a pipeline specialised to `kinds` shades right.
+bool inKindOrder(const std::vector<ShaderLight>& lights, LightKinds kinds);
 // "1 directional, 1 point", or "generic": for the benchmark report.
 std::string describeLightKinds(LightKinds kinds);
 
@@ -93,7 +96,7 @@ LightPass createLightPass(const common::Device& device, VkPipelineCache cache, V
 void resizeLightPass(const common::Device& device, LightPass& pass, VkExtent2D extent,
                      const common::GBuffer& gbuffer);
 // Writes this frame's lights and scene info (lights.size() <= lightCapacity). Throws Failure when
-// a specialised pass is given lights of other kinds than it was made for.
+// a specialised pass is given lights not in its kinds' order (inKindOrder).
 void updateLights(LightPass& pass, uint32_t frame, const std::vector<ShaderLight>& lights,
                   const ShaderSceneInfo& scene);
 // `moreSets`: the sets from 3 on, when the setup's pipeline has them.

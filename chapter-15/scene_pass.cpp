@@ -72,7 +72,7 @@ void createDescriptors(const common::Device& device, ScenePass& pass, const comm
                             (m.doubleSided ? kMaterialDoubleSided : 0u);
         shaderMaterials.push_back({m.diffuse, m.roughness, m.metallic, features, m.alphaCutoff, m.normalScale,
                                    m.occlusionStrength, glm::vec2(0.0f)});
-        pass.materialClasses.push_back({features, m.alphaTested});
+        pass.classOfMaterial.push_back({features, m.alphaTested});
     }
     pass.materialUsed = common::usedMaterials(scene);
     //< shader-materials
@@ -120,7 +120,7 @@ std::vector<VkPipeline> makeScenePipelineSet(const common::Device& device, VkPip
     common::ShaderModule fragment(device, target.shaders.fragment);
     std::vector<VkPipeline> made;
     try {
-        for (const MaterialClass& materialClass : pipelines.materials.classes) {
+        for (const MaterialClass& materialClass : pipelines.materialClasses.classes) {
             //> class-constants
             // The class's constants (scene_surface.glsl): constant_id 0 ALPHA_TEST, 1
             // MATERIAL_FEATURES, 2 FEATURES_AT_RUN_TIME, each 4 bytes of `constants`.
@@ -200,10 +200,10 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     // The classes the scene's materials have (common::MaterialClasses). Generic pipelines are
     // told only what the pipeline state itself needs: the alpha test (so opaque draws keep early
     // depth testing) and the culling.
-    for (size_t i = 0; i < pass.materialClasses.size(); ++i) {
-        MaterialClass materialClass = pass.materialClasses[i];
+    for (size_t i = 0; i < pass.classOfMaterial.size(); ++i) {
+        MaterialClass materialClass = pass.classOfMaterial[i];
         if (pass.genericPipelines) materialClass.features &= kMaterialDoubleSided;
-        pipelines.materials.add(materialClass, pass.materialUsed[i]);
+        pipelines.materialClasses.add(materialClass, pass.materialUsed[i]);
     }
     //< material-classes
     try {
@@ -315,7 +315,7 @@ void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines
     for (uint32_t index : pass.order) {
         const common::Draw& draw = scene.draws[index];
         VkPipeline pipeline =
-            pipelines.pipelines[pipelines.materials.ofMaterial[draw.material]];  // its class's
+            pipelines.pipelines[pipelines.materialClasses.ofMaterial[draw.material]];  // its class's
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
         VkDeviceSize offset = 0;

@@ -52,9 +52,9 @@ struct MaterialClass {
 // features as they run: one per alpha test and sidedness the scene has.
 struct ScenePipelines {
     VkPipelineLayout layout = VK_NULL_HANDLE;  // sets 0-2 (camera, materials, textures), then any more
-    common::MaterialClasses<MaterialClass> materials;  // the classes, and each material's
-    std::vector<VkPipeline> pipelines;                 // one per class
-    bool generic = false;                              // FEATURES_AT_RUN_TIME
+    common::MaterialClasses<MaterialClass> materialClasses;  // the classes, and each material's
+    std::vector<VkPipeline> pipelines;                       // one per class
+    bool generic = false;                                    // FEATURES_AT_RUN_TIME
     ScenePipelineTarget target;  // what they were made for, to make them again on a reload
 };
 
@@ -70,7 +70,7 @@ struct ScenePass {
     common::Buffer materials;
     VkDescriptorSet materialsSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialTextureSets;
-    std::vector<MaterialClass> materialClasses;  // per material: the features it uses
+    std::vector<MaterialClass> classOfMaterial;  // per material: the features it uses
     std::vector<bool> materialUsed;              // per material: whether a draw uses it
     bool genericPipelines = false;               // --pipelines generic
     ScenePipelines pipelines;

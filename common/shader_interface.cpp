@@ -87,6 +87,18 @@ public:
     Reflection& operator=(const Reflection&) = delete;
 
     Interface reflect(bool usedOnly);
+    // Every specialization constant's ID and the bytes Vulkan takes for its value (a bool: 4).
+    void constantSizes(std::map<unsigned, uint32_t>& sizes) const {
+        const spvc_specialization_constant* constants = nullptr;
+        size_t count = 0;
+        spvc_compiler_get_specialization_constants(compiler_, &constants, &count);
+        for (size_t i = 0; i < count; ++i) {
+            spvc_type t =
+                type(spvc_constant_get_type(spvc_compiler_get_constant_handle(compiler_, constants[i].id)));
+            bool boolean = spvc_type_get_basetype(t) == SPVC_BASETYPE_BOOLEAN;
+            sizes[constants[i].constant_id] = boolean ? 4u : spvc_type_get_bit_width(t) / 8u;
+        }
+    }
 
 private:
     spvc_type type(spvc_type_id id) const { return spvc_compiler_get_type_handle(compiler_, id); }
@@ -604,9 +616,32 @@ std::string shaderInterfaceChange(const std::vector<uint32_t>& built, const std:
     return interfaceChange(b, e);
 }
 
+std::string specializationMismatch(const std::vector<uint32_t>& spirv,
+                                   const VkSpecializationInfo& specialization) {
+    Reflection reflection(spirv);
+    std::map<unsigned, uint32_t> sizes;  // constant_id -> bytes of its value
+    reflection.constantSizes(sizes);
+    for (uint32_t i = 0; i < specialization.mapEntryCount; ++i) {
+        const VkSpecializationMapEntry& entry = specialization.pMapEntries[i];
+        auto found = sizes.find(entry.constantID);
+        if (found == sizes.end())
+            return "the pipeline sets specialization constant " + std::to_string(entry.constantID) +
+                   ", which the shader does not declare";
+        if (found->second != entry.size)
+            return "the pipeline sets specialization constant " + std::to_string(entry.constantID) +
+                   " with " + std::to_string(entry.size) + " bytes; the shader's is " +
+                   std::to_string(found->second);
+    }
+    return {};
+}
+
 #else
 
 std::string shaderInterfaceChange(const std::vector<uint32_t>&, const std::vector<uint32_t>&) {
+    return {};
+}
+
+std::string specializationMismatch(const std::vector<uint32_t>&, const VkSpecializationInfo&) {
     return {};
 }
 

@@ -5,6 +5,8 @@
 // the rules with an example message each.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,5 +20,12 @@ namespace common {
 // declares"). Reflection by SPIRV-Cross; without it (a build without runtime compilation)
 // nothing is compared.
 std::string shaderInterfaceChange(const std::vector<uint32_t>& built, const std::vector<uint32_t>& edited);
+
+// Empty when every constant `specialization` sets is one the SPIR-V declares, with a value of its
+// size (4 bytes for bool, int, uint and float); else why not, naming the constant_id. Vulkan
+// ignores a map entry whose ID the shader does not declare, so a mistyped constant_id would
+// leave the constant at its default without a word. Without SPIRV-Cross nothing is checked.
+std::string specializationMismatch(const std::vector<uint32_t>& spirv,
+                                   const VkSpecializationInfo& specialization);
 
 }  // namespace common

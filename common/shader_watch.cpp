@@ -129,9 +129,9 @@ std::vector<uint32_t> shaderCode(std::string_view name) {
     return gWatch.shaders.insert_or_assign(std::string(name), std::move(entry)).first->second.spirv;
 }
 
-VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
-    std::vector<uint32_t> code =
-        shaderCode(name);  // the build's, compiled from a newer source, or a reload's
+namespace {
+
+VkShaderModule createModule(const Device& device, std::string_view name, const std::vector<uint32_t>& code) {
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
         .codeSize = code.size() * sizeof(uint32_t),
@@ -141,6 +141,27 @@ VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
     VK_CHECK(vkCreateShaderModule(device.handle, &info, nullptr, &module));
     nameObject(device.handle, module, std::string(name));
     return module;
+}
+
+}  // namespace
+
+VkShaderModule loadShaderModule(const Device& device, std::string_view name) {
+    return createModule(device, name, shaderCode(name));  // the build's, from a newer source, or a reload's
+}
+
+ShaderModule::ShaderModule(const Device& device, std::string_view name)
+    : device_(device.handle),
+      name_(name),
+      code_(shaderCode(name)),
+      handle_(createModule(device, name, code_)) {}
+
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, const ShaderModule& module,
+                                            const VkSpecializationInfo* specialization) {
+    if (specialization) {
+        std::string mismatch = specializationMismatch(module.code(), *specialization);
+        if (!mismatch.empty()) throw Failure(module.name() + ": " + mismatch);
+    }
+    return shaderStage(stage, static_cast<VkShaderModule>(module), specialization);
 }
 
 void watchShader(std::string_view name) {

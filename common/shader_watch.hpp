@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "common/device.hpp"
+#include "common/pipeline.hpp"
 #include "common/shader_compiler.hpp"
 
 namespace common {
@@ -38,20 +39,31 @@ std::vector<uint32_t> shaderCode(std::string_view name);
 VkShaderModule loadShaderModule(const Device& device, std::string_view name);
 
 // A shader module for the time a pipeline is made from it: loadShaderModule, and destroyed when it
-// goes out of scope, also when making the pipeline throws (a failed reload leaks nothing).
+// goes out of scope, also when making the pipeline throws (a failed reload leaks nothing). Keeps
+// its name and code, so that the constants a pipeline sets can be checked against it.
 class ShaderModule {
 public:
-    ShaderModule(const Device& device, std::string_view name)
-        : device_(device.handle), handle_(loadShaderModule(device, name)) {}
+    ShaderModule(const Device& device, std::string_view name);
     ~ShaderModule() { vkDestroyShaderModule(device_, handle_, nullptr); }
     ShaderModule(const ShaderModule&) = delete;
     ShaderModule& operator=(const ShaderModule&) = delete;
     operator VkShaderModule() const { return handle_; }
+    const std::string& name() const { return name_; }
+    const std::vector<uint32_t>& code() const { return code_; }
 
 private:
     VkDevice device_;
+    std::string name_;
+    std::vector<uint32_t> code_;
     VkShaderModule handle_;
 };
+
+// common::shaderStage for a ShaderModule, with `specialization` (when given) checked against the
+// constants its shader declares: one it sets that the shader does not declare, or with a value of
+// another size, throws Failure naming the shader and the constant (Vulkan would ignore the entry
+// and leave the constant at its default).
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, const ShaderModule& module,
+                                            const VkSpecializationInfo* specialization = nullptr);
 
 // Remembers a shader a chapter compiled itself (chapter-06), so its edits are noticed too.
 void watchShader(std::string_view name);

@@ -11,6 +11,8 @@
 #               "FILE:LINE: error: ..." on stderr, nothing rendered;
 #   interface   a copy whose FILE reads a descriptor (set 6) the pipeline layout does not have:
 #               exit code 2 and one line "FILE: interface changed: ..." on stderr;
+#   constant-id a copy whose FILE moves a specialization constant to another constant_id (SED):
+#               exit code 1 and one line naming the shader and the ID the pipeline still sets;
 #   no-sources  the executable and its shaders/ copied elsewhere with the recorded source
 #               directory gone (a copied bin/): --help says the build's SPIR-V is used and why,
 #               and the image is the build's.
@@ -99,6 +101,22 @@ newer-include)
     [ "$count" = "$(wc -w <<< "$COMPILED")" ] ||
         fail "$count shaders compiled, not only those that include $INCLUDE: $(grep '(its source is newer' "$work/stdout")"
     grep "^shaders: compiled .* (its source is newer" "$work/stdout"
+    ;;
+constant-id)
+    # A learner's edit that moves a specialization constant to another constant_id (SED, a sed
+    # expression, applied to FILE): the pipeline still sets the old ID, which the shader no longer
+    # declares -- Vulkan would ignore it and leave the constant at its default. The chapter stops
+    # with exit code 1 and one line naming the shader and the ID (EXPECT, a grep pattern).
+    cp -r "$shaders" "$work/shaders"
+    before=$(md5sum < "$work/shaders/$FILE")
+    sed -i "$SED" "$work/shaders/$FILE"
+    [ "$(md5sum < "$work/shaders/$FILE")" != "$before" ] || fail "the edit did not apply to $FILE"
+    "$chapter" "$@" --headless --shader-dir "$work/shaders" --frames 1 > /dev/null 2> "$work/stderr"
+    status=$?
+    [ $status = 1 ] || fail "exit code $status, expected 1"
+    [ "$(wc -l < "$work/stderr")" = 1 ] || fail "not one line on stderr: $(cat "$work/stderr")"
+    grep -q "$EXPECT" "$work/stderr" || fail "not the message expected: $(cat "$work/stderr")"
+    cat "$work/stderr"
     ;;
 bad-output)
     # --check-output on a light output with a bad value (VALUE: a GLSL float written to every

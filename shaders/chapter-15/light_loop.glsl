@@ -1,6 +1,5 @@
 // chapter-15 light pass: shadeLights(), the sum of every light's contribution to one surface
-// point, specialised to the scene's lights. Needs light_inputs.glsl first. Also the lab's light
-// pass without tiled culling (chapter-15-lab/light_shading.glsl).
+// point, specialised to the scene's lights. Needs light_inputs.glsl first.
 
 //> light-loop
 // Every pixel is shaded by every light: a frame costs pixels x lights. The scene's lights by

@@ -192,11 +192,11 @@ void writeSame(const fs::path& dir) {
 
 // ---- Every material feature ------------------------------------------------------------------
 
-// Nine quads in a 3 x 3 grid, one material each, between them every feature a scene pipeline is
-// specialised for -- base-colour texture, normal map (scale 1 and not), metal-rough texture,
-// occlusion map, alpha mask, double-sided -- alone and all at once; two materials of one class
-// (plain colours), so the scene has 8 material classes; and one material no primitive uses. Lit by
-// a sun and two point lights.
+// Eleven quads in a grid of three columns, one material each, between them every feature a scene
+// pipeline is specialised for -- base-colour texture, normal map (scale 1 and not), metal-rough
+// texture, occlusion map, alpha mask, double-sided -- alone and all at once, and each pairing of
+// the alpha test with the culling; two materials of one class (plain colours), so the scene has 10
+// material classes; and one material no primitive uses. Lit by a sun and two point lights.
 void writeFeatures(const fs::path& dir) {
     fs::create_directories(dir);
     std::vector<uint8_t> checker(16 * 16 * 4), bumps(16 * 16 * 3), metalRough(16 * 16 * 3),
@@ -255,6 +255,14 @@ void writeFeatures(const fs::path& dir) {
          {"alphaCutoff", 0.3},
          {"doubleSided", true}},
         {{"pbrMetallicRoughness", color(0.2f, 0.4f, 0.9f)}},  // the first one's class again
+        // Double-sided but opaque, and a cut-out that is single-sided: the other two pairings of
+        // the alpha test and the culling.
+        {{"pbrMetallicRoughness", color(0.9f, 0.6f, 0.3f)},
+         {"normalTexture", {{"index", bumpsTexture}}},
+         {"doubleSided", true}},
+        {{"pbrMetallicRoughness", withBase(color(0.9f, 0.5f, 0.9f))},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.6}},
     };
     json roots = json::array();
     for (size_t k = 0; k < materials.size(); ++k) {
@@ -262,7 +270,8 @@ void writeFeatures(const fs::path& dir) {
         float x = -2.5f + 2.5f * float(k % 3), y = 2.5f - 2.5f * float(k / 3);
         // The double-sided ones turned half away, so their back faces show too.
         json node = {{"mesh", file.mesh(json::array({quadPrimitive(file, m)}))}, {"translation", {x, y, 0}}};
-        if (k == 6 || k == 7) node["rotation"] = {0, 0.9238795, 0, 0.3826834};  // 135 degrees about y
+        if (k == 6 || k == 7 || k == 9)
+            node["rotation"] = {0, 0.9238795, 0, 0.3826834};  // 135 degrees about y
         roots.push_back(file.node(node));
     }
     // A material no primitive uses, of a class of its own: it must make no pipeline.
@@ -277,7 +286,7 @@ void writeFeatures(const fs::path& dir) {
          {{"type", "directional"}, {"direction", {-0.3, -0.4, -1}}, {"intensity", 1.5}},
          {{"type", "point"}, {"position", {2.5, -1.5, 1.5}}, {"intensity", 4.0}, {"range", 6.0}}});
     json root = {{"models", json::array({{{"file", "features.gltf"}}})},
-                 {"camera", {{"position", {0, 0, 9}}, {"fov", 60}, {"near", 0.5}, {"far", 50}}},
+                 {"camera", {{"position", {0, -1.25, 11.5}}, {"fov", 60}, {"near", 0.5}, {"far", 50}}},
                  {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.2}}},
                  {"lights", lights}};
     writeText(dir / "features.json", root.dump(2));
