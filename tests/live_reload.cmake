@@ -161,8 +161,9 @@ foreach(case "chapter-06;chapter-06/triangle.frag;chapter-06/triangle.vert"
                  XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 RETOUCH=${other})
 endforeach()
 # A reload makes only the pipelines whose shaders changed: chapter-15's light shader, one; the post
-# shader, two (with and without FXAA); none of the scene pass's.
-foreach(case "light;chapter-15/light.frag;1" "post;common/post.frag;2")
+# shader, two (with and without FXAA); none of the scene pass's; the scene shader, one per material
+# class of the default scene, four (each with its constants, checked against the new code).
+foreach(case "light;chapter-15/light.frag;1" "post;common/post.frag;2" "scene;chapter-15/scene.frag;4")
     list(GET case 0 kind)
     list(GET case 1 file)
     list(GET case 2 count)
@@ -170,6 +171,8 @@ foreach(case "light;chapter-15/light.frag;1" "post;common/post.frag;2")
     set_property(TEST live-reload.chapter-15.pipelines-${kind} APPEND PROPERTY ENVIRONMENT
                  XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=${count})
 endforeach()
+set_property(TEST live-reload.chapter-15.pipelines-scene APPEND PROPERTY ENVIRONMENT
+             "GOOD=    outAlbedo = vec4(1.0, 0.0, 1.0, 1.0)\;  // live_reload.sh")
 # The second of the post pass's two pipelines fails: the first, already made, is destroyed.
 live_test(live-reload.chapter-15.pipeline-fails-second fault common/post.frag
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe)

@@ -66,7 +66,7 @@ cp -r "$shaders" "$work/edited" || fail "cannot copy $shaders"
 cp -r "$shaders" "$work/original"
 target="$work/edited/$shader"
 [ -f "$target" ] || fail "no $shader in $shaders"
-good='    outColor = vec4(1.0, 0.0, 1.0, 1.0);  // live_reload.sh'
+good=${GOOD:-'    outColor = vec4(1.0, 0.0, 1.0, 1.0);  // live_reload.sh'}  # GOOD: another shader's output
 second='    outColor = vec4(0.0, 1.0, 1.0, 1.0);  // live_reload.sh'
 broken='    outColor = vec4(1.0, 0.0, 1.0 1.0);  // live_reload.sh'
 interface='    outColor = liveReloadExtra.color;  // live_reload.sh'
