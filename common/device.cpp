@@ -126,6 +126,8 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
         return "it lacks the synchronization2 feature";
     if (wanted.scalarBlockLayout && !chain.v12.scalarBlockLayout)
         return "it lacks the scalarBlockLayout feature";
+    if (wanted.geometryShader && !features.features.geometryShader)
+        return "it lacks the geometryShader feature";
     return {};
 }
 
@@ -280,6 +282,14 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     maintenance1 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT,
                     .pNext = enabled.head,
                     .swapchainMaintenance1 = VK_TRUE};
+    // The core features of Vulkan 1.0 the chapter asks for (chapter-16: geometry shaders, and depth
+    // clamping where the device has it).
+    VkPhysicalDeviceFeatures available{};
+    vkGetPhysicalDeviceFeatures(device.physical, &available);
+    VkPhysicalDeviceFeatures coreFeatures{};
+    coreFeatures.geometryShader = features.geometryShader ? VK_TRUE : VK_FALSE;
+    device.depthClamp = features.depthClampWhereAvailable && available.depthClamp;
+    coreFeatures.depthClamp = device.depthClamp ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo createInfo{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
         .pNext = device.swapchainMaintenance1 ? static_cast<void*>(&maintenance1) : enabled.head,
@@ -287,6 +297,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
         .pQueueCreateInfos = &queueInfo,
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
         .ppEnabledExtensionNames = extensions.data(),
+        .pEnabledFeatures = &coreFeatures,
     };
     VK_CHECK(vkCreateDevice(device.physical, &createInfo, nullptr, &device.handle));
     vkGetDeviceQueue(device.handle, device.queueFamily, 0, &device.queue);

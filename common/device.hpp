@@ -29,6 +29,8 @@ struct Device {
     // VK_EXT_swapchain_maintenance1 is enabled: a present can signal a fence when the
     // presentation engine is done with what it used (common/target.cpp retires old swapchains so).
     bool swapchainMaintenance1 = false;
+    // depthClamp is enabled (DeviceFeatures::depthClampWhereAvailable and the device has it).
+    bool depthClamp = false;
 };
 
 // Optional features a chapter needs; a device without one of them is not chosen.
@@ -40,6 +42,8 @@ struct DeviceFeatures {
     bool dynamicRendering = false;   // chapter-14 on: vkCmdBeginRendering instead of render passes
     bool synchronization2 = false;   // chapter-14 on: vkCmdPipelineBarrier2, vkQueueSubmit2
     bool scalarBlockLayout = false;  // chapter-15: C-like struct layout in storage buffers (core 1.2)
+    bool geometryShader = false;     // chapter-16: the shadow pass sends triangles to every cascade
+    bool depthClampWhereAvailable = false;  // chapter-16: enabled when the device has it (Device::depthClamp)
 };
 
 // The commands of dynamic rendering and synchronization2. A Vulkan 1.3 device has them in its

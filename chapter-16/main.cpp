@@ -1,0 +1,499 @@
+// chapter-16: cascade shadows -- the book's chapter 16 in C++.
+//
+// chapter-15's frame with the directional light's shadow, from a shadow map in cascades
+// (cascades.cpp, shadow_pass.cpp) rendered before the scene pass; the light pass darkens the
+// sun's light where the map says it does not reach. chapter-15's passes:
+//   scene pass (scene_pass.cpp): world position, albedo, normal (normal maps through the TBN
+//     matrix) and AO/roughness/metallic into four R16G16B16A16_SFLOAT attachments, plus depth;
+//   light pass (light_pass.cpp): Cook-Torrance shading (shaders/include/pbr.glsl) of every pixel
+//     by the scene's directional and point lights, from a scalar-layout storage buffer, plus
+//     ambient light, into an R32G32B32A32_SFLOAT image;
+//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional;
+//   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
+// run() at the end of this file is the chapter in four steps: set up, the frame loop, the report,
+// tear down.
+#include <vulkan/vulkan.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cascades.hpp"
+#include "common/benchmark.hpp"
+#include "common/camera.hpp"
+#include "common/check.hpp"
+#include "common/cli.hpp"
+#include "common/commands.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/gui.hpp"
+#include "common/gui_pass.hpp"
+#include "common/instance.hpp"
+#include "common/pipeline.hpp"
+#include "common/post_pass.hpp"
+#include "common/run_control.hpp"
+#include "common/scene.hpp"
+#include "common/shader_watch.hpp"
+#include "common/target.hpp"
+#include "gbuffer_layout.hpp"
+#include "gpu_types.hpp"
+#include "light_pass.hpp"
+#include "scene_pass.hpp"
+#include "shadow_pass.hpp"
+
+namespace {
+
+const common::ChapterInfo kChapter{
+    "chapter-16",
+    "cascade shadows: the sun's shadow map in cascades over chapter-15's renderer (the book's chapter 16)",
+    // The order of shade_pixel.glsl's `view`, then light.frag's own.
+    {"final", "position", "albedo", "normal", "pbr", "depth", "shadow-map", "cascades"},
+    {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
+     {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
+     common::kGuiSwitch,
+     common::kGuiStillSwitch},
+    {common::kGuiClickChoice,
+     common::kGuiScaleChoice,
+     common::kPipelinesChoice,
+     {"cascades", {"3", "1", "2", "4"}, "cascades of the sun's shadow map (the book's: 3)"},
+     {"shadow-map-size",
+      {"2048", "512", "1024", "4096"},
+      "texels along each side of a cascade's shadow map"}},
+};
+
+//> light-controls
+// The book's controls: Left/Right turn the directional light about the x axis, its angle kept
+// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
+// The point light's marker model follows it.
+struct LightControls {
+    int sun = -1;    // index of the first directional light, if any
+    int point = -1;  // index of the first point light, if any
+    float sunAngle = 270.0f;
+    bool moved = false;
+};
+
+LightControls findControlledLights(const common::Scene& scene) {
+    LightControls controls;
+    for (int i = 0; i < int(scene.lights.size()); ++i) {
+        const common::Light& light = scene.lights[size_t(i)];
+        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
+            controls.sun = i;
+            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
+            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
+        }
+        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
+    }
+    return controls;
+}
+
+void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
+    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
+    float radians = glm::radians(controls.sunAngle);
+    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
+    controls.moved = true;
+}
+
+void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                     glm::vec3 position) {
+    common::Light& light = scene.lights[size_t(controls.point)];
+    light.position = position;
+    controls.moved = true;
+    if (light.marker < 0) return;
+    common::Transform transform = scene.models[size_t(light.marker)].transform;
+    transform.position = light.position;
+    for (common::Draw& draw : gpuScene.draws)
+        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
+}
+
+void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                float seconds, float speed) {
+    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
+        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
+    if (controls.point < 0) return;
+    glm::vec3 step(0.0f);
+    if (held(GLFW_KEY_1)) step.y += 1.0f;
+    if (held(GLFW_KEY_2)) step.y -= 1.0f;
+    if (held(GLFW_KEY_3)) step.z -= 1.0f;
+    if (held(GLFW_KEY_4)) step.z += 1.0f;
+    if (step == glm::vec3(0.0f)) return;
+    placePointLight(controls, scene, gpuScene,
+                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
+}
+//< light-controls
+
+//> overlay
+// The overlay (--gui): the timings window with the view selector (common/gui.cpp) and FXAA; a
+// second window with the book's light controls and the ambient light.
+void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
+                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene) {
+    common::guiTimingsWindow(gui, run, kChapter.views, view,
+                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
+                              "1/2, 3/4  move the point light up/down, along z"});
+    ImGui::Begin("Frame");  // appends to the timings window
+    ImGui::Checkbox("FXAA (F)", fxaa);
+    ImGui::End();
+
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    ImGui::PushItemWidth(180.0f);
+    float angle = controls.sunAngle;
+    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
+        setSunAngle(controls, scene, angle);
+    if (controls.point >= 0) {
+        common::Light& point = scene.lights[size_t(controls.point)];
+        glm::vec3 position = point.position;
+        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
+            placePointLight(controls, scene, gpuScene, position);
+        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
+    }
+    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+//< overlay
+
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
+// reverse), and what the frames change.
+struct Chapter {
+    common::Scene scene;
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<common::FrameSync> frames;
+    common::GpuScene gpuScene;
+    common::PipelineCache pipelineCache;
+    ScenePass scenePass;
+    ShadowPass shadowPass;
+    LightPass lightPass;
+    common::PostPass postPass;
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
+    common::GuiPass guiPass;
+    common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
+    // What the frames change.
+    common::Camera camera;
+    common::CameraInput cameraInput;
+    LightControls lightControls;
+    LightView lightView;
+    bool fxaa = false;
+    bool genericPipelines = false;    // --pipelines generic
+    CascadeSettings cascadeSettings;  // --cascades, --shadow-map-size
+    std::vector<Cascade> cascades;    // this frame's
+    double passesMs = 0.0;            // how long createPasses took at start-up (pipelines, mostly)
+};
+//< chapter-state
+
+//> passes
+// The passes, in the order a frame records them.
+void createPasses(Chapter& c, uint32_t framesInFlight) {
+    // Pipelines made for this scene: one per material class its materials have, and the light
+    // pass's for its lights of each kind (unless --pipelines generic).
+    c.scenePass =
+        createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight,
+                        kBookGBuffer, {"chapter-16/scene.vert", "chapter-16/scene.frag"}, c.genericPipelines);
+    c.shadowPass =
+        createShadowPass(c.device, c.pipelineCache.handle, c.cascadeSettings, c.scenePass, framesInFlight);
+    c.lightPass =
+        createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
+                        framesInFlight, uint32_t(c.scene.lights.size()),
+                        {.fragmentShader = "chapter-16/light.frag",
+                         .moreSets = {c.shadowPass.readLayout},
+                         .kinds = c.genericPipelines ? LightKinds{} : lightKinds(shaderLights(c.scene))});
+    c.postPass =
+        common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, c.lightPass.output);
+    if (c.gui.enabled)
+        c.guiPass =
+            common::createGuiPass(c.device, c.pipelineCache.handle, c.target.encodedFormat, framesInFlight);
+}
+
+void destroyPasses(Chapter& c) {
+    if (c.gui.enabled) common::destroyGuiPass(c.device, c.guiPass);
+    common::destroyPostPass(c.device, c.postPass);
+    destroyLightPass(c.device, c.lightPass);
+    destroyShadowPass(c.device, c.shadowPass);
+    destroyScenePass(c.device, c.scenePass);
+}
+
+// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// the passes that use them are made from the new code while the frames in flight still draw
+// with the old ones; then the new ones take their place, and the old ones are destroyed once
+// the GPU is done with those frames. If one cannot be made, none does: the old pipelines keep
+// drawing, and the error is shown.
+void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t frame) {
+    VkPipelineCache cache = c.pipelineCache.handle;
+    common::PipelineSwap swap;
+    try {
+        remakeScenePipelines(c.device, cache, c.scenePass.pipelines, reload, swap);
+        common::remakeFullscreenPipeline(c.device, cache, c.lightPass.pipeline, reload, swap);
+        common::remakePostPipelines(c.device, cache, c.postPass, reload, swap);
+        if (c.gui.enabled)
+            common::remakeGuiPipeline(c.device, cache, c.guiPass, c.target.encodedFormat, reload, swap);
+    } catch (const std::exception& e) {
+        common::discardPipelines(c.device, swap);
+        common::finishShaderReload(e.what());
+        return;
+    }
+    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    common::finishShaderReload();
+}
+//< passes
+
+//> setup
+void setUp(Chapter& c, const common::Options& options) {
+    common::ModelCache models;
+    c.scene = common::sceneFromOptions(options, models);
+
+    c.target = common::openTarget(options, "chapter-16: cascade shadows");
+    c.instance =
+        common::createInstance("chapter-16", options.validation, common::targetInstanceExtensions(c.target));
+    common::createTargetSurface(c.target, c.instance);
+    // scalarBlockLayout: the feature this chapter adds -- the lights and the scene info are read
+    // with the C-like scalar layout (gpu_types.hpp).
+    c.device = common::createDevice(c.instance, c.target.surface, options.device,
+                                    {.dynamicRendering = true,
+                                     .synchronization2 = true,
+                                     .scalarBlockLayout = true,
+                                     .geometryShader = true,
+                                     .depthClampWhereAvailable = true});
+    common::createTargetImages(c.target, c.device);
+    c.frames = common::createFrameSync(c.device, options.framesInFlight);
+
+    c.gpuScene = common::loadGpuScene(c.device, c.scene, models,
+                                      {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
+    std::printf("chapter-16: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
+                c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),
+                c.gpuScene.textures.size(), c.gpuScene.materials.size(), c.scene.lights.size());
+
+    c.pipelineCache = common::loadPipelineCache(c.device, "chapter-16");
+    c.gui = common::createGui(options, c.target);
+    c.genericPipelines = common::genericPipelines(options);
+    auto chosen = [&](const char* name) {
+        auto found = options.choices.find(name);
+        return found == options.choices.end() ? 0u : found->second;
+    };
+    const uint32_t kCascadeCounts[] = {3, 1, 2, 4}, kMapSizes[] = {2048, 512, 1024, 4096};
+    c.cascadeSettings = {.count = kCascadeCounts[chosen("cascades")],
+                         .mapSize = kMapSizes[chosen("shadow-map-size")]};
+    double passesStart = common::millisecondsSinceStart();
+    createPasses(c, options.framesInFlight);
+    c.passesMs = common::millisecondsSinceStart() - passesStart;
+    std::vector<std::string> passes{"shadow", "scene", "light", "post"};
+    if (c.gui.enabled) passes.push_back("gui");
+    c.run = common::createRunControl(options, c.device, passes);
+
+    c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
+    c.lightControls = findControlledLights(c.scene);
+    c.lightView = {.boundsMin = glm::vec4(c.gpuScene.boundsMin, 0.0f),
+                   .boundsMax = glm::vec4(c.gpuScene.boundsMax, 0.0f),
+                   .view = int(options.view),
+                   .near = c.scene.camera.near,
+                   .far = c.scene.camera.far};
+    c.fxaa = options.switches.count("fxaa") != 0;
+}
+//< setup
+
+//> resize
+// The window changed size: the swapchain, then every image of the window's size.
+bool recreateTarget(Chapter& c) {
+    if (!common::recreateTargetImages(c.target, c.device)) return false;
+    resizeScenePass(c.device, c.scenePass, c.target.extent);
+    resizeLightPass(c.device, c.lightPass, c.target.extent, c.scenePass.gbuffer);
+    common::resizePostPass(c.device, c.postPass, c.lightPass.output);
+    // The window may have moved to a screen with other formats: what writes the image follows.
+    common::retargetPostPass(c.device, c.pipelineCache.handle, c.postPass, c.target.format);
+    if (c.gui.enabled)
+        common::retargetGuiPass(c.device, c.pipelineCache.handle, c.guiPass, c.target.encodedFormat);
+    return true;
+}
+//< resize
+
+// The keys (unless the overlay has them): the camera, the lights; V cycles the views, F toggles FXAA.
+void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common::KeyPress& fxaaKey) {
+    if (!c.target.window) return;
+    bool keys = !common::guiWantsKeyboard(c.gui), mouse = !common::guiWantsMouse(c.gui);
+    double now = glfwGetTime();
+    float seconds = float(now - lastTime);
+    lastTime = now;
+    float sceneSize = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin);
+    common::moveCamera(c.target.window, c.camera, c.cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
+    if (keys) moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
+    if (common::pressedOnce(c.target.window, viewKey) && keys)
+        c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
+    if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
+}
+
+//> update-frame
+// This frame's uniforms: the camera, the lights (they may have moved), the scene info.
+void updateFrame(Chapter& c, uint32_t slot) {
+    glm::mat4 view = common::viewMatrix(c.camera);
+    glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
+                                                    c.scene.camera.far);
+    setCamera(c.scenePass, slot, projection, view);
+    // The cascades for this frame's camera and sun (none without a directional light: the map
+    // is then never read).
+    if (c.lightControls.sun >= 0) {
+        CascadeCamera camera{.view = view,
+                             .fovY = glm::radians(c.scene.camera.fov),
+                             .aspect = float(c.target.extent.width) / float(c.target.extent.height),
+                             .near = c.scene.camera.near,
+                             .far = c.scene.camera.far};
+        c.cascades =
+            computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
+    }
+    updateCascades(c.shadowPass, slot, c.cascades, view);
+    updateLights(c.lightPass, slot, shaderLights(c.scene),
+                 {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
+}
+//< update-frame
+
+//> record-frame
+// The frame's passes into one command buffer, each labelled for graphics debuggers and timed for
+// --benchmark.
+void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
+                 ImDrawData* overlay) {
+    VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
+    VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+    common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
+    common::beginPass(c.run, sync.commandBuffer, 0);
+    recordShadowPass(sync.commandBuffer, c.shadowPass, c.scenePass, c.gpuScene, slot);
+    common::endPass(c.run, sync.commandBuffer, slot, 0);
+    common::beginPass(c.run, sync.commandBuffer, 1);
+    recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
+    common::endPass(c.run, sync.commandBuffer, slot, 1);
+    common::beginPass(c.run, sync.commandBuffer, 2);
+    VkDescriptorSet shadows = c.shadowPass.readSets[slot];
+    recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView, {&shadows, 1});
+    common::endPass(c.run, sync.commandBuffer, slot, 2);
+    common::beginPass(c.run, sync.commandBuffer, 3);
+    common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
+    common::endPass(c.run, sync.commandBuffer, slot, 3);
+    if (c.gui.enabled) {
+        common::beginPass(c.run, sync.commandBuffer, 4);
+        common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
+        common::endPass(c.run, sync.commandBuffer, slot, 4);
+    }
+    VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+}
+//< record-frame
+
+//> frame-loop
+void frameLoop(Chapter& c, const common::Options& options) {
+    double lastTime = glfwGetTime();
+    common::KeyPress viewKey{GLFW_KEY_V}, fxaaKey{GLFW_KEY_F};
+    for (uint32_t frame = 0;;) {
+        bool lastFrame = common::beginFrame(c.run, c.target, frame);
+        if (common::ShaderReload reload = common::pollShaderSources()) reloadShaders(c, reload, frame);
+        uint32_t slot = frame % options.framesInFlight;
+        common::FrameSync& sync = c.frames[slot];
+        ImDrawData* overlay = common::drawGui(c.gui, c.target, frame, [&] {
+            overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa, c.lightControls, c.scene, c.gpuScene);
+        });
+        handleInput(c, lastTime, viewKey, fxaaKey);
+
+        // Wait until this slot's previous frame is done, then acquire the image to present.
+        VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        common::releaseRetiredPipelines(c.device, frame, options.framesInFlight);
+        common::collectGpuTimes(c.run, c.device, slot);
+        uint32_t imageIndex = 0;
+        if (!common::acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+            if (!recreateTarget(c)) break;
+            continue;
+        }
+        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
+        if (c.gui.enabled) common::updateGuiBuffers(c.device, c.guiPass, slot, overlay);
+
+        updateFrame(c, slot);
+        recordFrame(c, sync, slot, frame, imageIndex, overlay);
+
+        // One submit: wait for the acquired image before writing colour, signal when done.
+        VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                   .semaphore = sync.imageAvailable,
+                                   .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+        VkSemaphoreSubmitInfo signal{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                                     .semaphore = c.target.renderFinished[imageIndex],
+                                     .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
+        VkCommandBufferSubmitInfo commands{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                           .commandBuffer = sync.commandBuffer};
+        VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                             .waitSemaphoreInfoCount = 1,
+                             .pWaitSemaphoreInfos = &wait,
+                             .commandBufferInfoCount = 1,
+                             .pCommandBufferInfos = &commands,
+                             .signalSemaphoreInfoCount = 1,
+                             .pSignalSemaphoreInfos = &signal};
+        VK_CHECK(common::vk13.QueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
+
+        if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        common::endFrame(c.run, frame);
+        if (lastFrame) break;
+        if (!current && !recreateTarget(c)) break;
+        ++frame;
+    }
+    VK_CHECK(vkDeviceWaitIdle(c.device.handle));
+}
+//< frame-loop
+
+// After the last frame: where the camera and lights went, --benchmark's report, --check-output.
+void report(Chapter& c, const common::Options& options) {
+    const common::CameraDesc& start = c.scene.camera;
+    if (c.camera.position != start.position || c.camera.yaw != start.yaw || c.camera.pitch != start.pitch)
+        std::printf("chapter-16: camera moved: at (%.2f, %.2f, %.2f), yaw %.1f, pitch %.1f\n",
+                    c.camera.position.x, c.camera.position.y, c.camera.position.z, c.camera.yaw,
+                    c.camera.pitch);
+    std::vector<std::pair<std::string, std::string>> info =
+        common::benchmarkInfo(kChapter, options, c.device, c.target, c.scenePass.formats.depth);
+    info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
+    common::addPipelineInfo(info, c.scenePass.pipelines.pipelines.size(), c.passesMs);
+    info.push_back({"light_pipeline", describeLightKinds(c.lightPass.kinds)});
+    common::reportRun(c.run, c.device, info);
+    if (c.gui.enabled)
+        std::printf("chapter-16: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
+                    c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);
+    if (c.lightControls.moved) {
+        glm::vec3 p = c.lightControls.point >= 0 ? c.scene.lights[size_t(c.lightControls.point)].position
+                                                 : glm::vec3(0.0f);
+        std::printf("chapter-16: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
+                    c.lightControls.sunAngle, p.x, p.y, p.z);
+    }
+    if (options.switches.count("check-output")) checkLightOutput(c.device, c.lightPass);
+}
+
+//> teardown
+void tearDown(Chapter& c) {
+    common::destroyRunControl(c.device, c.run);
+    destroyPasses(c);
+    common::destroyGui(c.gui);
+    common::savePipelineCache(c.device, c.pipelineCache);
+    common::destroyPipelineCache(c.device, c.pipelineCache);
+    common::destroyGpuScene(c.device, c.gpuScene);
+    common::destroyFrameSync(c.device, c.frames);
+    common::destroyTargetImages(c.target, c.device);
+    common::destroyDevice(c.device);
+    common::destroyTargetSurface(c.target, c.instance);
+    common::destroyInstance(c.instance);
+    common::closeTarget(c.target);
+}
+//< teardown
+
+//> run
+void run(const common::Options& options) {
+    Chapter chapter;
+    setUp(chapter, options);
+    frameLoop(chapter, options);
+    report(chapter, options);
+    tearDown(chapter);
+}
+//< run
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return common::runChapter(argc, argv, kChapter, run);
+}

@@ -1,0 +1,316 @@
+// chapter-16: the shadow pass.
+#include "shadow_pass.hpp"
+
+#include <array>
+#include <cstring>
+#include <string>
+
+#include "common/barriers.hpp"
+#include "common/check.hpp"
+#include "common/debug_names.hpp"
+#include "common/descriptors.hpp"
+#include "common/shader_watch.hpp"
+#include "common/texture.hpp"
+#include "gpu_types.hpp"
+
+namespace {
+
+//> layered-image
+// A 2D image with one layer per cascade (arrayLayers) and a view of type 2D_ARRAY over all of them:
+// the shadow pass renders into every layer at once, the light pass samples it as sampler2DArray.
+LayeredImage createLayeredImage(const common::Device& device, uint32_t size, uint32_t layers, VkFormat format,
+                                VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* name) {
+    LayeredImage image;
+    VkImageCreateInfo imageInfo{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .imageType = VK_IMAGE_TYPE_2D,
+        .format = format,
+        .extent = {size, size, 1},
+        .mipLevels = 1,
+        .arrayLayers = layers,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .tiling = VK_IMAGE_TILING_OPTIMAL,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+    };
+    VK_CHECK(vkCreateImage(device.handle, &imageInfo, nullptr, &image.handle));
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
+    VkMemoryAllocateInfo allocInfo{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex =
+            common::findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+    };
+    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
+    VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
+    VkImageViewCreateInfo viewInfo{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = image.handle,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+        .format = format,
+        .subresourceRange = {aspect, 0, 1, 0, layers},
+    };
+    VK_CHECK(vkCreateImageView(device.handle, &viewInfo, nullptr, &image.view));
+    common::nameObject(device.handle, image.handle, name);
+    common::nameObject(device.handle, image.memory, name);
+    common::nameObject(device.handle, image.view, name);
+    return image;
+}
+//< layered-image
+
+void destroyLayeredImage(const common::Device& device, LayeredImage& image) {
+    vkDestroyImageView(device.handle, image.view, nullptr);
+    vkDestroyImage(device.handle, image.handle, nullptr);
+    vkFreeMemory(device.handle, image.memory, nullptr);
+    image = {};
+}
+
+//> shadow-pipeline
+// The scene's triangles through a geometry shader into every cascade's layer. Written out here,
+// as chapter-06 writes out its pipeline, for what this chapter adds: the geometry stage and depth
+// clamping (casters nearer the light than the cascade's box still cast their shadow, at depth 0).
+VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cache, const ShadowPass& pass,
+                              bool alphaTest) {
+    common::ShaderModule vertex(device, "chapter-16/shadow.vert");
+    common::ShaderModule geometry(device, "chapter-16/shadow.geom");
+    common::ShaderModule fragment(device, "chapter-16/shadow.frag");
+    VkBool32 alphaTestConstant = alphaTest;
+    VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+    VkSpecializationInfo specialization{1, &entry, sizeof(VkBool32), &alphaTestConstant};
+    std::array<VkPipelineShaderStageCreateInfo, 3> stages{
+        common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+        common::shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, geometry),
+        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)};
+    common::SceneVertexInput vertexInput;
+    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
+    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
+    VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
+                                               .viewportCount = 1,
+                                               .scissorCount = 1};
+    VkPipelineRasterizationStateCreateInfo rasterization{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+        .depthClampEnable = device.depthClamp ? VK_TRUE : VK_FALSE,
+        .polygonMode = VK_POLYGON_MODE_FILL,
+        .cullMode = VK_CULL_MODE_NONE,  // the book's: both faces cast
+        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+        .lineWidth = 1.0f};
+    VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+    VkPipelineDepthStencilStateCreateInfo depth{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+        .depthTestEnable = VK_TRUE,
+        .depthWriteEnable = VK_TRUE,
+        .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
+    VkPipelineColorBlendAttachmentState blend{.colorWriteMask =
+                                                  VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT};
+    VkPipelineColorBlendStateCreateInfo colorBlend{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+        .attachmentCount = 1,
+        .pAttachments = &blend};
+    std::array<VkDynamicState, 2> dynamic{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamicState{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+        .dynamicStateCount = uint32_t(dynamic.size()),
+        .pDynamicStates = dynamic.data()};
+    VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+                                            .colorAttachmentCount = 1,
+                                            .pColorAttachmentFormats = &kMomentsFormat,
+                                            .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
+    VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                      .pNext = &rendering,
+                                      .stageCount = uint32_t(stages.size()),
+                                      .pStages = stages.data(),
+                                      .pVertexInputState = &vertexInput.state,
+                                      .pInputAssemblyState = &inputAssembly,
+                                      .pViewportState = &viewport,
+                                      .pRasterizationState = &rasterization,
+                                      .pMultisampleState = &multisample,
+                                      .pDepthStencilState = &depth,
+                                      .pColorBlendState = &colorBlend,
+                                      .pDynamicState = &dynamicState,
+                                      .layout = pass.pipelineLayout};
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    common::nameObject(device.handle, pipeline, alphaTest ? "shadow: cut-out" : "shadow: opaque");
+    return pipeline;
+}
+//< shadow-pipeline
+
+}  // namespace
+
+ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
+                            const CascadeSettings& settings, const ScenePass& scenePass,
+                            uint32_t framesInFlight) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device.physical, kMomentsFormat, &properties);
+    VkFormatFeatureFlags needed =
+        VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    if ((properties.optimalTilingFeatures & needed) != needed)
+        throw common::Failure(
+            "this device cannot render to and sample R32G32_SFLOAT, the shadow map's format");
+    ShadowPass pass;
+    pass.settings = settings;
+    pass.moments = createLayeredImage(device, settings.mapSize, settings.count, kMomentsFormat,
+                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                      VK_IMAGE_ASPECT_COLOR_BIT, "shadow moments");
+    pass.depth = createLayeredImage(device, settings.mapSize, settings.count, VK_FORMAT_D32_SFLOAT,
+                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                                    "shadow depth");
+
+    pass.cascadesLayout = common::createDescriptorSetLayout(
+        device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_GEOMETRY_BIT)},
+        "shadow: cascades");
+    pass.readLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "light: shadows");
+    pass.descriptorPool =
+        common::createDescriptorPool(device, 2 * framesInFlight,
+                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * framesInFlight},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight}},
+                                     "shadow");
+    // The moments are read as they are, one texel per sample (the book filters nothing).
+    pass.sampler =
+        common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
+    VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        pass.cascades.push_back(common::createBuffer(
+            device, sizeof(CascadeUniform), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible, "cascades"));
+        pass.cascadesSets.push_back(common::allocateDescriptorSet(device, pass.descriptorPool,
+                                                                  pass.cascadesLayout, "shadow: cascades"));
+        common::writeBufferDescriptor(device, pass.cascadesSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      pass.cascades.back().handle, sizeof(CascadeUniform));
+        pass.readSets.push_back(
+            common::allocateDescriptorSet(device, pass.descriptorPool, pass.readLayout, "light: shadows"));
+        common::writeImageDescriptor(device, pass.readSets.back(), 0, pass.sampler, pass.moments.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        common::writeBufferDescriptor(device, pass.readSets.back(), 1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      pass.cascades.back().handle, sizeof(CascadeUniform));
+    }
+
+    // Set 0 the cascades, 1 and 2 the scene pass's materials and textures; the scene pass's push
+    // constants (the model matrix for the vertex stage, the material for the fragment stage).
+    std::array<VkDescriptorSetLayout, 3> layouts{pass.cascadesLayout, scenePass.materialsLayout,
+                                                 scenePass.texturesLayout};
+    std::array<VkPushConstantRange, 2> pushConstants{{
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
+    }};
+    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                          .setLayoutCount = uint32_t(layouts.size()),
+                                          .pSetLayouts = layouts.data(),
+                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
+                                          .pPushConstantRanges = pushConstants.data()};
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    common::nameObject(device.handle, pass.pipelineLayout, "shadow");
+    pass.opaque = makeShadowPipeline(device, cache, pass, false);
+    pass.cutout = makeShadowPipeline(device, cache, pass, true);
+    return pass;
+}
+
+void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
+                    const glm::mat4& cameraView) {
+    CascadeUniform uniform{};
+    for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
+        uniform.viewProjection[i] = cascades[i].viewProjection;
+        uniform.splitFar[int(i)] = cascades[i].splitFar;
+    }
+    uniform.cameraView = cameraView;
+    uniform.count = int32_t(cascades.size());
+    std::memcpy(pass.cascades[frame].mapped, &uniform, sizeof(uniform));
+}
+
+//> record-shadow
+void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
+                      const common::GpuScene& scene, uint32_t frame) {
+    // Both images to ATTACHMENT_OPTIMAL once the previous frame's light pass has read the moments,
+    // their old contents dropped (cleared below).
+    std::array<VkImageMemoryBarrier2, 2> init{
+        common::imageBarrier(pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                             VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                             VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT),
+        common::imageBarrier(
+            pass.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_NONE,
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
+    common::pipelineBarrier(cmd, init.data(), uint32_t(init.size()));
+
+    // Every layer at once: layerCount is the cascade count, and gl_Layer picks each triangle's.
+    uint32_t size = pass.settings.mapSize;
+    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = pass.moments.view,
+                                    .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                    .clearValue = {.color = {{1.0f, 1.0f, 0.0f, 0.0f}}}};  // nothing: far
+    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = pass.depth.view,
+                                    .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                    .clearValue = {.depthStencil = {1.0f, 0}}};
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {size, size}},
+                              .layerCount = pass.settings.count,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &color,
+                              .pDepthAttachment = &depth};
+    common::vk13.CmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    VkRect2D scissor{{0, 0}, {size, size}};
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    std::array<VkDescriptorSet, 2> shared{pass.cascadesSets[frame], scenePass.materialsSet};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
+                            nullptr);
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const common::Draw& draw : scene.draws) {
+        VkPipeline pipeline = scene.materials[draw.material].alphaTested ? pass.cutout : pass.opaque;
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 1,
+                                &scenePass.materialTextureSets[draw.material], 0, nullptr);
+        DrawConstants constants{draw.model, {}};
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
+                           &constants);
+        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
+                           sizeof(uint32_t), &draw.material);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+    }
+    common::vk13.CmdEndRendering(cmd);
+
+    // The moments to READ_ONLY_OPTIMAL for the light pass's fragment shader.
+    VkImageMemoryBarrier2 finish = common::imageBarrier(
+        pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    common::pipelineBarrier(cmd, &finish, 1);
+}
+//< record-shadow
+
+void destroyShadowPass(const common::Device& device, ShadowPass& pass) {
+    vkDestroyPipeline(device.handle, pass.cutout, nullptr);
+    vkDestroyPipeline(device.handle, pass.opaque, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    vkDestroySampler(device.handle, pass.sampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    for (common::Buffer& buffer : pass.cascades) common::destroyBuffer(device, buffer);
+    vkDestroyDescriptorSetLayout(device.handle, pass.readLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.cascadesLayout, nullptr);
+    destroyLayeredImage(device, pass.depth);
+    destroyLayeredImage(device, pass.moments);
+    pass = {};
+}

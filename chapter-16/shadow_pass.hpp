@@ -1,0 +1,65 @@
+// chapter-16: the shadow pass -- the scene's depth, seen from the directional light, into one layer
+// per cascade of a layered image, in one pass: a geometry shader sends each triangle to every
+// cascade (gl_Layer). As the book's ShadowRender, a variance shadow map: each texel holds the
+// depth's first two moments (R32G32_SFLOAT), beside a D32_SFLOAT depth buffer.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "cascades.hpp"
+#include "common/buffer.hpp"
+#include "common/device.hpp"
+#include "common/gpu_scene.hpp"
+#include "scene_pass.hpp"
+
+inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
+
+// What the geometry shader and the light pass read about the cascades (std140): each cascade's
+// light view-projection, where each cascade's slice ends (view distance), how many there are,
+// and the camera's view matrix (the light pass picks a cascade by view depth).
+struct CascadeUniform {
+    glm::mat4 viewProjection[kMaxCascades];
+    glm::vec4 splitFar;  // x, y, z, w: cascades 0..3
+    glm::mat4 cameraView;
+    int32_t count;
+    int32_t padding[3];
+};
+
+// A layered image: one layer per cascade, a 2D_ARRAY view over all of them.
+struct LayeredImage {
+    VkImage handle = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+struct ShadowPass {
+    CascadeSettings settings;
+    LayeredImage moments;                                   // R32G32_SFLOAT: depth, depth^2
+    LayeredImage depth;                                     // D32_SFLOAT
+    VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0: the cascades (geometry stage)
+    VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set: moments + cascades
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    std::vector<common::Buffer> cascades;  // CascadeUniform, per frame in flight, host-visible
+    std::vector<VkDescriptorSet> cascadesSets;
+    std::vector<VkDescriptorSet> readSets;
+    VkSampler sampler = VK_NULL_HANDLE;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline opaque = VK_NULL_HANDLE;  // constant_id 0 ALPHA_TEST off
+    VkPipeline cutout = VK_NULL_HANDLE;
+};
+
+// Throws Failure when the device has no geometry shaders or cannot render to and sample
+// R32G32_SFLOAT; `scenePass` lends its materials and textures sets.
+ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
+                            const CascadeSettings& settings, const ScenePass& scenePass,
+                            uint32_t framesInFlight);
+void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
+                    const glm::mat4& cameraView);
+void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
+                      const common::GpuScene& scene, uint32_t frame);
+void destroyShadowPass(const common::Device& device, ShadowPass& pass);

@@ -1,0 +1,15 @@
+// chapter-16: the cascades as the shadow pass's geometry shader and the light pass read them
+// (std140). C++: CascadeUniform (chapter-16/shadow_pass.hpp).
+#ifndef CASCADES_GLSL
+#define CASCADES_GLSL
+
+#define MAX_CASCADES 4  // kMaxCascades
+
+struct Cascades {
+    mat4 viewProjection[MAX_CASCADES];  // world -> each cascade's clip space
+    vec4 splitFar;                      // where each cascade's slice ends (view distance)
+    mat4 cameraView;                    // world -> the camera's view
+    int count;
+};
+
+#endif

@@ -1,0 +1,56 @@
+#version 450
+// chapter-16 light pass: chapter-15's, with the sun's light darkened where the cascades' shadow
+// map says it does not reach -- the sun's only: the point lights cast no shadow here, so their
+// light is not darkened (the book multiplies every light's sum by the sun's visibility).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#include "../chapter-15/light_inputs.glsl"
+#include "../chapter-15/gbuffer_read.glsl"
+#include "shadows.glsl"
+
+//> light-loop
+// chapter-15's loops over the scene's lights of each kind (the constants set by light_pass.cpp),
+// the first directional light -- the one the shadow map is made from -- times its visibility.
+layout(constant_id = 3) const int DIRECTIONAL_LIGHTS = -1;
+layout(constant_id = 4) const int POINT_LIGHTS = -1;
+
+float gVisibility = 1.0;  // the sun's, at the pixel being shaded (shadePixel's caller sets it)
+
+vec3 shadeLights(ivec2 pixel, SurfaceSample s, vec3 N, vec3 V) {
+    vec3 color = vec3(0.0);
+    if (DIRECTIONAL_LIGHTS < 0) {
+        for (uint i = 0u; i < scene.lightCount; ++i)
+            color += (i == 0u && lights[0].directional != 0u ? gVisibility : 1.0) * shadeLight(i, s, N, V);
+    } else {
+        for (int i = 0; i < DIRECTIONAL_LIGHTS; ++i)
+            color += (i == 0 ? gVisibility : 1.0) * shadeLightOfKind(uint(i), true, s, N, V);
+        for (int i = 0; i < POINT_LIGHTS; ++i) color += shadeLightOfKind(uint(DIRECTIONAL_LIGHTS + i), false, s, N, V);
+    }
+    return color;
+}
+//< light-loop
+
+#include "../chapter-15/shade_pixel.glsl"
+
+//> light-frag
+layout(location = 0) in vec2 inUv;
+
+layout(location = 0) out vec4 outColor;
+
+const vec3 kCascadeColors[4] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.25, 1.0),
+                                      vec3(1.0, 1.0, 0.25));
+
+void main() {
+    SurfaceSample s = readGBuffer(inUv);
+    vec3 world = s.position + scene.cameraPosition;
+    int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
+    gVisibility = s.surface ? sunVisibility(world, cascade) : 1.0;
+    if (show.view == 6) {  // --view shadow-map: cascade 0's moments, depth as grey
+        outColor = vec4(vec3(textureLod(shadowMoments, vec3(inUv, 0.0), 0.0).r), 1.0);
+        return;
+    }
+    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));
+    // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from.
+    if (show.view == 7 && s.surface) outColor.rgb *= kCascadeColors[cascade];
+}
+//< light-frag
