@@ -340,7 +340,10 @@ void updateFrame(Chapter& c, uint32_t slot) {
                              .fovY = glm::radians(c.scene.camera.fov),
                              .aspect = float(c.target.extent.width) / float(c.target.extent.height),
                              .near = c.scene.camera.near,
-                             .far = c.scene.camera.far};
+                             // The last cascade ends where the scene does, when that is nearer
+                             // than the projection's far plane: no texels for empty space.
+                             .far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax,
+                                              c.scene.camera.near, c.scene.camera.far)};
         c.cascades =
             computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
     }

@@ -45,8 +45,10 @@ void main() {
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
     gVisibility = s.surface ? sunVisibility(world, cascade) : 1.0;
-    if (show.view == 6) {  // --view shadow-map: cascade 0's moments, depth as grey
-        outColor = vec4(vec3(textureLod(shadowMoments, vec3(inUv, 0.0), 0.0).r), 1.0);
+    if (show.view == 6) {  // --view shadow-map: each cascade's layer side by side, depth as grey
+        float x = inUv.x * float(cascades.count);
+        int layer = min(int(x), cascades.count - 1);
+        outColor = vec4(vec3(textureLod(shadowMoments, vec3(fract(x), inUv.y, float(layer)), 0.0).r), 1.0);
         return;
     }
     outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));

@@ -292,6 +292,64 @@ void writeFeatures(const fs::path& dir) {
     writeText(dir / "features.json", root.dump(2));
 }
 
+// ---- Shadows: a box over a plane ------------------------------------------------------------
+
+// An axis-aligned box of faces with outward normals, counter-clockwise seen from outside.
+json boxPrimitive(gltf::File& file, int material, vec3 lo, vec3 hi) {
+    std::vector<vec3> p, n;
+    std::vector<uint16_t> i;
+    auto face = [&](vec3 corner, vec3 u, vec3 v) {  // u x v is the outward normal
+        uint16_t k = uint16_t(p.size());
+        vec3 normal = glm::normalize(glm::cross(u, v));
+        for (vec3 q : {corner, corner + u, corner + u + v, corner + v}) {
+            p.push_back(q);
+            n.push_back(normal);
+        }
+        i.insert(i.end(), {k, uint16_t(k + 1), uint16_t(k + 2), k, uint16_t(k + 2), uint16_t(k + 3)});
+    };
+    vec3 d = hi - lo;
+    face(lo, {0, d.y, 0}, {d.x, 0, 0});                  // -z
+    face({lo.x, lo.y, hi.z}, {d.x, 0, 0}, {0, d.y, 0});  // +z
+    face(lo, {0, 0, d.z}, {0, d.y, 0});                  // -x
+    face({hi.x, lo.y, lo.z}, {0, d.y, 0}, {0, 0, d.z});  // +x
+    face(lo, {d.x, 0, 0}, {0, 0, d.z});                  // -y
+    face({lo.x, hi.y, lo.z}, {0, 0, d.z}, {d.x, 0, 0});  // +y
+    return {
+        {"attributes", {{"POSITION", file.positions(p)}, {"NORMAL", file.values(n, gltf::kFloat, "VEC3")}}},
+        {"indices", file.values(i, gltf::kUnsignedShort, "SCALAR")},
+        {"material", material}};
+}
+
+// A plane of 12 x 12 at y = 0 and a box from (-0.5, 1, -0.5) to (0.5, 2, 0.5) above it, white,
+// seen from straight above; a sun travelling along (1, -1, 0), no ambient light. The box's shadow on
+// the plane is then exactly x in 0.5..2.5, z in -0.5..0.5 (each point of the box moves its height
+// along +x on its way down), and black; the rest of the plane is lit.
+void writeShadows(const fs::path& dir) {
+    fs::create_directories(dir);
+    gltf::File file;
+    int white = file.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}});
+    int plane = file.mesh(json::array({boxPrimitive(file, white, {-6, -0.1f, -6}, {6, 0, 6})}));
+    int box = file.mesh(json::array({boxPrimitive(file, white, {-0.5f, 1, -0.5f}, {0.5f, 2, 0.5f})}));
+    file.scene({file.node({{"mesh", plane}}), file.node({{"mesh", box}})});
+    file.writeGltf(dir / "box_on_plane.gltf");
+    auto scene = [&](const char* name, json direction) {
+        json root = {
+            {"models", json::array({{{"file", "box_on_plane.gltf"}}})},
+            {"camera",
+             {{"position", {0, 10, 0}},
+              {"yaw", -90},
+              {"pitch", -89},
+              {"fov", 60},
+              {"near", 0.5},
+              {"far", 50}}},
+            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+            {"lights",
+             json::array({{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}}})}};
+        writeText(dir / name, root.dump(2));
+    };
+    scene("box_on_plane.json", {1, -1, 0});
+}
+
 // ---- A degenerate tangent frame --------------------------------------------------------------
 
 // A normal-mapped quad whose normals and tangents are all zero (an exporter's bug, or vectors
@@ -767,6 +825,7 @@ int main(int argc, char** argv) {
         writeSame(dir / "same");
         writeDegenerate(dir / "degenerate");
         writeFeatures(dir / "features");
+        writeShadows(dir / "shadows");
         writeHostile(dir / "hostile");
         writeBookClone(dir / "book");
         return 0;

@@ -1,0 +1,38 @@
+# chapter-16 tests: the final image, the cascades view and the shadow map against golden images,
+# with validation (synchronization validation on); a box over a plane under a known sun, whose
+# shadow must be where the geometry puts it and nowhere else; the standalone build.
+set(CH16 $<TARGET_FILE:chapter-16>)
+set(CH16_RUN ${CH16} --device llvmpipe --validation)
+
+foreach(view final cascades shadow-map)
+    chapter_test(chapter-16.view-${view} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 640 --height 360 --view ${view}
+                --screenshot ${TEST_OUT}/chapter-16-${view}.png
+        EXPECT_STDOUT "70656 triangles" QUIET_STDERR)
+    set_tests_properties(chapter-16.view-${view} PROPERTIES FIXTURES_SETUP ch16-${view})
+    add_test(NAME chapter-16.view-${view}-image COMMAND image_compare ${TEST_OUT}/chapter-16-${view}.png
+        --size 640 360 --golden ${GOLDEN}/chapter-16-${view}.png --max-diff 5 --max-fraction 0.001)
+    set_tests_properties(chapter-16.view-${view}-image PROPERTIES FIXTURES_REQUIRED ch16-${view})
+endforeach()
+
+# A box from (-0.5, 1, -0.5) to (0.5, 2, 0.5) over a plane at y = 0, seen from 10 above (15.6 pixels
+# a metre at 320x180, world +x down the image, z across), a sun along (1, -1, 0), no ambient light
+# (tools/gltf_cases.cpp, shadows/): the shadow is x in 0.5..2.5, z in -0.5..0.5 -- pixels x 152..168,
+# y 98..129. Points at least a quarter metre inside it are black; points as far outside it lit by
+# the sun alone: albedo 0.8 / pi x 2 x cos 45 degrees, 0.35 linear, 160 in sRGB.
+chapter_test(chapter-16.box-shadow WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/box_on_plane.json
+            --screenshot ${TEST_OUT}/chapter-16-box-shadow.png
+    EXPECT_STDOUT "chapter-16: 2 draws" QUIET_STDERR)
+set_tests_properties(chapter-16.box-shadow PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-box)
+add_test(NAME chapter-16.box-shadow-in-shadow COMMAND image_compare ${TEST_OUT}/chapter-16-box-shadow.png
+    --size 320 180 --pixel 160 105 0 0 0 --pixel 160 113 0 0 0 --pixel 160 124 0 0 0 --pixel 156 110 0 0 0
+    --pixel 164 120 0 0 0 --pixel-tolerance 2)
+add_test(NAME chapter-16.box-shadow-lit-elsewhere COMMAND image_compare ${TEST_OUT}/chapter-16-box-shadow.png
+    --size 320 180 --pixel 160 134 160 160 160 --pixel 147 113 160 160 160 --pixel 173 113 160 160 160
+    --pixel 160 59 160 160 160 --pixel 200 90 160 160 160 --pixel-tolerance 3)
+set_tests_properties(chapter-16.box-shadow-in-shadow chapter-16.box-shadow-lit-elsewhere PROPERTIES
+    FIXTURES_REQUIRED ch16-box)
+
+standalone_build_test(16 --width 320 --height 180)
