@@ -227,6 +227,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
     VkPipelineCache cache = c.pipelineCache.handle;
     common::PipelineSwap swap;
     try {
+        remakeShadowPipelines(c.device, cache, c.shadowPass, reload, swap);
         remakeScenePipelines(c.device, cache, c.scenePass.pipelines, reload, swap);
         common::remakeFullscreenPipeline(c.device, cache, c.lightPass.pipeline, reload, swap);
         common::remakePostPipelines(c.device, cache, c.postPass, reload, swap);

@@ -301,6 +301,15 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
 }
 //< record-shadow
 
+void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,
+                           const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (!reload.changed({"chapter-16/shadow.vert", "chapter-16/shadow.geom", "chapter-16/shadow.frag"}))
+        return;
+    common::replacePipeline(swap, pass.opaque,
+                            [&] { return makeShadowPipeline(device, cache, pass, false); });
+    common::replacePipeline(swap, pass.cutout, [&] { return makeShadowPipeline(device, cache, pass, true); });
+}
+
 void destroyShadowPass(const common::Device& device, ShadowPass& pass) {
     vkDestroyPipeline(device.handle, pass.cutout, nullptr);
     vkDestroyPipeline(device.handle, pass.opaque, nullptr);

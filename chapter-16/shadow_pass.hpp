@@ -15,6 +15,8 @@
 #include "common/buffer.hpp"
 #include "common/device.hpp"
 #include "common/gpu_scene.hpp"
+#include "common/pipeline.hpp"
+#include "common/shader_watch.hpp"
 #include "scene_pass.hpp"
 
 inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
@@ -63,3 +65,6 @@ void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>
 void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame);
 void destroyShadowPass(const common::Device& device, ShadowPass& pass);
+// Live reload: new pipelines into `swap` when the reload changed a shadow shader.
+void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,
+                           const common::ShaderReload& reload, common::PipelineSwap& swap);

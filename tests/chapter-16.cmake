@@ -36,3 +36,17 @@ set_tests_properties(chapter-16.box-shadow-in-shadow chapter-16.box-shadow-lit-e
     FIXTURES_REQUIRED ch16-box)
 
 standalone_build_test(16 --width 320 --height 180)
+
+# Hard light directions on the box over the plane -- straight down, 1e-6 radians off, one degree
+# above the horizon -- and the default scene: the light output finite and non-negative, validation
+# clean; the camera straight down and straight up.
+foreach(sun sun_down sun_down_1e-6 sun_grazing)
+    chapter_test(chapter-16.${sun} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --check-output
+                --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/${sun}.json
+        EXPECT_STDOUT "light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+    set_tests_properties(chapter-16.${sun} PROPERTIES FIXTURES_REQUIRED gltf-cases)
+endforeach()
+chapter_test(chapter-16.check-output WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 640 --height 360 --check-output --frames 3
+    EXPECT_STDOUT "light output 640x360: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)

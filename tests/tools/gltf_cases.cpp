@@ -348,6 +348,11 @@ void writeShadows(const fs::path& dir) {
         writeText(dir / name, root.dump(2));
     };
     scene("box_on_plane.json", {1, -1, 0});
+    // The hard directions: straight down (the book's default), a millionth of a radian off it, and
+    // grazing, one degree above the horizon.
+    scene("sun_down.json", {0, -1, 0});
+    scene("sun_down_1e-6.json", {std::sin(1e-6), -std::cos(1e-6), 0});
+    scene("sun_grazing.json", {std::cos(glm::radians(1.0)), -std::sin(glm::radians(1.0)), 0});
 }
 
 // ---- A degenerate tangent frame --------------------------------------------------------------
