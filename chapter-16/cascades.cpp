@@ -76,6 +76,7 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
         // (the shadow pass's pipeline).
         float texel = 2.0f * radius / float(settings.mapSize - 2);  // a texel's size in the world
         float half = radius + texel;
+        cascade.texel = texel;
         cascade.view = glm::lookAt(center - direction * radius, center, up);
         cascade.projection = glm::ortho(-half, half, -half, half, 0.0f, 2.0f * radius);
 

@@ -34,6 +34,7 @@ struct Cascade {
     float splitFar = 0.0f;
     glm::vec3 center{0.0f};  // the slice's bounding sphere, world space
     float radius = 0.0f;
+    float texel = 0.0f;  // a shadow-map texel's size in the world
 };
 
 // count + 1 view distances, near first and far last, each split between a logarithmic and a

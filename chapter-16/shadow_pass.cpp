@@ -221,6 +221,7 @@ void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>
     for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
         uniform.viewProjection[i] = cascades[i].viewProjection;
         uniform.splitFar[int(i)] = cascades[i].splitFar;
+        uniform.texelSize[int(i)] = cascades[i].texel;
     }
     uniform.cameraView = cameraView;
     uniform.count = int32_t(cascades.size());

@@ -26,7 +26,8 @@ inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
 // and the camera's view matrix (the light pass picks a cascade by view depth).
 struct CascadeUniform {
     glm::mat4 viewProjection[kMaxCascades];
-    glm::vec4 splitFar;  // x, y, z, w: cascades 0..3
+    glm::vec4 splitFar;   // x, y, z, w: cascades 0..3
+    glm::vec4 texelSize;  // a texel's size in the world, per cascade
     glm::mat4 cameraView;
     int32_t count;
     int32_t padding[3];

@@ -83,7 +83,8 @@ shaderc_shader_kind shaderKind(const fs::path& glsl) {
     if (extension == ".vert") return shaderc_glsl_vertex_shader;
     if (extension == ".frag") return shaderc_glsl_fragment_shader;
     if (extension == ".comp") return shaderc_glsl_compute_shader;
-    throw Failure("'" + utf8(glsl) + "': unknown shader stage (expected .vert, .frag or .comp)");
+    if (extension == ".geom") return shaderc_glsl_geometry_shader;  // chapter-16's shadow pass
+    throw Failure("'" + utf8(glsl) + "': unknown shader stage (expected .vert, .frag, .geom or .comp)");
 }
 
 #endif  // VKBOOK_RUNTIME_SHADERS

@@ -8,6 +8,7 @@
 struct Cascades {
     mat4 viewProjection[MAX_CASCADES];  // world -> each cascade's clip space
     vec4 splitFar;                      // where each cascade's slice ends (view distance)
+    vec4 texelSize;                     // a texel's size in the world, per cascade
     mat4 cameraView;                    // world -> the camera's view
     int count;
 };

@@ -44,7 +44,7 @@ void main() {
     SurfaceSample s = readGBuffer(inUv);
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
-    gVisibility = s.surface ? sunVisibility(world, cascade) : 1.0;
+    gVisibility = s.surface ? sunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
     if (show.view == 6) {  // --view shadow-map: each cascade's layer side by side, depth as grey
         float x = inUv.x * float(cascades.count);
         int layer = min(int(x), cascades.count - 1);

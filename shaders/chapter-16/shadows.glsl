@@ -25,9 +25,15 @@ float chebyshevUpperBound(vec2 moments, float t) {
     return smoothstep(0.2, 1.0, variance / (variance + d * d));
 }
 
-// 1 where the sun reaches `world`, 0 in its shadow.
-float sunVisibility(vec3 world, int cascade) {
-    vec4 clip = cascades.viewProjection[cascade] * vec4(world, 1.0);
+// 1 where the sun reaches `world` (a surface point whose unit normal is N), 0 in its shadow. The
+// point is first moved off its surface by one and a half texels of its cascade along the normal
+// ("normal offset"): a texel holds one depth for a patch of surface as wide as the texel, and the
+// patch's other points lie up to half a texel times the slope behind it -- at grazing light, far
+// enough to shadow the surface itself (acne). An offset along the normal grows with the texel and
+// needs no per-scene constant; the book has none.
+float sunVisibility(vec3 world, vec3 N, int cascade) {
+    vec3 offset = world + N * (1.5 * cascades.texelSize[cascade]);
+    vec4 clip = cascades.viewProjection[cascade] * vec4(offset, 1.0);
     vec2 uv = clip.xy * 0.5 + 0.5;  // the shadow pass's viewport is not flipped: y down
     vec2 moments = textureLod(shadowMoments, vec3(uv, float(cascade)), 0.0).rg;
     return chebyshevUpperBound(moments, clip.z);
