@@ -68,3 +68,23 @@ endforeach()
 add_test(NAME chapter-16.sun-grazing-no-acne COMMAND image_compare ${TEST_OUT}/chapter-16-sun-grazing.png
     --size 320 180 ${column} --pixel-tolerance 2)
 set_tests_properties(chapter-16.sun-grazing-no-acne PROPERTIES FIXTURES_REQUIRED ch16-grazing)
+
+# Every count of cascades the option takes, with one geometry shader: finite, non-negative, clean.
+foreach(count 1 2 4)
+    chapter_test(chapter-16.cascades-${count} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --cascades ${count} --check-output --frames 2
+        EXPECT_STDOUT "light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+endforeach()
+
+# A point light half a metre over the middle of the sun's shadow: its light there is not darkened
+# by the sun's shadow (the book's Lo * shadow would leave the pixel black): 235 right under it.
+chapter_test(chapter-16.point-light-in-sun-shadow WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/box_on_plane_point.json
+            --screenshot ${TEST_OUT}/chapter-16-point-in-shadow.png
+    EXPECT_STDOUT "chapter-16: 2 draws.*2 lights" QUIET_STDERR)
+set_tests_properties(chapter-16.point-light-in-sun-shadow PROPERTIES FIXTURES_REQUIRED gltf-cases
+                     FIXTURES_SETUP ch16-point)
+add_test(NAME chapter-16.point-light-in-sun-shadow-image COMMAND image_compare
+    ${TEST_OUT}/chapter-16-point-in-shadow.png --size 320 180 --pixel 160 113 235 235 235 --pixel-tolerance 3)
+set_tests_properties(chapter-16.point-light-in-sun-shadow-image PROPERTIES FIXTURES_REQUIRED ch16-point)

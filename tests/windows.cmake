@@ -55,7 +55,8 @@ windows_test(windows.chapter-06 WORKDIR /
             --screenshot ${WIN_OUT}/chapter-06.png QUIET_STDERR)
 windows_image(windows.chapter-06 ${WIN_OUT}/chapter-06.png --size 1280 720
     --golden ${GOLDEN}/chapter-06.png ${GOLDEN_MATCH})
-foreach(spec "10;final;albedo;depth" "14;final;albedo;depth" "15;final;position;albedo;normal;pbr;depth")
+foreach(spec "10;final;albedo;depth" "14;final;albedo;depth" "15;final;position;albedo;normal;pbr;depth"
+             "16;final;cascades;shadow-map")
     list(POP_FRONT spec number)
     foreach(view IN LISTS spec)
         set(name windows.chapter-${number}-${view})
@@ -112,7 +113,7 @@ set_tests_properties(windows.chapter-15-concurrent-runs PROPERTIES LABELS window
                      TIMEOUT 180 FIXTURES_REQUIRED "${WIN_FIXTURES}")
 
 # Bad command lines: exit 2 and one line naming the problem, as on Linux.
-foreach(number 06 10 14 15)
+foreach(number 06 10 14 15 16)
     windows_test(windows.chapter-${number}-bad-option
         COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --headless --frames-in-flight 4
         EXPECT_EXIT 2 EXPECT_STDERR "--frames-in-flight" ONE_LINE_STDERR)

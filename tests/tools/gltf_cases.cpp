@@ -332,21 +332,22 @@ void writeShadows(const fs::path& dir) {
     int box = file.mesh(json::array({boxPrimitive(file, white, {-0.5f, 1, -0.5f}, {0.5f, 2, 0.5f})}));
     file.scene({file.node({{"mesh", plane}}), file.node({{"mesh", box}})});
     file.writeGltf(dir / "box_on_plane.gltf");
-    auto scene = [&](const char* name, json direction) {
-        json root = {
-            {"models", json::array({{{"file", "box_on_plane.gltf"}}})},
-            {"camera",
-             {{"position", {0, 10, 0}},
-              {"yaw", -90},
-              {"pitch", -89},
-              {"fov", 60},
-              {"near", 0.5},
-              {"far", 50}}},
-            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
-            {"lights",
-             json::array({{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}}})}};
+    auto scene = [&](const char* name, json direction, json more = json::array()) {
+        json lights = json::array({{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}}});
+        for (json& light : more) lights.push_back(light);
+        json camera = {
+            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+        json root = {{"models", json::array({{{"file", "box_on_plane.gltf"}}})},
+                     {"camera", camera},
+                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+                     {"lights", lights}};
         writeText(dir / name, root.dump(2));
     };
+    // A point light under the box, over the middle of the sun's shadow: the sun's shadow must not
+    // darken it (the book multiplies all the lights by the sun's visibility).
+    scene(
+        "box_on_plane_point.json", {1, -1, 0},
+        json::array({{{"type", "point"}, {"position", {1.5, 0.5, 0}}, {"intensity", 1.0}, {"range", 3.0}}}));
     scene("box_on_plane.json", {1, -1, 0});
     // The hard directions: straight down (the book's default), a millionth of a radian off it, and
     // grazing, one degree above the horizon.
