@@ -11,7 +11,8 @@ set(ACCEPTED_BEST_PRACTICES
 
 if(XVFB_RUN)
     set(SCREEN -s "-screen 0 1600x1200x24")
-    foreach(spec "10:final albedo depth" "14:final albedo depth" "15:final position albedo normal pbr depth")
+    foreach(spec "10:final albedo depth" "14:final albedo depth" "15:final position albedo normal pbr depth"
+                 "16:final cascades shadow-map")
         string(REPLACE ":" ";" spec "${spec}")
         list(GET spec 0 number)
         list(GET spec 1 views)
@@ -30,7 +31,7 @@ if(XVFB_RUN)
     endforeach()
 endif()
 
-foreach(number 06 10 14 15)
+foreach(number 06 10 14 15 16)
     set(run $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --width 320 --height 180 --frames 3)
     string(REPLACE ";" "\\;" accepted "${ACCEPTED_BEST_PRACTICES}")
     string(REPLACE ";" "\\;" headless "${run};--headless")
