@@ -39,10 +39,10 @@ struct DeviceFeatures {
     // need 1.1 (a negative viewport height flips y); chapter-14 on asks for 1.2 with the features
     // below, which Vulkan 1.3 has in its core and a 1.2 device may offer as extensions.
     uint32_t minApiVersion = VK_API_VERSION_1_1;
-    bool dynamicRendering = false;   // chapter-14 on: vkCmdBeginRendering instead of render passes
-    bool synchronization2 = false;   // chapter-14 on: vkCmdPipelineBarrier2, vkQueueSubmit2
-    bool scalarBlockLayout = false;  // chapter-15: C-like struct layout in storage buffers (core 1.2)
-    bool geometryShader = false;     // chapter-16: the shadow pass sends triangles to every cascade
+    bool dynamicRendering = false;          // chapter-14 on: vkCmdBeginRendering instead of render passes
+    bool synchronization2 = false;          // chapter-14 on: vkCmdPipelineBarrier2, vkQueueSubmit2
+    bool scalarBlockLayout = false;         // chapter-15: C-like struct layout in storage buffers (core 1.2)
+    bool geometryShader = false;            // chapter-16: the shadow pass sends triangles to every cascade
     bool depthClampWhereAvailable = false;  // chapter-16: enabled when the device has it (Device::depthClamp)
 };
 
