@@ -59,5 +59,6 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
 
 // The view distance at which the scene's bounds end, seen from `view`: the farthest of the box's
 // corners in front of the camera, clamped to near..far. A scene that ends before the projection's
-// far plane needs no cascades beyond it.
+// far plane needs no cascades beyond it -- but a far plane that moves with the camera resizes the
+// cascades and undoes the snapping, so the chapter does not use it yet.
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far);

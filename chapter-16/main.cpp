@@ -334,17 +334,14 @@ void updateFrame(Chapter& c, uint32_t slot) {
     glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
                                                     c.scene.camera.far);
     setCamera(c.scenePass, slot, projection, view);
-    // The cascades for this frame's camera and sun (none without a directional light: the map
-    // is then never read).
+    // The cascades for this frame's camera and sun. Without a directional light there are none:
+    // the shadow pass draws nothing and every pixel's visibility is 1.
     if (c.lightControls.sun >= 0) {
         CascadeCamera camera{.view = view,
                              .fovY = glm::radians(c.scene.camera.fov),
                              .aspect = float(c.target.extent.width) / float(c.target.extent.height),
                              .near = c.scene.camera.near,
-                             // The last cascade ends where the scene does, when that is nearer
-                             // than the projection's far plane: no texels for empty space.
-                             .far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax,
-                                              c.scene.camera.near, c.scene.camera.far)};
+                             .far = c.scene.camera.far};
         c.cascades =
             computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
     }

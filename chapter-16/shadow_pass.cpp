@@ -153,6 +153,9 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     if ((properties.optimalTilingFeatures & needed) != needed)
         throw common::Failure(
             "this device cannot render to and sample R32G32_SFLOAT, the shadow map's format");
+    vkGetPhysicalDeviceFormatProperties(device.physical, VK_FORMAT_D32_SFLOAT, &properties);
+    if ((properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) == 0)
+        throw common::Failure("this device cannot render to D32_SFLOAT, the shadow map's depth format");
     ShadowPass pass;
     pass.settings = settings;
     pass.moments = createLayeredImage(device, settings.mapSize, settings.count, kMomentsFormat,
@@ -238,9 +241,12 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
                              VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                              VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT),
+        // The previous frame's depth writes made available before this frame's clear writes again.
         common::imageBarrier(
             pass.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_NONE,
+            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
     common::pipelineBarrier(cmd, init.data(), uint32_t(init.size()));

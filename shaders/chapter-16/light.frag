@@ -44,7 +44,7 @@ void main() {
     SurfaceSample s = readGBuffer(inUv);
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
-    gVisibility = s.surface ? sunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
+    gVisibility = s.surface && cascades.count > 0 ? sunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
     if (show.view == 6) {  // --view shadow-map: each cascade's layer side by side, depth as grey
         float x = inUv.x * float(cascades.count);
         int layer = min(int(x), cascades.count - 1);
@@ -53,6 +53,6 @@ void main() {
     }
     outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));
     // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from.
-    if (show.view == 7 && s.surface) outColor.rgb *= kCascadeColors[cascade];
+    if (show.view == 7 && s.surface && cascades.count > 0) outColor.rgb *= kCascadeColors[cascade];
 }
 //< light-frag

@@ -22,14 +22,15 @@ layout(push_constant) uniform Draw {
 } draw;
 
 void main() {
+    float depth = gl_FragCoord.z;
+    // The book's bias of the second moment by the depth's slope across the texel, against the
+    // bleeding a filtered or interpolated map would show. Taken before the discard: derivatives
+    // are undefined once a neighbouring fragment may have been discarded.
+    float dx = dFdx(depth), dy = dFdy(depth);
     if (ALPHA_TEST) {
         ShaderMaterial material = materials[draw.materialIndex];
         if (material.diffuse.a * texture(albedoTexture, inUv).a < material.alphaCutoff) discard;
     }
-    float depth = gl_FragCoord.z;
-    // The book's bias of the second moment by the depth's slope across the texel, against the
-    // bleeding a filtered or interpolated map would show.
-    float dx = dFdx(depth), dy = dFdy(depth);
     outMoments = vec2(depth, depth * depth + 0.25 * (dx * dx + dy * dy));
 }
 //< shadow-frag

@@ -321,9 +321,10 @@ json boxPrimitive(gltf::File& file, int material, vec3 lo, vec3 hi) {
 }
 
 // A plane of 12 x 12 at y = 0 and a box from (-0.5, 1, -0.5) to (0.5, 2, 0.5) above it, white,
-// seen from straight above; a sun travelling along (1, -1, 0), no ambient light. The box's shadow on
-// the plane is then exactly x in 0.5..2.5, z in -0.5..0.5 (each point of the box moves its height
-// along +x on its way down), and black; the rest of the plane is lit.
+// seen from straight above; a sun travelling along (1, -1, 0.5), no ambient light. Each point of
+// the box at height h lands h further along x and h / 2 along z: the shadow on the plane is the
+// box's square swept from (0.5..1.5, 0..1) at h = 1 to (1.5..2.5, 0.5..1.5) at h = 2, black, and
+// symmetric in neither x nor z; the rest of the plane is lit.
 void writeShadows(const fs::path& dir) {
     fs::create_directories(dir);
     gltf::File file;
@@ -345,14 +346,15 @@ void writeShadows(const fs::path& dir) {
     };
     // A point light under the box, over the middle of the sun's shadow: the sun's shadow must not
     // darken it (the book multiplies all the lights by the sun's visibility).
-    scene(
-        "box_on_plane_point.json", {1, -1, 0},
-        json::array({{{"type", "point"}, {"position", {1.5, 0.5, 0}}, {"intensity", 1.0}, {"range", 3.0}}}));
-    scene("box_on_plane.json", {1, -1, 0});
-    // The hard directions: straight down (the book's default), a millionth of a radian off it, and
+    scene("box_on_plane_point.json", {1, -1, 0.5},
+          json::array(
+              {{{"type", "point"}, {"position", {1.5, 0.5, 0.75}}, {"intensity", 1.0}, {"range", 3.0}}}));
+    scene("box_on_plane.json", {1, -1, 0.5});
+    // The hard directions: straight down (the book's default), 5e-4 radians off it (far enough
+    // that |dot(light, y)| is not 1 in float, where the book keeps y as its up vector), and
     // grazing, one degree above the horizon.
     scene("sun_down.json", {0, -1, 0});
-    scene("sun_down_1e-6.json", {std::sin(1e-6), -std::cos(1e-6), 0});
+    scene("sun_down_5e-4.json", {std::sin(5e-4), -std::cos(5e-4), 0});
     scene("sun_grazing.json", {std::cos(glm::radians(1.0)), -std::sin(glm::radians(1.0)), 0});
 }
 
