@@ -50,8 +50,10 @@ std::vector<glm::vec3> sliceCorners(const CascadeCamera& camera, float from, flo
 std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 lightDirection,
                                      const CascadeSettings& settings) {
     std::vector<float> splits = cascadeSplits(camera.near, camera.far, settings.count, settings.lambda);
+    // The light's view: a rotation only (its eye at the world's origin, looking along the light),
+    // the same for every cascade and every camera position. Each cascade's box is placed in it.
     glm::vec3 direction = glm::normalize(lightDirection);
-    glm::vec3 up = lightUp(direction);
+    glm::mat4 lightView = glm::lookAt(glm::vec3(0.0f), direction, lightUp(direction));
     std::vector<Cascade> cascades(settings.count);
     for (uint32_t i = 0; i < settings.count; ++i) {
         Cascade& cascade = cascades[i];
@@ -69,32 +71,30 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
         cascade.center = center;
         cascade.radius = radius;
 
-        // The light's camera: on the sphere, looking along the light through its centre. The
-        // orthographic box is the sphere's square plus one texel on every side, so that the
-        // snapping below (less than a texel) never moves the slice out of it; depth 0 at the eye,
-        // 1 at twice the radius. Casters between the light and the box are kept by depth clamping
-        // (the shadow pass's pipeline).
+        // Texel snapping: the sphere's centre, in the light's view, rounded to whole texels (depth
+        // too). The box around it is the sphere's square plus one texel on every side -- the
+        // rounding moves it by at most half a texel -- so every fixed point of the world falls on
+        // the same place of a texel wherever the camera is, and while the camera moves within a
+        // texel the cascade's matrix does not change at all (the shadow pass can keep the layer).
+        // The book rounds the origin's position in the light's view in world units, which does
+        // not snap to texels. Depth: 0 at the box's side toward the light, 1 at the far side;
+        // casters between the light and the box are kept by depth clamping (the shadow pipeline).
         float texel = 2.0f * radius / float(settings.mapSize - 2);  // a texel's size in the world
         float half = radius + texel;
+        glm::vec3 c = glm::vec3(lightView * glm::vec4(center, 1.0f));
+        c = glm::round(c / texel) * texel;
         cascade.texel = texel;
-        cascade.view = glm::lookAt(center - direction * radius, center, up);
-        cascade.projection = glm::ortho(-half, half, -half, half, 0.0f, 2.0f * radius);
-
-        // Texel snapping: where the world's origin lands in the shadow map, in texels, and the
-        // projection moved by what rounds that to a whole texel. The book rounds the origin's
-        // position in the light's *view* (world units), which does not snap to texels.
-        glm::vec4 origin = cascade.projection * cascade.view * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-        float texelsPerUnit = float(settings.mapSize) * 0.5f;  // clip x and y span -1..1
-        glm::vec2 texels = glm::vec2(origin) * texelsPerUnit;
-        glm::vec2 offset = (glm::round(texels) - texels) / texelsPerUnit;
-        cascade.projection[3][0] += offset.x;
-        cascade.projection[3][1] += offset.y;
+        cascade.view = lightView;
+        // The view looks along -z: the box spans z from c.z + half (toward the light) to c.z - half.
+        cascade.projection =
+            glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, -c.z - half, -c.z + half);
         cascade.viewProjection = cascade.projection * cascade.view;
     }
     return cascades;
 }
 //< compute-cascades
 
+//> fitted-far
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far) {
     float farthest = near;
     for (int i = 0; i < 8; ++i) {
@@ -102,5 +102,11 @@ float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax,
                          (i & 4) ? boundsMax.z : boundsMin.z);
         farthest = std::max(farthest, -(view * glm::vec4(corner, 1.0f)).z);  // view distance
     }
-    return std::clamp(farthest, near, far);
+    if (!(farthest < far)) return far;
+    // Rounded up to the next of near x 2^(k/8): the far plane -- and with it every split, sphere and
+    // texel -- changes only when the camera has moved far enough to cross a step, not every frame
+    // (which would undo the snapping). At most 9% more than the scene needs.
+    double steps = std::ceil(8.0 * std::log2(double(farthest) / double(near)));
+    return float(std::min(double(far), double(near) * std::exp2(steps / 8.0)));
 }
+//< fitted-far

@@ -51,14 +51,15 @@ std::vector<glm::vec3> sliceCorners(const CascadeCamera& camera, float from, flo
 
 // The cascades for `camera` and a directional light travelling along `lightDirection` (not zero).
 // Each cascade's projection covers its slice's bounding sphere (radius rounded up to 1/16, so the
-// projection keeps its size while the camera turns), and is moved by less than a texel so that the
-// world's origin -- and so every fixed point -- falls on the same place of a texel whatever the
-// camera's position: shadow edges then stay still as the camera moves.
+// projection keeps its size while the camera turns), its centre rounded to whole texels in the
+// light's view: every fixed point of the world falls on the same place of a texel whatever the
+// camera's position (shadow edges stay still as the camera moves), and a camera that moves less
+// than a texel gets the very same matrices (the shadow pass keeps what it drew).
 std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 lightDirection,
                                      const CascadeSettings& settings);
 
 // The view distance at which the scene's bounds end, seen from `view`: the farthest of the box's
-// corners in front of the camera, clamped to near..far. A scene that ends before the projection's
-// far plane needs no cascades beyond it -- but a far plane that moves with the camera resizes the
-// cascades and undoes the snapping, so the chapter does not use it yet.
+// corners in front of the camera, rounded up to a step of 2^(1/8) from `near` (so that it moves
+// in steps, not with every move of the camera), and at most `far`. A scene that ends before the
+// projection's far plane needs no cascades beyond it.
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far);

@@ -49,7 +49,7 @@ const common::ChapterInfo kChapter{
     "chapter-16",
     "cascade shadows: the sun's shadow map in cascades over chapter-15's renderer (the book's chapter 16)",
     // The order of shade_pixel.glsl's `view`, then light.frag's own.
-    {"final", "position", "albedo", "normal", "pbr", "depth", "shadow-map", "cascades"},
+    {"final", "position", "albedo", "normal", "pbr", "depth", "shadow-map", "cascades", "visibility"},
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
      common::kGuiSwitch,
@@ -58,9 +58,16 @@ const common::ChapterInfo kChapter{
      common::kGuiScaleChoice,
      common::kPipelinesChoice,
      {"cascades", {"3", "1", "2", "4"}, "cascades of the sun's shadow map (the book's: 3)"},
-     {"shadow-map-size",
-      {"2048", "512", "1024", "4096"},
-      "texels along each side of a cascade's shadow map"}},
+     {"shadow-map-size", {"2048", "512", "1024", "4096"}, "texels along each side of a cascade's shadow map"},
+     {"shadow-far",
+      {"scene", "view"},
+      "where the last cascade ends: where the scene's bounds end (in steps), or the view's far plane"},
+     {"shadow-redraw",
+      {"changed", "always"},
+      "draw a cascade again only when what it sees changed, or every frame"},
+     {"camera-motion",
+      {"still", "walk", "creep"},
+      "(testing, benchmarks) move the camera forward every frame: walk 2 cm, creep 0.1 mm"}},
 };
 
 //> light-controls
@@ -72,6 +79,7 @@ struct LightControls {
     int point = -1;  // index of the first point light, if any
     float sunAngle = 270.0f;
     bool moved = false;
+    uint64_t markerMoves = 0;  // the scene's geometry changed (the shadow map is drawn again)
 };
 
 LightControls findControlledLights(const common::Scene& scene) {
@@ -101,6 +109,7 @@ void placePointLight(LightControls& controls, common::Scene& scene, common::GpuS
     light.position = position;
     controls.moved = true;
     if (light.marker < 0) return;
+    ++controls.markerMoves;
     common::Transform transform = scene.models[size_t(light.marker)].transform;
     transform.position = light.position;
     for (common::Draw& draw : gpuScene.draws)
@@ -182,6 +191,8 @@ struct Chapter {
     bool fxaa = false;
     bool genericPipelines = false;    // --pipelines generic
     CascadeSettings cascadeSettings;  // --cascades, --shadow-map-size
+    bool fitFar = true;               // --shadow-far scene
+    float cameraStep = 0.0f;          // --camera-motion: metres forward per frame
     std::vector<Cascade> cascades;    // this frame's
     double passesMs = 0.0;            // how long createPasses took at start-up (pipelines, mostly)
 };
@@ -279,8 +290,12 @@ void setUp(Chapter& c, const common::Options& options) {
     const uint32_t kCascadeCounts[] = {3, 1, 2, 4}, kMapSizes[] = {2048, 512, 1024, 4096};
     c.cascadeSettings = {.count = kCascadeCounts[chosen("cascades")],
                          .mapSize = kMapSizes[chosen("shadow-map-size")]};
+    c.fitFar = chosen("shadow-far") == 0;
+    const float kCameraSteps[] = {0.0f, 0.02f, 1e-4f};
+    c.cameraStep = kCameraSteps[chosen("camera-motion")];
     double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
+    c.shadowPass.redrawAlways = chosen("shadow-redraw") == 1;
     c.passesMs = common::millisecondsSinceStart() - passesStart;
     std::vector<std::string> passes{"shadow", "scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
@@ -328,24 +343,30 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
 }
 
 //> update-frame
-// This frame's uniforms: the camera, the lights (they may have moved), the scene info.
+// This frame's uniforms: the camera, the cascades, the lights (they may have moved), the scene info.
 void updateFrame(Chapter& c, uint32_t slot) {
     glm::mat4 view = common::viewMatrix(c.camera);
     glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
                                                     c.scene.camera.far);
     setCamera(c.scenePass, slot, projection, view);
-    // The cascades for this frame's camera and sun. Without a directional light there are none:
-    // the shadow pass draws nothing and every pixel's visibility is 1.
+    // The cascades for this frame's camera and sun, over the view from near to where the scene
+    // ends (--shadow-far scene) or to the far plane. Without a directional light there are none:
+    // every pixel's visibility is 1.
+    c.cascades.clear();
     if (c.lightControls.sun >= 0) {
+        float far = c.scene.camera.far;
+        if (c.fitFar)
+            far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
         CascadeCamera camera{.view = view,
                              .fovY = glm::radians(c.scene.camera.fov),
                              .aspect = float(c.target.extent.width) / float(c.target.extent.height),
                              .near = c.scene.camera.near,
-                             .far = c.scene.camera.far};
+                             .far = far};
         c.cascades =
             computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
     }
-    updateCascades(c.shadowPass, slot, c.cascades, view);
+    // Which cascades the shadow pass draws: those whose view changed, or all when geometry moved.
+    updateCascades(c.shadowPass, slot, c.cascades, view, c.lightControls.markerMoves);
     updateLights(c.lightPass, slot, shaderLights(c.scene),
                  {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
 }
@@ -409,6 +430,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
         if (c.gui.enabled) common::updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
+        if (c.cameraStep > 0.0f) c.camera.position += common::cameraForward(c.camera) * c.cameraStep;
         updateFrame(c, slot);
         recordFrame(c, sync, slot, frame, imageIndex, overlay);
 
@@ -441,6 +463,23 @@ void frameLoop(Chapter& c, const common::Options& options) {
 }
 //< frame-loop
 
+// A row per cascade for --benchmark's report (the shadow pass draws them all at once, so the GPU
+// times them together, on the "shadow" row): the slice it covers, its texel's size in the world,
+// and in how many frames it was drawn.
+std::vector<std::pair<std::string, std::string>> describeCascades(const Chapter& c) {
+    std::vector<std::pair<std::string, std::string>> rows;
+    for (size_t i = 0; i < c.cascades.size(); ++i) {
+        const Cascade& cascade = c.cascades[i];
+        char text[160];
+        std::snprintf(text, sizeof(text), "%.2f..%.2f m, texel %.2f mm, drawn in %llu of %llu frames",
+                      cascade.splitNear, cascade.splitFar, cascade.texel * 1000.0f,
+                      static_cast<unsigned long long>(c.shadowPass.redraws[i]),
+                      static_cast<unsigned long long>(c.shadowPass.frames));
+        rows.push_back({"shadow_cascade_" + std::to_string(i), text});
+    }
+    return rows;
+}
+
 // After the last frame: where the camera and lights went, --benchmark's report, --check-output.
 void report(Chapter& c, const common::Options& options) {
     const common::CameraDesc& start = c.scene.camera;
@@ -453,7 +492,14 @@ void report(Chapter& c, const common::Options& options) {
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
     common::addPipelineInfo(info, c.scenePass.pipelines.pipelines.size(), c.passesMs);
     info.push_back({"light_pipeline", describeLightKinds(c.lightPass.kinds)});
+    for (const auto& [key, value] : describeCascades(c)) info.push_back({key, value});
     common::reportRun(c.run, c.device, info);
+    // How often each cascade was drawn: once for a still camera, more as it moves.
+    std::string drawn;
+    for (uint32_t i = 0; i < c.cascadeSettings.count; ++i)
+        drawn += (i ? ", " : "") + std::to_string(c.shadowPass.redraws[i]);
+    std::printf("chapter-16: cascades drawn %s times in %llu frames\n", drawn.c_str(),
+                static_cast<unsigned long long>(c.shadowPass.frames));
     if (c.gui.enabled)
         std::printf("chapter-16: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
                     c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);

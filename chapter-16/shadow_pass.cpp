@@ -218,30 +218,54 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     return pass;
 }
 
-void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
-                    const glm::mat4& cameraView) {
+//> redraw
+uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
+                        const glm::mat4& cameraView, uint64_t geometryVersion) {
     CascadeUniform uniform{};
+    if (geometryVersion != pass.drawnGeometry || pass.redrawAlways) pass.held = 0;
+    pass.redraw = 0;
     for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
         uniform.viewProjection[i] = cascades[i].viewProjection;
         uniform.splitFar[int(i)] = cascades[i].splitFar;
         uniform.texelSize[int(i)] = cascades[i].texel;
+        // The same matrix to the bit (computeCascades snaps it, so a camera moving within a texel
+        // gives the same one) over the same geometry: the layer already holds this cascade.
+        bool same = (pass.held >> i & 1u) &&
+                    std::memcmp(&pass.drawnWith[i], &cascades[i].viewProjection, sizeof(glm::mat4)) == 0;
+        if (same) continue;
+        pass.redraw |= 1u << i;
+        pass.drawnWith[i] = cascades[i].viewProjection;
+        ++pass.redraws[i];
     }
+    // The first frame clears every layer, whatever there is to draw (no sun: no cascades, every
+    // pixel's visibility 1); the light pass reads them all.
+    if (pass.frames == 0) pass.redraw = (1u << pass.settings.count) - 1u;
+    pass.held = (1u << cascades.size()) - 1u;
+    pass.drawnGeometry = geometryVersion;
+    ++pass.frames;
     uniform.cameraView = cameraView;
     uniform.count = int32_t(cascades.size());
+    uniform.redraw = pass.redraw;
     std::memcpy(pass.cascades[frame].mapped, &uniform, sizeof(uniform));
+    return pass.redraw;
 }
+//< redraw
 
 //> record-shadow
 void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame) {
-    // Both images to ATTACHMENT_OPTIMAL once the previous frame's light pass has read the moments,
-    // their old contents dropped (cleared below).
+    if (pass.redraw == 0) return;  // every layer holds its cascade: nothing to draw
+    // The moments to ATTACHMENT_OPTIMAL once earlier frames' light passes have read them, keeping
+    // the layers not drawn again (the first time, from UNDEFINED: every layer is drawn).
+    VkImageLayout momentsBefore = pass.frames > 1 && pass.redraw != (1u << pass.settings.count) - 1u
+                                      ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
+                                      : VK_IMAGE_LAYOUT_UNDEFINED;
     std::array<VkImageMemoryBarrier2, 2> init{
-        common::imageBarrier(pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        common::imageBarrier(pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, momentsBefore,
                              VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                              VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT),
-        // The previous frame's depth writes made available before this frame's clear writes again.
+                             VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT),
+        // The previous drawing's depth writes made available before this one's clear writes again.
         common::imageBarrier(
             pass.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
@@ -251,20 +275,20 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
     common::pipelineBarrier(cmd, init.data(), uint32_t(init.size()));
 
-    // Every layer at once: layerCount is the cascade count, and gl_Layer picks each triangle's.
+    // Every layer at once: layerCount is the cascade count, and gl_Layer picks each triangle's
+    // (the geometry shader skips the cascades not drawn this frame, whose layers are loaded and
+    // kept). The layers drawn are cleared first.
     uint32_t size = pass.settings.mapSize;
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                     .imageView = pass.moments.view,
                                     .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-                                    .clearValue = {.color = {{1.0f, 1.0f, 0.0f, 0.0f}}}};  // nothing: far
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                     .imageView = pass.depth.view,
                                     .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                    .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
-                                    .clearValue = {.depthStencil = {1.0f, 0}}};
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE};
     VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                               .renderArea = {{0, 0}, {size, size}},
                               .layerCount = pass.settings.count,
@@ -272,6 +296,15 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
                               .pColorAttachments = &color,
                               .pDepthAttachment = &depth};
     common::vk13.CmdBeginRendering(cmd, &rendering);
+    std::array<VkClearAttachment, 2> clears{
+        VkClearAttachment{
+            VK_IMAGE_ASPECT_COLOR_BIT, 0, {.color = {{1.0f, 1.0f, 0.0f, 0.0f}}}},  // nothing: far
+        VkClearAttachment{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}}};
+    for (uint32_t layer = 0; layer < pass.settings.count; ++layer) {
+        if ((pass.redraw >> layer & 1u) == 0) continue;
+        VkClearRect rect{{{0, 0}, {size, size}}, layer, 1};
+        vkCmdClearAttachments(cmd, uint32_t(clears.size()), clears.data(), 1, &rect);
+    }
     VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     VkRect2D scissor{{0, 0}, {size, size}};
@@ -315,6 +348,7 @@ void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, 
     common::replacePipeline(swap, pass.opaque,
                             [&] { return makeShadowPipeline(device, cache, pass, false); });
     common::replacePipeline(swap, pass.cutout, [&] { return makeShadowPipeline(device, cache, pass, true); });
+    pass.held = 0;  // drawn again with the new shaders
 }
 
 void destroyShadowPass(const common::Device& device, ShadowPass& pass) {

@@ -30,7 +30,8 @@ struct CascadeUniform {
     glm::vec4 texelSize;  // a texel's size in the world, per cascade
     glm::mat4 cameraView;
     int32_t count;
-    int32_t padding[3];
+    uint32_t redraw;  // bit i: cascade i is drawn this frame (the others keep their layer)
+    int32_t padding[2];
 };
 
 // A layered image: one layer per cascade, a 2D_ARRAY view over all of them.
@@ -54,6 +55,14 @@ struct ShadowPass {
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline opaque = VK_NULL_HANDLE;  // constant_id 0 ALPHA_TEST off
     VkPipeline cutout = VK_NULL_HANDLE;
+    // What each layer holds, so that a cascade is drawn again only when what it sees changed.
+    bool redrawAlways = false;            // --shadow-redraw always: every cascade every frame
+    uint32_t held = 0;                    // bit i: layer i holds cascade i as drawnWith[i] says
+    glm::mat4 drawnWith[kMaxCascades]{};  // the matrix each layer was drawn with
+    uint64_t drawnGeometry = 0;           // the scene's geometry version it was drawn from
+    uint32_t redraw = 0;                  // this frame's cascades to draw (updateCascades)
+    uint64_t redraws[kMaxCascades]{};     // how many frames drew each cascade
+    uint64_t frames = 0;                  // frames updateCascades saw
 };
 
 // Throws Failure when the device has no geometry shaders or cannot render to and sample
@@ -61,11 +70,16 @@ struct ShadowPass {
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const CascadeSettings& settings, const ScenePass& scenePass,
                             uint32_t framesInFlight);
-void updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
-                    const glm::mat4& cameraView);
+// This frame's cascades into frame slot `frame`'s uniform, and which of them the shadow pass
+// draws: those whose matrix differs from the one their layer was drawn with, or all of them when
+// the scene's geometry moved (`geometryVersion` differs from the last drawing's), after a shader
+// reload, or with redrawAlways. Returns the mask (0: the pass records nothing this frame).
+uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
+                        const glm::mat4& cameraView, uint64_t geometryVersion);
 void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame);
 void destroyShadowPass(const common::Device& device, ShadowPass& pass);
-// Live reload: new pipelines into `swap` when the reload changed a shadow shader.
+// Live reload: new pipelines into `swap` when the reload changed a shadow shader (every cascade is
+// then drawn again).
 void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,
                            const common::ShaderReload& reload, common::PipelineSwap& swap);

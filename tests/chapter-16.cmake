@@ -89,3 +89,84 @@ set_tests_properties(chapter-16.point-light-in-sun-shadow PROPERTIES FIXTURES_RE
 add_test(NAME chapter-16.point-light-in-sun-shadow-image COMMAND image_compare
     ${TEST_OUT}/chapter-16-point-in-shadow.png --size 320 180 --pixel 148 113 236 236 236 --pixel-tolerance 3)
 set_tests_properties(chapter-16.point-light-in-sun-shadow-image PROPERTIES FIXTURES_REQUIRED ch16-point)
+
+# Cascades drawn only when what they see changed. A still camera: each cascade drawn once in 100
+# frames, and the 100th frame the first to the bit (no shimmer).
+chapter_test(chapter-16.still-camera-first WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --screenshot ${TEST_OUT}/chapter-16-still-1.png
+    EXPECT_STDOUT "cascades drawn 1, 1, 1 times in 1 frames" QUIET_STDERR)
+chapter_test(chapter-16.still-camera WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 100
+            --screenshot ${TEST_OUT}/chapter-16-still-100.png
+    EXPECT_STDOUT "cascades drawn 1, 1, 1 times in 100 frames" QUIET_STDERR)
+set_tests_properties(chapter-16.still-camera-first PROPERTIES FIXTURES_SETUP ch16-still-1)
+set_tests_properties(chapter-16.still-camera PROPERTIES FIXTURES_SETUP ch16-still-100)
+add_test(NAME chapter-16.still-camera-no-shimmer COMMAND image_compare ${TEST_OUT}/chapter-16-still-100.png
+    --size 320 180 --golden ${TEST_OUT}/chapter-16-still-1.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.still-camera-no-shimmer PROPERTIES FIXTURES_REQUIRED "ch16-still-1;ch16-still-100")
+
+# A camera creeping forward 0.1 mm a frame, less than a texel of any cascade: the second frame
+# draws no cascade again (the snapped matrices are the same to the bit), and the sun's visibility
+# changes only where the scene's own edges moved: 19 of 230,400 pixels here; without the
+# snapping, every cascade is drawn again and 141 change as the shadow edges crawl.
+foreach(frames 1 2)
+    chapter_test(chapter-16.creep-${frames} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 640 --height 360 --frames ${frames} --camera-motion creep
+                --view visibility --screenshot ${TEST_OUT}/chapter-16-creep-${frames}.png
+        EXPECT_STDOUT "cascades drawn 1, 1, 1 times in ${frames} frames" QUIET_STDERR)
+    set_tests_properties(chapter-16.creep-${frames} PROPERTIES FIXTURES_SETUP ch16-creep-${frames})
+endforeach()
+add_test(NAME chapter-16.creep-edges-still COMMAND image_compare ${TEST_OUT}/chapter-16-creep-2.png
+    --size 640 360 --golden ${TEST_OUT}/chapter-16-creep-1.png --max-diff 0 --max-fraction 0.0003)
+set_tests_properties(chapter-16.creep-edges-still PROPERTIES FIXTURES_REQUIRED "ch16-creep-1;ch16-creep-2")
+
+# A walking camera: cascades drawn again as they move, and the image the one drawing every cascade
+# every frame gives, to the bit.
+foreach(redraw changed always)
+    chapter_test(chapter-16.walk-${redraw} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 30 --camera-motion walk
+                --shadow-redraw ${redraw} --screenshot ${TEST_OUT}/chapter-16-walk-${redraw}.png
+        QUIET_STDERR)
+    set_tests_properties(chapter-16.walk-${redraw} PROPERTIES FIXTURES_SETUP ch16-walk-${redraw})
+endforeach()
+set_tests_properties(chapter-16.walk-changed PROPERTIES
+    PASS_REGULAR_EXPRESSION "cascades drawn [0-9]+, [0-9]+, [0-9]+ times in 30 frames"
+    FAIL_REGULAR_EXPRESSION "drawn 30, 30, 30 times")
+set_tests_properties(chapter-16.walk-always PROPERTIES
+    PASS_REGULAR_EXPRESSION "cascades drawn 30, 30, 30 times in 30 frames")
+add_test(NAME chapter-16.walk-same-image COMMAND image_compare ${TEST_OUT}/chapter-16-walk-changed.png
+    --size 320 180 --golden ${TEST_OUT}/chapter-16-walk-always.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.walk-same-image PROPERTIES FIXTURES_REQUIRED "ch16-walk-changed;ch16-walk-always")
+
+# The box over the plane seen with near 0.01 and far 1000 (a scene much smaller than the view;
+# extreme logarithmic splits), with the last cascade ending where the scene does and at the far
+# plane: the shadow exactly where it was. The box scenes' camera is 10 above the plane, so the
+# nearer cascades see nothing (a cascade with nothing in it) and every pixel takes the last.
+foreach(far scene view)
+    chapter_test(chapter-16.far-1000-${far} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --shadow-far ${far} --check-output
+                --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/box_on_plane_far.json
+                --screenshot ${TEST_OUT}/chapter-16-far-${far}.png
+        EXPECT_STDOUT "light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+    set_tests_properties(chapter-16.far-1000-${far} PROPERTIES FIXTURES_REQUIRED gltf-cases
+                         FIXTURES_SETUP ch16-far-${far})
+    add_test(NAME chapter-16.far-1000-${far}-shadow COMMAND image_compare ${TEST_OUT}/chapter-16-far-${far}.png
+        --size 320 180 --pixel 152 106 0 0 0 --pixel 148 113 0 0 0 --pixel 144 121 0 0 0
+        --pixel 168 106 156 156 156 --pixel 160 121 156 156 156 --pixel 144 135 156 156 156
+        --pixel 160 74 156 156 156 --pixel 129 113 156 156 156 --pixel-tolerance 3)
+    set_tests_properties(chapter-16.far-1000-${far}-shadow PROPERTIES FIXTURES_REQUIRED ch16-far-${far})
+endforeach()
+# The cascades fitted to the scene: the last ends at 10.24 (0.01 x 2^(80/8)), the first step of
+# near x 2^(k/8) past the plane's farthest corner (10.2 away), not at 1000.
+chapter_test(chapter-16.far-fitted-splits WORKDIR /
+    COMMAND ${CH16} --device llvmpipe --headless --width 320 --height 180 --benchmark --warmup 0 --frames 1
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/box_on_plane_far.json
+    EXPECT_STDOUT "shadow_cascade_2 +[0-9.]+[.][.]10[.]24 m")
+set_tests_properties(chapter-16.far-fitted-splits PROPERTIES FIXTURES_REQUIRED gltf-cases)
+
+# The camera straight up, under the box: finite, non-negative, clean.
+chapter_test(chapter-16.camera-up WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --check-output
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/camera_up.json
+    EXPECT_STDOUT "light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
+set_tests_properties(chapter-16.camera-up PROPERTIES FIXTURES_REQUIRED gltf-cases)

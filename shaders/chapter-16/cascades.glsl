@@ -11,6 +11,7 @@ struct Cascades {
     vec4 texelSize;                     // a texel's size in the world, per cascade
     mat4 cameraView;                    // world -> the camera's view
     int count;
+    uint redraw;                        // bit i: cascade i is drawn this frame
 };
 
 #endif

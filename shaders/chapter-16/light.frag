@@ -51,6 +51,10 @@ void main() {
         outColor = vec4(vec3(textureLod(shadowMoments, vec3(fract(x), inUv.y, float(layer)), 0.0).r), 1.0);
         return;
     }
+    if (show.view == 8) {  // --view visibility: the sun's visibility alone, white where it reaches
+        outColor = vec4(vec3(gVisibility), 1.0);
+        return;
+    }
     outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));
     // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from.
     if (show.view == 7 && s.surface && cascades.count > 0) outColor.rgb *= kCascadeColors[cascade];

@@ -18,7 +18,8 @@ layout(std140, set = 0, binding = 0) uniform CascadeBlock {
 };
 
 void main() {
-    if (gl_InvocationID >= cascades.count) return;
+    // Past the scene's cascades, or a cascade whose layer already holds what it sees: nothing.
+    if (gl_InvocationID >= cascades.count || (cascades.redraw >> gl_InvocationID & 1u) == 0u) return;
     for (int i = 0; i < 3; ++i) {
         outUv = inUv[i];
         gl_Layer = gl_InvocationID;

@@ -333,11 +333,12 @@ void writeShadows(const fs::path& dir) {
     int box = file.mesh(json::array({boxPrimitive(file, white, {-0.5f, 1, -0.5f}, {0.5f, 2, 0.5f})}));
     file.scene({file.node({{"mesh", plane}}), file.node({{"mesh", box}})});
     file.writeGltf(dir / "box_on_plane.gltf");
-    auto scene = [&](const char* name, json direction, json more = json::array()) {
+    auto scene = [&](const char* name, json direction, json more = json::array(), json cameraChanges = {}) {
         json lights = json::array({{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}}});
         for (json& light : more) lights.push_back(light);
         json camera = {
             {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+        if (cameraChanges.is_object()) camera.update(cameraChanges);
         json root = {{"models", json::array({{{"file", "box_on_plane.gltf"}}})},
                      {"camera", camera},
                      {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
@@ -350,6 +351,10 @@ void writeShadows(const fs::path& dir) {
           json::array(
               {{{"type", "point"}, {"position", {1.5, 0.5, 0.75}}, {"intensity", 1.0}, {"range", 3.0}}}));
     scene("box_on_plane.json", {1, -1, 0.5});
+    // The same seen through extreme splits (near 0.01, far 1000: a scene much smaller than the
+    // view), and from under the box looking straight up.
+    scene("box_on_plane_far.json", {1, -1, 0.5}, json::array(), {{"near", 0.01}, {"far", 1000}});
+    scene("camera_up.json", {1, -1, 0.5}, json::array(), {{"position", {0.8, 0.5, 0}}, {"pitch", 89}});
     // The hard directions: straight down (the book's default), 5e-4 radians off it (far enough
     // that |dot(light, y)| is not 1 in float, where the book keeps y as its up vector), and
     // grazing, one degree above the horizon.

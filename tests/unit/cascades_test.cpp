@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -148,14 +149,59 @@ TEST(Cascades, FiniteForAnyLightDirectionAndCamera) {
         }
 }
 
-TEST(Cascades, FittedFarEndsWhereTheSceneEnds) {
+TEST(Cascades, FittedFarEndsWhereTheSceneEndsInSteps) {
     glm::mat4 view = camera({0, 1, 10}, -90.0f, 0.0f).view;  // at z = 10 looking down -z
-    // A box from z = -2 to 2: the farthest corner 12 away.
-    EXPECT_NEAR(fittedFar(view, {-1, 0, -2}, {1, 2, 2}, 0.5f, 50.0f), 12.0f, 1e-4f);
+    // A box from z = -2 to 2: the farthest corner 12 away; the next step 0.5 x 2^(37/8) = 12.34.
+    float far = fittedFar(view, {-1, 0, -2}, {1, 2, 2}, 0.5f, 50.0f);
+    EXPECT_NEAR(far, 0.5 * std::exp2(37.0 / 8.0), 1e-3);
+    EXPECT_GE(far, 12.0f);
     // Larger than the view: the projection's far plane.
     EXPECT_EQ(fittedFar(view, {-100, -100, -100}, {100, 100, 100}, 0.5f, 50.0f), 50.0f);
     // Wholly behind the camera: nothing to cover beyond the near plane.
     EXPECT_EQ(fittedFar(view, {-1, 0, 20}, {1, 1, 30}, 0.5f, 50.0f), 0.5f);
+    // Steps: a camera moving toward the scene by 1 cm at a time changes the far plane a few times
+    // over 3 m, never by less than a step, and always covers the scene within 9%.
+    float last = 0.0f;
+    int changes = 0;
+    for (int i = 0; i < 300; ++i) {
+        float z = 10.0f - 0.01f * float(i);
+        float f = fittedFar(camera({0, 1, z}, -90.0f, 0.0f).view, {-1, 0, -2}, {1, 2, 2}, 0.5f, 50.0f);
+        float needed = z + 2.0f;
+        EXPECT_GE(f, needed - 1e-4f);
+        EXPECT_LE(f, needed * 1.0906f);
+        if (last != 0.0f && f != last) {
+            ++changes;
+            EXPECT_NEAR(last / f, std::exp2(1.0 / 8.0), 1e-4);
+        }
+        last = f;
+    }
+    EXPECT_LE(changes, 4);
+}
+
+// A camera moving by less than a texel gets the very same matrices, to the bit: the shadow pass
+// keeps what it drew, and shadow edges cannot crawl. Moving by a few texels changes them.
+TEST(Cascades, ACameraMovingWithinATexelKeepsItsMatricesToTheBit) {
+    const glm::vec3 light(0.3f, -1.0f, 0.2f);
+    CascadeCamera a = camera({1.0f, 2.0f, 3.0f}, 30.0f, -20.0f);
+    std::vector<Cascade> ca = computeCascades(a, light, {3, 2048, 0.95f});
+    int same = 0, steps = 0;
+    for (int i = 1; i <= 100; ++i) {
+        // 1e-5 of the first cascade's texel at a time, along a slanted line.
+        float step = 1e-5f * ca[0].texel * float(i);
+        CascadeCamera b =
+            camera(glm::vec3(1.0f, 2.0f, 3.0f) + glm::vec3(step, step * 0.5f, -step), 30.0f, -20.0f);
+        std::vector<Cascade> cb = computeCascades(b, light, {3, 2048, 0.95f});
+        for (size_t k = 0; k < ca.size(); ++k, ++steps)
+            if (std::memcmp(&ca[k].viewProjection, &cb[k].viewProjection, sizeof(glm::mat4)) == 0) ++same;
+    }
+    // A hundred moves of at most a thousandth of a texel: a centre lying within 1e-3 texels of a
+    // rounding boundary may cross it; the others must not change.
+    EXPECT_GE(same, steps - 6) << same << " of " << steps;
+    CascadeCamera far =
+        camera(glm::vec3(1.0f, 2.0f, 3.0f) + glm::vec3(5.0f * ca[2].texel, 0, 0), 30.0f, -20.0f);
+    std::vector<Cascade> cf = computeCascades(far, light, {3, 2048, 0.95f});
+    for (size_t k = 0; k < ca.size(); ++k)
+        EXPECT_NE(std::memcmp(&ca[k].viewProjection, &cf[k].viewProjection, sizeof(glm::mat4)), 0) << k;
 }
 
 // Near vertical, a light that turns by 1e-6 radians turns its shadow map's frame by about as much.
