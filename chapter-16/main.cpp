@@ -133,11 +133,37 @@ void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scen
 }
 //< light-controls
 
+// The shadow controls of the overlay: the book's cascade debug view (a switch in its settings
+// file), where the last cascade ends, whether cascades are drawn only when they changed; and per
+// cascade, the slice it covers, its texel in the world and how often it was drawn.
+struct ShadowControls {
+    bool* fitFar;
+    bool* redrawAlways;
+    const std::vector<Cascade>& cascades;
+    const ShadowPass& pass;
+};
+
+void shadowWidgets(int* view, const ShadowControls& shadows) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("Shadows");
+    bool debug = *view == 7;
+    if (ImGui::Checkbox("show cascades", &debug)) *view = debug ? 7 : 0;
+    ImGui::Checkbox("fit last cascade to the scene", shadows.fitFar);
+    ImGui::Checkbox("draw every cascade every frame", shadows.redrawAlways);
+    for (size_t i = 0; i < shadows.cascades.size(); ++i) {
+        const Cascade& cascade = shadows.cascades[i];
+        ImGui::Text("cascade %zu: %.2f..%.2f m, texel %.1f mm, drawn %llu times", i, cascade.splitNear,
+                    cascade.splitFar, cascade.texel * 1000.0f,
+                    static_cast<unsigned long long>(shadows.pass.redraws[i]));
+    }
+}
+
 //> overlay
 // The overlay (--gui): the timings window with the view selector (common/gui.cpp) and FXAA; a
-// second window with the book's light controls and the ambient light.
+// second window with the book's light controls, the ambient light and the shadow controls.
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
-                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene) {
+                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                    const ShadowControls& shadows) {
     common::guiTimingsWindow(gui, run, kChapter.views, view,
                              {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
                               "1/2, 3/4  move the point light up/down, along z"});
@@ -160,6 +186,7 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
         if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
     }
     ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
+    shadowWidgets(view, shadows);
     ImGui::PopItemWidth();
     ImGui::End();
 }
@@ -414,7 +441,8 @@ void frameLoop(Chapter& c, const common::Options& options) {
         uint32_t slot = frame % options.framesInFlight;
         common::FrameSync& sync = c.frames[slot];
         ImDrawData* overlay = common::drawGui(c.gui, c.target, frame, [&] {
-            overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa, c.lightControls, c.scene, c.gpuScene);
+            overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa, c.lightControls, c.scene, c.gpuScene,
+                           {&c.fitFar, &c.shadowPass.redrawAlways, c.cascades, c.shadowPass});
         });
         handleInput(c, lastTime, viewKey, fxaaKey);
 

@@ -1,4 +1,4 @@
-# The --gui overlay of chapters 14 and 15 and chapter-15-lab (common/gui.cpp, common/gui_pass.cpp):
+# The --gui overlay of chapters 14, 15, 16 and chapter-15-lab (common/gui.cpp, common/gui_pass.cpp):
 # golden images headless (the overlay is deterministic there: timings as placeholders); scripted
 # clicks on the overlay (--gui-click); the buffers growing when the help window opens; a size too
 # small for the overlay; the GUI pass's row in --benchmark; and in a real window under Xvfb,
@@ -34,6 +34,29 @@ set_tests_properties(chapter-14.gui-click-fxaa PROPERTIES FIXTURES_SETUP ch14-gu
 add_test(NAME chapter-14.gui-click-fxaa-ticked
     COMMAND image_compare ${TEST_OUT}/chapter-14-gui-fxaa.png --pixel 27 241 47 93 149 --pixel-tolerance 6)
 set_tests_properties(chapter-14.gui-click-fxaa-ticked PROPERTIES FIXTURES_REQUIRED ch14-gui-fxaa)
+
+# chapter-16: the overlay after three frames (its shadow rows: each cascade's slice, texel and
+# draws); "show cascades" (253,160) clicked: the box ticked and the floor tinted by its cascade
+# (green, the second; untinted it is 80,71,58).
+set(run16 $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless)
+chapter_test(chapter-16.gui
+    COMMAND ${run16} --width 640 --height 360 --gui --frames 3 --screenshot ${TEST_OUT}/chapter-16-gui.png
+    EXPECT_STDOUT "GUI buffers grew" QUIET_STDERR)
+set_tests_properties(chapter-16.gui PROPERTIES FIXTURES_SETUP ch16-gui)
+add_test(NAME chapter-16.gui-image COMMAND image_compare ${TEST_OUT}/chapter-16-gui.png
+    --size 640 360 --golden ${GOLDEN}/chapter-16-gui.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-16.gui-image PROPERTIES FIXTURES_REQUIRED ch16-gui)
+chapter_test(chapter-16.gui-tiny COMMAND ${run16} --width 64 --height 48 --gui --frames 3 QUIET_STDERR)
+chapter_test(chapter-16.gui-benchmark
+    COMMAND ${run16} --width 320 --height 180 --gui --benchmark --warmup 0 --frames 3
+    EXPECT_STDOUT "GPU gui +[0-9]" QUIET_STDERR)
+chapter_test(chapter-16.gui-click-cascades
+    COMMAND ${run16} --width 640 --height 360 --gui --frames 6 --gui-click 253,160@3
+            --screenshot ${TEST_OUT}/chapter-16-gui-cascades.png QUIET_STDERR)
+set_tests_properties(chapter-16.gui-click-cascades PROPERTIES FIXTURES_SETUP ch16-gui-cascades)
+add_test(NAME chapter-16.gui-click-cascades-shown COMMAND image_compare ${TEST_OUT}/chapter-16-gui-cascades.png
+    --pixel 253 160 66 150 250 --pixel 320 340 39 71 26 --pixel-tolerance 6)
+set_tests_properties(chapter-16.gui-click-cascades-shown PROPERTIES FIXTURES_REQUIRED ch16-gui-cascades)
 
 chapter_test(chapter-15.gui-click-bad COMMAND $<TARGET_FILE:chapter-15> --headless --gui --gui-click 10,20
     EXPECT_EXIT 2 EXPECT_STDERR "--gui-click must be X,Y@FRAME" ONE_LINE_STDERR)
