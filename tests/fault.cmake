@@ -81,7 +81,8 @@ set(FRAME_WAIT "vkWaitForFences\\(c\\.device\\.handle, 1, &sync.inFlight, VK_TRU
 foreach(spec "06;3;8;vkQueueSubmit:9;4"
              "10;40;47;vkQueueSubmit:12;4"
              "14;40;48;vkQueueSubmit2:3;5"
-             "15;47;62;vkQueueSubmit2:3;5")
+             "15;47;62;vkQueueSubmit2:3;5"
+             "16;47;66;vkQueueSubmit2:3;5")
     list(GET spec 0 number)
     list(GET spec 1 gbuffer)
     list(GET spec 2 resize)
@@ -111,6 +112,11 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
     fault_test(${name}.lost-at-frame-3-wait FAULT vkWaitForFences:${wait} COMMAND ${run} --frames 5
         EXPECT_STDERR "^chapter-${number}: error: ${LOST}${FRAME_WAIT}")
 endforeach()
+# chapter-16's own allocations: the shadow map's moments (its layered image, written out in
+# shadow_pass.cpp), after the G-buffer.
+fault_test(fault.chapter-16.oom-shadow-map FAULT vkAllocateMemory:56
+    COMMAND $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless --width 320 --height 180
+    EXPECT_STDERR "^chapter-16: error: ${OOM}image.memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(shadow_pass.cpp:[0-9]+\\)\n$")
 fault_test(fault.chapter-06.host-oom-create-buffer FAULT vkCreateBuffer:1
     COMMAND $<TARGET_FILE:chapter-06> --device llvmpipe --validation --headless
     EXPECT_STDERR "^chapter-06: error: ${HOST_OOM}vkCreateBuffer\\(.*\\) failed with VK_ERROR_OUT_OF_HOST_MEMORY \\(buffer.cpp:[0-9]+\\)\n$")
