@@ -170,3 +170,18 @@ chapter_test(chapter-16.camera-up WORKDIR /
             --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/camera_up.json
     EXPECT_STDOUT "light output 320x180: 0 NaN, 0 infinite, 0 negative" QUIET_STDERR)
 set_tests_properties(chapter-16.camera-up PROPERTIES FIXTURES_REQUIRED gltf-cases)
+
+# Cut-outs: a quad over the plane whose texture is transparent on its half at z < 0, under a sun
+# along (1, -1, 0) (tools/gltf_cases.cpp, shadows/cutout_over_plane.json). The opaque half's
+# shadow is black at (x 2, z 0.5); the same strip under the transparent half, (2, -0.5), is lit
+# like the open plane at (2, -3): 160. Without the shadow pass's alpha test both are black.
+chapter_test(chapter-16.cutout-shadow WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/cutout_over_plane.json
+            --screenshot ${TEST_OUT}/chapter-16-cutout.png
+    EXPECT_STDOUT "chapter-16: 2 draws" QUIET_STDERR)
+set_tests_properties(chapter-16.cutout-shadow PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-cutout)
+add_test(NAME chapter-16.cutout-shadow-only-where-opaque COMMAND image_compare ${TEST_OUT}/chapter-16-cutout.png
+    --size 320 180 --pixel 152 121 0 0 0 --pixel 168 121 160 160 160 --pixel 207 121 160 160 160
+    --pixel-tolerance 3)
+set_tests_properties(chapter-16.cutout-shadow-only-where-opaque PROPERTIES FIXTURES_REQUIRED ch16-cutout)

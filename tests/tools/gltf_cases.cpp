@@ -351,6 +351,45 @@ void writeShadows(const fs::path& dir) {
           json::array(
               {{{"type", "point"}, {"position", {1.5, 0.5, 0.75}}, {"intensity", 1.0}, {"range", 3.0}}}));
     scene("box_on_plane.json", {1, -1, 0.5});
+    // A cut-out: a 2 x 2 quad 1.5 over the plane, facing up, whose texture's half at z < 0 is
+    // transparent (alpha 0, rows 0-3 of an 8 x 8 image: v < 0.5) and the half at z > 0 opaque,
+    // under a sun along (1, -1, 0): the opaque half's shadow falls at x 0.5..2.5, z 0..1, beside the
+    // quad; the transparent half casts none (z -1..0 of the same strip stays lit).
+    {
+        gltf::File cut;
+        std::vector<uint8_t> halves(8 * 8 * 4, 255);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 8; ++x) halves[size_t((y * 8 + x) * 4 + 3)] = 0;
+        writePng(dir / "alpha_halves.png", 8, 8, 4, halves);
+        int sampler = cut.add("samplers",
+                              {{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}});
+        json pbr = color(0.8f, 0.8f, 0.8f);
+        pbr["baseColorTexture"] = {{"index", cut.texture(cut.image("alpha_halves.png"), sampler)}};
+        int masked =
+            cut.material({{"pbrMetallicRoughness", pbr}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.5}});
+        int floor = cut.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}});
+        std::vector<vec3> p{{-1, 1.5f, -1}, {-1, 1.5f, 1}, {1, 1.5f, 1}, {1, 1.5f, -1}}, n(4, vec3(0, 1, 0));
+        std::vector<glm::vec2> uv{{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // u along x, v along z
+        std::vector<uint16_t> i{0, 1, 2, 0, 2, 3};
+        json quad = {{"attributes",
+                      {{"POSITION", cut.positions(p)},
+                       {"NORMAL", cut.values(n, gltf::kFloat, "VEC3")},
+                       {"TEXCOORD_0", cut.values(uv, gltf::kFloat, "VEC2")}}},
+                     {"indices", cut.values(i, gltf::kUnsignedShort, "SCALAR")},
+                     {"material", masked}};
+        int ground = cut.mesh(json::array({boxPrimitive(cut, floor, {-6, -0.1f, -6}, {6, 0, 6})}));
+        cut.scene({cut.node({{"mesh", ground}}), cut.node({{"mesh", cut.mesh(json::array({quad}))}})});
+        cut.writeGltf(dir / "cutout_over_plane.gltf");
+        json camera = {
+            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+        json root = {
+            {"models", json::array({{{"file", "cutout_over_plane.gltf"}}})},
+            {"camera", camera},
+            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+            {"lights",
+             json::array({{{"type", "directional"}, {"direction", {1, -1, 0}}, {"intensity", 2.0}}})}};
+        writeText(dir / "cutout_over_plane.json", root.dump(2));
+    }
     // The same seen through extreme splits (near 0.01, far 1000: a scene much smaller than the
     // view), and from under the box looking straight up.
     scene("box_on_plane_far.json", {1, -1, 0.5}, json::array(), {{"near", 0.01}, {"far", 1000}});
