@@ -185,3 +185,21 @@ add_test(NAME chapter-16.cutout-shadow-only-where-opaque COMMAND image_compare $
     --size 320 180 --pixel 152 121 0 0 0 --pixel 168 121 160 160 160 --pixel 207 121 160 160 160
     --pixel-tolerance 3)
 set_tests_properties(chapter-16.cutout-shadow-only-where-opaque PROPERTIES FIXTURES_REQUIRED ch16-cutout)
+
+# Which cascade a pixel takes: the plane seen along its length, 1 over it and 10 degrees down,
+# far 20 (shadows/cascade_rows.json), --shadow-far view: splits 0.5, 1.97, 6.23, 20 (lambda 0.95).
+# In column 100, rows 170 and 150 lie 1.47 and 1.80 away (the first cascade, tinted red), rows 132,
+# 100 and 90 at 2.26, 4.17 and 5.66 (the second, green), rows 84 and 80 at 7.20 and 8.80 (the
+# third, blue). The sun straight down lights the plane evenly: 187 in the tint's channel, 99 in
+# the others.
+chapter_test(chapter-16.cascade-choice WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --view cascades --shadow-far view
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/cascade_rows.json
+            --screenshot ${TEST_OUT}/chapter-16-cascade-rows.png
+    EXPECT_STDOUT "chapter-16: 2 draws" QUIET_STDERR)
+set_tests_properties(chapter-16.cascade-choice PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-rows)
+add_test(NAME chapter-16.cascade-choice-by-distance COMMAND image_compare ${TEST_OUT}/chapter-16-cascade-rows.png
+    --size 320 180 --pixel 100 170 187 99 99 --pixel 100 150 187 99 99 --pixel 100 132 99 187 99
+    --pixel 100 100 99 187 99 --pixel 100 90 99 187 99 --pixel 100 84 99 99 187 --pixel 100 80 99 99 187
+    --pixel-tolerance 3)
+set_tests_properties(chapter-16.cascade-choice-by-distance PROPERTIES FIXTURES_REQUIRED ch16-rows)

@@ -393,6 +393,9 @@ void writeShadows(const fs::path& dir) {
     // The same seen through extreme splits (near 0.01, far 1000: a scene much smaller than the
     // view), and from under the box looking straight up.
     scene("box_on_plane_far.json", {1, -1, 0.5}, json::array(), {{"near", 0.01}, {"far", 1000}});
+    // Looking along the plane (1 over it, 10 degrees down, far 20): which cascade each distance takes.
+    scene("cascade_rows.json", {0, -1, 0}, json::array(),
+          {{"position", {0, 1, 5.5}}, {"yaw", 0}, {"pitch", -10}, {"far", 20}});
     scene("camera_up.json", {1, -1, 0.5}, json::array(), {{"position", {0.8, 0.5, 0}}, {"pitch", 89}});
     // The hard directions: straight down (the book's default), 5e-4 radians off it (far enough
     // that |dot(light, y)| is not 1 in float, where the book keeps y as its up vector), and
