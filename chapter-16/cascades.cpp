@@ -86,8 +86,15 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
         cascade.texel = texel;
         cascade.view = lightView;
         // The view looks along -z: the box spans z from c.z + half (toward the light) to c.z - half.
-        cascade.projection =
-            glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, -c.z - half, -c.z + half);
+        float near = -c.z - half;
+        if (settings.reachCasters)
+            for (int k = 0; k < 8; ++k) {
+                glm::vec3 corner((k & 1) ? settings.castersMax.x : settings.castersMin.x,
+                                 (k & 2) ? settings.castersMax.y : settings.castersMin.y,
+                                 (k & 4) ? settings.castersMax.z : settings.castersMin.z);
+                near = std::min(near, -(lightView * glm::vec4(corner, 1.0f)).z - texel);
+            }
+        cascade.projection = glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, near, -c.z + half);
         cascade.viewProjection = cascade.projection * cascade.view;
     }
     return cascades;

@@ -22,6 +22,11 @@ struct CascadeSettings {
     uint32_t count = 3;       // cascades, 1..kMaxCascades
     uint32_t mapSize = 2048;  // texels along each side of a cascade's shadow map, at least 16
     float lambda = 0.95f;     // splits: 0 uniform, 1 logarithmic (GPU Gems 3, ch. 10)
+    // Without depth clamping (a device that lacks it), casters between the light and a cascade's
+    // box would be clipped away: with reachCasters, each box reaches toward the light as far as
+    // the casters' bounds (the scene's) do.
+    bool reachCasters = false;
+    glm::vec3 castersMin{0.0f}, castersMax{0.0f};
 };
 inline constexpr uint32_t kMaxCascades = 4;
 

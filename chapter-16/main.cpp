@@ -318,6 +318,10 @@ void setUp(Chapter& c, const common::Options& options) {
     c.cascadeSettings = {.count = kCascadeCounts[chosen("cascades")],
                          .mapSize = kMapSizes[chosen("shadow-map-size")]};
     c.fitFar = chosen("shadow-far") == 0;
+    // No depth clamping on this device: the cascades reach toward the sun as far as the scene does.
+    c.cascadeSettings.reachCasters = !c.device.depthClamp;
+    c.cascadeSettings.castersMin = c.gpuScene.boundsMin;
+    c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
     const float kCameraSteps[] = {0.0f, 0.02f, 1e-4f};
     c.cameraStep = kCameraSteps[chosen("camera-motion")];
     double passesStart = common::millisecondsSinceStart();

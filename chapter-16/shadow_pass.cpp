@@ -120,7 +120,7 @@ VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cach
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                             .colorAttachmentCount = 1,
                                             .pColorAttachmentFormats = &kMomentsFormat,
-                                            .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
+                                            .depthAttachmentFormat = pass.depthFormat};
     VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                       .pNext = &rendering,
                                       .stageCount = uint32_t(stages.size()),
@@ -153,15 +153,15 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     if ((properties.optimalTilingFeatures & needed) != needed)
         throw common::Failure(
             "this device cannot render to and sample R32G32_SFLOAT, the shadow map's format");
-    vkGetPhysicalDeviceFormatProperties(device.physical, VK_FORMAT_D32_SFLOAT, &properties);
-    if ((properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) == 0)
-        throw common::Failure("this device cannot render to D32_SFLOAT, the shadow map's depth format");
     ShadowPass pass;
     pass.settings = settings;
+    // The scene pass's depth format (D32_SFLOAT, as the book's; X8_D24 on a device without it): the
+    // depth only orders the casters, the moments keep their depth in 32-bit floats.
+    pass.depthFormat = scenePass.formats.depth;
     pass.moments = createLayeredImage(device, settings.mapSize, settings.count, kMomentsFormat,
                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                       VK_IMAGE_ASPECT_COLOR_BIT, "shadow moments");
-    pass.depth = createLayeredImage(device, settings.mapSize, settings.count, VK_FORMAT_D32_SFLOAT,
+    pass.depth = createLayeredImage(device, settings.mapSize, settings.count, pass.depthFormat,
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
                                     "shadow depth");
 

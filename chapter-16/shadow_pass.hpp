@@ -43,8 +43,9 @@ struct LayeredImage {
 
 struct ShadowPass {
     CascadeSettings settings;
-    LayeredImage moments;                                   // R32G32_SFLOAT: depth, depth^2
-    LayeredImage depth;                                     // D32_SFLOAT
+    LayeredImage moments;  // R32G32_SFLOAT: depth, depth^2
+    LayeredImage depth;    // D32_SFLOAT (the scene pass's format)
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0: the cascades (geometry stage)
     VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set: moments + cascades
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
@@ -65,8 +66,8 @@ struct ShadowPass {
     uint64_t frames = 0;                  // frames updateCascades saw
 };
 
-// Throws Failure when the device has no geometry shaders or cannot render to and sample
-// R32G32_SFLOAT; `scenePass` lends its materials and textures sets.
+// Throws Failure when the device cannot render to and sample R32G32_SFLOAT; `scenePass` lends its materials
+// and textures sets.
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const CascadeSettings& settings, const ScenePass& scenePass,
                             uint32_t framesInFlight);

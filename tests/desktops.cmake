@@ -191,8 +191,40 @@ foreach(chapter 06 10)
         COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.0. this chapter needs Vulkan 1.1" ONE_LINE_STDERR)
 endforeach()
-# A device without the scalarBlockLayout feature: chapter-15 and the lab refused in one line naming it.
-foreach(chapter 15 15-lab)
+# chapter-16 on poorer devices: Vulkan 1.1 refused; no geometry shaders refused, naming the
+# feature; no D32_SFLOAT: the shadow map's depth in X8_D24 as the G-buffer's, the same image; no
+# depth clamping: a slab high over the camera (far toward the sun from every cascade's box) still
+# casts its shadow, the boxes reaching toward the sun as far as the scene does instead -- with
+# neither, the shadow is gone (tools/gltf_cases.cpp, shadows/slab_overhead.json).
+set(run16 $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless)
+desktop_device_test(desktop.vulkan-1.1.chapter-16 VKBOOK_DEVICE_API=1.1 COMMAND ${run16}
+    EXPECT_EXIT 1 EXPECT_STDERR "it supports Vulkan 1.1. this chapter ${REFUSED_13}" ONE_LINE_STDERR)
+desktop_device_test(desktop.no-geometry-shader.chapter-16 VKBOOK_HIDE=geometryShader COMMAND ${run16}
+    EXPECT_EXIT 1 EXPECT_STDERR "it lacks the geometryShader feature" ONE_LINE_STDERR)
+desktop_image_test(desktop.no-d32.chapter-16 ${GOLDEN}/chapter-16-final.png
+    COMMAND ${run16} ${SIZE} --benchmark --warmup 0 --frames 2 --screenshot ${TEST_OUT}/desktop.no-d32.chapter-16.png
+    EXPECT_STDOUT "depth_format +X8_D24_UNORM_PACK32\n" QUIET_STDERR)
+set_tests_properties(desktop.no-d32.chapter-16 PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE=D32_SFLOAT")
+foreach(clamp with without)
+    set(name desktop.slab-overhead-${clamp}-depth-clamp.chapter-16)
+    chapter_test(${name} WORKDIR /
+        COMMAND ${run16} --width 320 --height 180 --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/slab_overhead.json
+                --screenshot ${TEST_OUT}/${name}.png
+        EXPECT_STDOUT "chapter-16: 2 draws" QUIET_STDERR)
+    set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ${name})
+    if(clamp STREQUAL "without")
+        set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FAULT_ENV};VKBOOK_HIDE=depthClamp")
+    endif()
+    # Under the slab (x -4, z -3 and 3): black; beside it (x -1.5): lit, 187.
+    add_test(NAME ${name}-shadow COMMAND image_compare ${TEST_OUT}/${name}.png --size 320 180
+        --pixel 207 28 0 0 0 --pixel 113 28 0 0 0 --pixel 113 67 187 187 187 --pixel 207 67 187 187 187
+        --pixel-tolerance 3)
+    set_tests_properties(${name}-shadow PROPERTIES FIXTURES_REQUIRED ${name})
+endforeach()
+
+# A device without the scalarBlockLayout feature: chapters 15 and 16 and the lab refused in one
+# line naming it.
+foreach(chapter 15 15-lab 16)
     desktop_device_test(desktop.no-scalar-block-layout.chapter-${chapter} VKBOOK_HIDE=scalarBlockLayout
         COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the scalarBlockLayout feature" ONE_LINE_STDERR)

@@ -22,7 +22,8 @@
 //   VKBOOK_DEVICE_API=1.2 (1.1, 1.0) the physical device reports that Vulkan version;
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...),
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
-//                                   among a surface's formats) and the feature scalarBlockLayout.
+//                                   among a surface's formats) and the features scalarBlockLayout,
+//                                   geometryShader and depthClamp.
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
 //   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
@@ -267,7 +268,8 @@ Profile parseProfile() {
     if (const char* count = std::getenv("VKBOOK_MAX_ALLOCATIONS"); count && *count)
         p.maxAllocations = uint32_t(std::strtoul(count, nullptr, 10));
     for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE"))) {
-        if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout")
+        if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout" &&
+            name != "geometryShader" && name != "depthClamp")
             std::fprintf(stderr,
                          "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
                          "nor a format it knows\n",
@@ -827,6 +829,19 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties2(VkPhysicalDevice p
     shrinkHeaps(memory->memoryProperties);
 }
 
+// The core features VKBOOK_HIDE names, cleared.
+void hideCoreFeatures(VkPhysicalDeviceFeatures& features) {
+    if (hidden("geometryShader")) features.geometryShader = VK_FALSE;
+    if (hidden("depthClamp")) features.depthClamp = VK_FALSE;
+}
+
+VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures(VkPhysicalDevice physical,
+                                                     VkPhysicalDeviceFeatures* features) {
+    nextInstanceCall<PFN_vkGetPhysicalDeviceFeatures>(physical, "vkGetPhysicalDeviceFeatures")(physical,
+                                                                                               features);
+    hideCoreFeatures(*features);
+}
+
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
                                                       VkPhysicalDeviceFeatures2* features) {
     VkBaseOutStructure head{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
@@ -838,6 +853,7 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
     if (maintenance1.found)
         reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)
             ->swapchainMaintenance1 = profile().maintenance1 ? VK_TRUE : VK_FALSE;
+    hideCoreFeatures(features->features);
     if (hidden("scalarBlockLayout"))
         for (auto* s = reinterpret_cast<VkBaseOutStructure*>(features); s; s = s->pNext) {
             if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES)
@@ -980,6 +996,7 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFormatProperties2)},
         {"vkGetPhysicalDeviceSurfaceFormatsKHR",
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceSurfaceFormats)},
+        {"vkGetPhysicalDeviceFeatures", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures)},
         {"vkGetPhysicalDeviceFeatures2", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
         {"vkGetPhysicalDeviceMemoryProperties",
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceMemoryProperties)},

@@ -393,6 +393,26 @@ void writeShadows(const fs::path& dir) {
     // The same seen through extreme splits (near 0.01, far 1000: a scene much smaller than the
     // view), and from under the box looking straight up.
     scene("box_on_plane_far.json", {1, -1, 0.5}, json::array(), {{"near", 0.01}, {"far", 1000}});
+    // A slab high over the camera (y 20) covering x -6..-2.5, under a sun straight down: far
+    // toward the light from every cascade's box, its shadow is there only if casters beyond the
+    // box are kept (depth clamping, or boxes reaching toward the light where a device lacks it).
+    {
+        gltf::File high;
+        int grey = high.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}});
+        int ground = high.mesh(json::array({boxPrimitive(high, grey, {-6, -0.1f, -6}, {6, 0, 6})}));
+        int slab = high.mesh(json::array({boxPrimitive(high, grey, {-6, 20, -6}, {-2.5f, 20.1f, 6})}));
+        high.scene({high.node({{"mesh", ground}}), high.node({{"mesh", slab}})});
+        high.writeGltf(dir / "slab_overhead.gltf");
+        json camera = {
+            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+        json root = {
+            {"models", json::array({{{"file", "slab_overhead.gltf"}}})},
+            {"camera", camera},
+            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+            {"lights",
+             json::array({{{"type", "directional"}, {"direction", {0, -1, 0}}, {"intensity", 2.0}}})}};
+        writeText(dir / "slab_overhead.json", root.dump(2));
+    }
     // Looking along the plane (1 over it, 10 degrees down, far 20): which cascade each distance takes.
     scene("cascade_rows.json", {0, -1, 0}, json::array(),
           {{"position", {0, 1, 5.5}}, {"yaw", 0}, {"pitch", -10}, {"far", 20}});
