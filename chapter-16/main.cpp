@@ -192,6 +192,24 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 }
 //< overlay
 
+//> book-scene
+// --book-scene: the book's chapter 16 changes chapter 15's scene (its Main.java): the camera at
+// (-5, 5, 0), turned 90 degrees about y (looking along +x) and 20 down; zNear 0.5 and zFar 50; the
+// sun straight down at intensity 8; no point light, and no marker for it. The book also adds a
+// tree scaled 0.005, which it ships only in its own converted format (the .vtx/.idx binaries its
+// model generator writes), not as glTF: it is not loaded here.
+void useBookChapter16Scene(common::Scene& scene) {
+    scene.camera.position = {-5.0f, 5.0f, 0.0f};
+    scene.camera.yaw = 90.0f;
+    scene.camera.pitch = -20.0f;
+    scene.camera.near = 0.5f;
+    scene.camera.far = 50.0f;
+    scene.lights = {common::Light{
+        .type = common::Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}, .intensity = 8.0f}};
+    scene.models.resize(1);  // Sponza; the point light's marker goes with the light
+}
+//< book-scene
+
 //> chapter-state
 // Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
 // reverse), and what the frames change.
@@ -285,6 +303,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
 void setUp(Chapter& c, const common::Options& options) {
     common::ModelCache models;
     c.scene = common::sceneFromOptions(options, models);
+    if (!options.bookScene.empty()) useBookChapter16Scene(c.scene);
 
     c.target = common::openTarget(options, "chapter-16: cascade shadows");
     c.instance =

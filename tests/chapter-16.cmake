@@ -203,3 +203,15 @@ add_test(NAME chapter-16.cascade-choice-by-distance COMMAND image_compare ${TEST
     --pixel 100 100 99 187 99 --pixel 100 90 99 187 99 --pixel 100 84 99 99 187 --pixel 100 80 99 99 187
     --pixel-tolerance 3)
 set_tests_properties(chapter-16.cascade-choice-by-distance PROPERTIES FIXTURES_REQUIRED ch16-rows)
+
+# --book-scene on the stand-in clone (tools/gltf_cases.cpp, book/): the book's chapter-16 set-up --
+# its camera at (-5, 5, 0) looking along +x, the sun straight down at intensity 8, no point light
+# and no marker cube (5 draws where chapter-15 has 6).
+chapter_test(chapter-16.book-scene WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 640 --height 360 --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book
+            --screenshot ${TEST_OUT}/chapter-16-book-scene.png
+    EXPECT_STDOUT "chapter-16: 5 draws, 640 triangles.*1 lights" QUIET_STDERR)
+set_tests_properties(chapter-16.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-book)
+add_test(NAME chapter-16.book-scene-image COMMAND image_compare ${TEST_OUT}/chapter-16-book-scene.png
+    --size 640 360 --golden ${GOLDEN}/chapter-16-book-scene.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-16.book-scene-image PROPERTIES FIXTURES_REQUIRED ch16-book)
