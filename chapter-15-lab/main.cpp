@@ -43,6 +43,7 @@
 #include "light_pass.hpp"
 #include "output_dump.hpp"
 #include "scene_pass.hpp"
+#include "shadow_study.hpp"
 
 namespace {
 
@@ -50,7 +51,8 @@ const common::ChapterInfo kChapter{
     "chapter-15-lab",
     "chapter-15's renderer with what goes beyond the book: G-buffer layouts, the compute light pass, "
     "light culling, forward shading",
-    {"final", "position", "albedo", "normal", "pbr", "depth"},  // the order of shade_pixel.glsl's `view`
+    // The order of shade_pixel.glsl's `view`; "visibility" (--shadows): the sun's visibility alone.
+    {"final", "position", "albedo", "normal", "pbr", "depth", "visibility"},
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},
      {"check-output", "read the light output back as floats; fail on NaN, infinity or a negative value"},
      common::kGuiSwitch,
@@ -83,7 +85,21 @@ const common::ChapterInfo kChapter{
       "the post and GUI passes, which alone wait for the image"},
      common::kGuiClickChoice,
      common::kGuiScaleChoice,
-     common::kPipelinesChoice},
+     common::kPipelinesChoice,
+     // The shadow study (shadow_study.hpp): chapter-16's cascade shadows, drawn and filtered in
+     // other ways.
+     {"shadows",
+      {"none", "vsm", "pcf2", "pcf3", "pcf5"},
+      "the sun's shadow from chapter-16's cascades, for the shadow study: none (chapter-15's light); "
+      "the book's variance map; the depth compared by the sampler, filtered over 2x2, 3x3 or 5x5 texels"},
+     {"shadow-layers",
+      {"geometry", "multiview", "passes"},
+      "how --shadows draws the cascades: one pass with the book's geometry shader; one pass with "
+      "multiview (a view per cascade); one pass per cascade"},
+     {"cascades", {"3", "1", "2", "4"}, "with --shadows: cascades of the sun's shadow map"},
+     {"shadow-map-size",
+      {"2048", "512", "1024", "4096"},
+      "with --shadows: texels along each side of a cascade's map"}},
 };
 
 // chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
@@ -155,13 +171,13 @@ struct RendererChoice {
 
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
                     RendererChoice& renderer, LightControls& controls, common::Scene& scene,
-                    common::GpuScene& gpuScene, bool deferred) {
+                    common::GpuScene& gpuScene, bool deferred, bool switchable) {
     common::guiTimingsWindow(gui, run, deferred ? kChapter.views : std::vector<std::string>{"final"}, view,
                              {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
                               "1/2, 3/4  move the point light up/down, along z"});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
-    if (deferred) {  // --shading forward has neither
+    if (deferred && switchable) {  // --shading forward has neither; the shadow study, one
         common::guiCombo("G-buffer", labLayoutNames(), &renderer.layout);
         common::guiCombo("light pass", {"fragment", "compute"}, &renderer.lightPass);
     }
@@ -233,15 +249,22 @@ void run(const common::Options& options) {
     LightOptions lightOptions = readLightOptions(options, scene);
     bool forward = readShading(options) == Shading::Forward;
     bool tiled = lightOptions.culling == LightCulling::Tiled;
+    ShadowStudyOptions study = readShadowStudy(options);  // --shadows
 
     common::Target target = common::openTarget(options, "chapter-15-lab");
     common::Instance instance = common::createInstance("chapter-15-lab", options.validation,
                                                        common::targetInstanceExtensions(target));
     common::createTargetSurface(target, instance);
-    // chapter-15's features.
+    // chapter-15's features; the shadow study's: chapter-16's geometry shader and depth clamping,
+    // or multiview.
     common::Device device =
         common::createDevice(instance, target.surface, options.device,
-                             {.dynamicRendering = true, .synchronization2 = true, .scalarBlockLayout = true});
+                             {.dynamicRendering = true,
+                              .synchronization2 = true,
+                              .scalarBlockLayout = true,
+                              .geometryShader = study.enabled && study.layers == ShadowLayers::GeometryShader,
+                              .depthClampWhereAvailable = study.enabled,
+                              .multiview = study.enabled && study.layers == ShadowLayers::Multiview});
     common::createTargetImages(target, device);
     std::vector<common::FrameSync> frames = common::createFrameSync(device, options.framesInFlight);
     // --acquire late: a second command buffer per frame (from the frame's pool) for the passes that
@@ -275,6 +298,7 @@ void run(const common::Options& options) {
     LightCullingPass culling;  // --light-culling tiled
     LightPasses light;
     ForwardPass forwardPass;  // --shading forward
+    ShadowStudy shadowStudy;  // --shadows
     bool generic = common::genericPipelines(options);
     double passesMs = 0.0;  // how long the passes took to make at start-up
     auto createPasses = [&] {
@@ -290,6 +314,16 @@ void run(const common::Options& options) {
         scenePass =
             createScenePass(device, pipelineCache.handle, target.extent, gpuScene, options.framesInFlight,
                             layout->layout, labSceneShaders(*layout), generic);
+        if (study.enabled) {  // chapter-16's shadows, and the light pass that reads them
+            shadowStudy =
+                createShadowStudy(device, pipelineCache.handle, study, scenePass, options.framesInFlight);
+            light.pass = createLightPass(device, pipelineCache.handle, target.extent, scenePass.gbuffer,
+                                         options.framesInFlight, uint32_t(scene.lights.size()),
+                                         {.fragmentShader = shadowLightShader(study, shadowStudy.hardwarePcf),
+                                          .moreSets = {shadowStudy.readLayout},
+                                          .kinds = generic ? LightKinds{} : lightKinds(shaderLights(scene))});
+            return;
+        }
         if (tiled)
             culling =
                 createLightCulling(device, target.extent, options.framesInFlight, boundedLightCount(scene),
@@ -326,6 +360,7 @@ void run(const common::Options& options) {
 
     std::vector<std::string> passes{"scene", "light", "post"};
     if (tiled) passes.insert(passes.begin() + 1, "cull");
+    if (study.enabled) passes.insert(passes.begin(), "shadow");
     if (forward) passes = {"forward", "post"};
     if (gui.enabled) passes.push_back("gui");
     common::RunControl run = common::createRunControl(options, device, passes);
@@ -346,6 +381,7 @@ void run(const common::Options& options) {
 
     auto destroyPasses = [&] {
         if (forward) destroyForwardPass(device, forwardPass);
+        if (study.enabled) destroyShadowStudy(device, shadowStudy);
         destroyLightPasses(device, light);
         if (tiled) destroyLightCulling(device, culling);
         destroyScenePass(device, scenePass);
@@ -378,6 +414,7 @@ void run(const common::Options& options) {
         common::PipelineSwap swap;
         try {
             remakeScenePipelines(device, cache, scenePass.pipelines, reload, swap);
+            if (study.enabled) remakeShadowStudyPipelines(device, cache, shadowStudy, reload, swap);
             if (forward) remakeScenePipelines(device, cache, forwardPass.pipelines, reload, swap);
             if (tiled) remakeLightCullingPipelines(device, cache, culling, reload, swap);
             common::remakeFullscreenPipeline(device, cache, light.pass.pipeline, reload, swap);
@@ -407,7 +444,7 @@ void run(const common::Options& options) {
 
         ImDrawData* overlay = common::drawGui(gui, target, frame, [&] {
             overlayWidgets(gui, run, &lightView.view, &fxaa, renderer, lightControls, scene, gpuScene,
-                           !forward);
+                           !forward, !study.enabled);
         });
         if (renderer.layout != active.layout || renderer.lightPass != active.lightPass) switchRenderer();
         bool keys = !common::guiWantsKeyboard(gui), mouse = !common::guiWantsMouse(gui);
@@ -455,6 +492,25 @@ void run(const common::Options& options) {
         if (tiled)
             updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near,
                                unbounded);
+        if (study.enabled) {  // chapter-16's cascades for this frame's camera and sun (none without a sun)
+            std::vector<Cascade> cascades;
+            if (lightControls.sun >= 0) {
+                CascadeCamera cascadeCamera{
+                    .view = view,
+                    .fovY = glm::radians(scene.camera.fov),
+                    .aspect = float(target.extent.width) / float(target.extent.height),
+                    .near = scene.camera.near,
+                    .far = fittedFar(view, gpuScene.boundsMin, gpuScene.boundsMax, scene.camera.near,
+                                     scene.camera.far)};
+                CascadeSettings settings = study.cascades;
+                settings.reachCasters = !device.depthClamp;
+                settings.castersMin = gpuScene.boundsMin;
+                settings.castersMax = gpuScene.boundsMax;
+                cascades = computeCascades(cascadeCamera, scene.lights[size_t(lightControls.sun)].direction,
+                                           settings);
+            }
+            updateShadowStudy(shadowStudy, slot, cascades, view);
+        }
 
         VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
@@ -468,6 +524,11 @@ void run(const common::Options& options) {
                               camera.position);
             common::endPass(run, sync.commandBuffer, slot, pass++);
         } else {
+            if (study.enabled) {  // --shadows: chapter-16's order, the shadow pass first
+                common::beginPass(run, sync.commandBuffer, pass);
+                recordShadowStudy(sync.commandBuffer, shadowStudy, scenePass, gpuScene, slot);
+                common::endPass(run, sync.commandBuffer, slot, pass++);
+            }
             common::beginPass(run, sync.commandBuffer, pass);
             recordScenePass(sync.commandBuffer, scenePass, gpuScene, slot, camera.position);
             common::endPass(run, sync.commandBuffer, slot, pass++);
@@ -483,6 +544,9 @@ void run(const common::Options& options) {
                                        tileLists);
             else if (tiled)
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView, {&tileLists, 1});
+            else if (study.enabled)
+                recordLightPass(sync.commandBuffer, light.pass, slot, lightView,
+                                {&shadowStudy.readSets[slot], 1});
             else
                 recordLightPass(sync.commandBuffer, light.pass, slot, lightView);
             common::endPass(run, sync.commandBuffer, slot, pass++);
@@ -558,6 +622,12 @@ void run(const common::Options& options) {
     // Forward shading has no light pass: forward.frag loops over the lights itself.
     info.push_back(
         {"light_pipeline", forward ? "none (forward shading)" : describeLightKinds(light.pass.kinds)});
+    if (study.enabled) {
+        const char* layers[] = {"geometry shader", "multiview", "a pass per cascade"};
+        info.push_back({"shadow_study", shadowFilterName(study.filter) + ", " + layers[int(study.layers)] +
+                                            ", " + std::to_string(study.cascades.count) + " cascades of " +
+                                            std::to_string(study.cascades.mapSize)});
+    }
     common::reportRun(run, device, info);
     if (gui.enabled)
         std::printf("chapter-15-lab: GUI buffers grew %u times, to %zu vertices and %zu indices\n",

@@ -13,8 +13,6 @@
 #include "common/texture.hpp"
 #include "gpu_types.hpp"
 
-namespace {
-
 //> layered-image
 // A 2D image with one layer per cascade (arrayLayers) and a view of type 2D_ARRAY over all of them:
 // the shadow pass renders into every layer at once, the light pass samples it as sampler2DArray.
@@ -66,6 +64,8 @@ void destroyLayeredImage(const common::Device& device, LayeredImage& image) {
     vkFreeMemory(device.handle, image.memory, nullptr);
     image = {};
 }
+
+namespace {
 
 //> shadow-pipeline
 // The scene's triangles through a geometry shader into every cascade's layer. Written out here,

@@ -41,6 +41,11 @@ struct LayeredImage {
     VkImageView view = VK_NULL_HANDLE;
 };
 
+// A size x size image of `layers` layers for `usage`, and a 2D_ARRAY view of `aspect` over them.
+LayeredImage createLayeredImage(const common::Device& device, uint32_t size, uint32_t layers, VkFormat format,
+                                VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* name);
+void destroyLayeredImage(const common::Device& device, LayeredImage& image);
+
 struct ShadowPass {
     CascadeSettings settings;
     LayeredImage moments;  // R32G32_SFLOAT: depth, depth^2

@@ -66,6 +66,8 @@ std::string requirement(const DeviceFeatures& wanted) {
 // Vulkan 1.3 has dynamic rendering and synchronization2 in VkPhysicalDeviceVulkan13Features; a 1.2
 // device has them in its extensions' own structures; scalar block layout is core 1.2.
 struct FeatureChain {
+    VkPhysicalDeviceMultiviewFeatures multiview{.sType =
+                                                    VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
     VkPhysicalDeviceVulkan12Features v12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceVulkan13Features v13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamicRendering{
@@ -80,6 +82,7 @@ struct FeatureChain {
             head = &structure;
         };
         if (api >= VK_API_VERSION_1_2 && wanted.scalarBlockLayout) link(v12);
+        if (wanted.multiview) link(multiview);
         if (api >= VK_API_VERSION_1_3 && needsVulkan13Commands(wanted)) link(v13);
         if (api < VK_API_VERSION_1_3 && wanted.dynamicRendering) link(dynamicRendering);
         if (api < VK_API_VERSION_1_3 && wanted.synchronization2) link(synchronization2);
@@ -128,6 +131,7 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
         return "it lacks the scalarBlockLayout feature";
     if (wanted.geometryShader && !features.features.geometryShader)
         return "it lacks the geometryShader feature";
+    if (wanted.multiview && !chain.multiview.multiview) return "it lacks the multiview feature";
     return {};
 }
 
@@ -277,6 +281,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     // Exactly the features asked for, no more: what a chapter uses is what it enables.
     FeatureChain enabled(device.apiVersion, features);
     enabled.v12.scalarBlockLayout = features.scalarBlockLayout;
+    enabled.multiview.multiview = features.multiview;
     enabled.v13.dynamicRendering = enabled.dynamicRendering.dynamicRendering = features.dynamicRendering;
     enabled.v13.synchronization2 = enabled.synchronization2.synchronization2 = features.synchronization2;
     maintenance1 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT,

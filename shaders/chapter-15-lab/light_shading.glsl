@@ -4,7 +4,9 @@
 // and light.comp (a compute dispatch), and by the tile-bounds pass of --light-culling tiled.
 //   COMPACT_GBUFFER (--gbuffer compact): no position -- it is reconstructed from the (reversed-Z)
 //     depth; albedo as sqrt(albedo) in 10 bits, the normal octahedral, roughness and metallic in 16;
-//   TILED_LIGHTS (--light-culling tiled): the lights from the pixel's tile list (light_tiles.glsl).
+//   TILED_LIGHTS (--light-culling tiled): the lights from the pixel's tile list (light_tiles.glsl);
+//   SUN_SHADOWS (--shadows): the sun's light darkened by chapter-16's cascade shadows, filtered as
+//     the study asks (shadow_filters.glsl).
 #include "../chapter-15/light_inputs.glsl"
 
 //> compact-read
@@ -34,7 +36,11 @@ SurfaceSample readGBuffer(vec2 uv) {
 #endif
 //< compact-read
 
-#ifdef TILED_LIGHTS
+#if defined(SUN_SHADOWS)
+// --shadows (the shadow study): chapter-16's loop, the sun's light times its visibility.
+#include "shadow_filters.glsl"
+#include "../chapter-16/sun_light_loop.glsl"
+#elif defined(TILED_LIGHTS)
 #include "light_tiles.glsl"
 #else
 #include "../chapter-15/light_loop.glsl"  // chapter-15's: every light

@@ -7,28 +7,7 @@
 #include "../chapter-15/light_inputs.glsl"
 #include "../chapter-15/gbuffer_read.glsl"
 #include "shadows.glsl"
-
-//> light-loop
-// chapter-15's loops over the scene's lights of each kind (the constants set by light_pass.cpp),
-// the first directional light -- the one the shadow map is made from -- times its visibility.
-layout(constant_id = 3) const int DIRECTIONAL_LIGHTS = -1;
-layout(constant_id = 4) const int POINT_LIGHTS = -1;
-
-float gVisibility = 1.0;  // the sun's, at the pixel being shaded (shadePixel's caller sets it)
-
-vec3 shadeLights(ivec2 pixel, SurfaceSample s, vec3 N, vec3 V) {
-    vec3 color = vec3(0.0);
-    if (DIRECTIONAL_LIGHTS < 0) {
-        for (uint i = 0u; i < scene.lightCount; ++i)
-            color += (i == 0u && lights[0].directional != 0u ? gVisibility : 1.0) * shadeLight(i, s, N, V);
-    } else {
-        for (int i = 0; i < DIRECTIONAL_LIGHTS; ++i)
-            color += (i == 0 ? gVisibility : 1.0) * shadeLightOfKind(uint(i), true, s, N, V);
-        for (int i = 0; i < POINT_LIGHTS; ++i) color += shadeLightOfKind(uint(DIRECTIONAL_LIGHTS + i), false, s, N, V);
-    }
-    return color;
-}
-//< light-loop
+#include "sun_light_loop.glsl"  // the lights, the sun times its visibility
 
 #include "../chapter-15/shade_pixel.glsl"
 

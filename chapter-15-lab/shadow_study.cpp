@@ -1,0 +1,420 @@
+// chapter-15-lab: the shadow study (shadow_study.hpp).
+#include "shadow_study.hpp"
+
+#include <array>
+#include <cstring>
+#include <optional>
+
+#include "common/barriers.hpp"
+#include "common/check.hpp"
+#include "common/debug_names.hpp"
+#include "common/descriptors.hpp"
+#include "common/texture.hpp"
+#include "gpu_types.hpp"
+
+ShadowStudyOptions readShadowStudy(const common::Options& options) {
+    auto chosen = [&](const char* name) {
+        auto found = options.choices.find(name);
+        return found == options.choices.end() ? 0u : found->second;
+    };
+    ShadowStudyOptions study;
+    uint32_t shadows = chosen("shadows");
+    study.enabled = shadows != 0;
+    if (!study.enabled) {
+        for (const char* name : {"shadow-layers", "cascades", "shadow-map-size"})
+            if (options.choices.count(name))
+                throw common::InputError(std::string("--") + name + " needs --shadows");
+        if (options.view == 6) throw common::InputError("--view visibility needs --shadows");
+        return study;
+    }
+    // chapter-16's light pass: the full-screen triangle over the whole G-buffer, deferred.
+    if (chosen("light-pass") != 0)
+        throw common::InputError("--shadows shades with the fragment light pass, not --light-pass compute");
+    if (chosen("light-culling") != 0)
+        throw common::InputError("--shadows loops over every light: no --light-culling tiled");
+    if (chosen("shading") != 0)
+        throw common::InputError("--shadows reads the G-buffer: no --shading forward");
+    study.filter = ShadowFilter(shadows - 1);
+    study.layers = ShadowLayers(chosen("shadow-layers"));
+    const uint32_t kCounts[] = {3, 1, 2, 4}, kSizes[] = {2048, 512, 1024, 4096};
+    study.cascades.count = kCounts[chosen("cascades")];
+    study.cascades.mapSize = kSizes[chosen("shadow-map-size")];
+    return study;
+}
+
+std::string shadowFilterName(ShadowFilter filter) {
+    const char* names[] = {"vsm", "pcf2", "pcf3", "pcf5"};
+    return names[int(filter)];
+}
+
+bool hardwarePcf(const common::Device& device, VkFormat depthFormat) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device.physical, depthFormat, &properties);
+    return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+}
+
+std::string shadowLightShader(const ShadowStudyOptions& options, bool hardware) {
+    std::string name = "chapter-15-lab/light-shadows-" + shadowFilterName(options.filter);
+    if (options.filter != ShadowFilter::Variance && !hardware) name += "-gather";
+    return name + ".frag";
+}
+
+namespace {
+
+bool variance(const ShadowStudy& study) {
+    return study.options.filter == ShadowFilter::Variance;
+}
+
+// The pipeline for the study's form: chapter-16's vertex and geometry shaders (one pass, gl_Layer),
+// or the lab's vertex shader that takes the cascade from gl_ViewIndex (multiview) or a push
+// constant (a pass per cascade); chapter-16's fragment shader for the moments, or the lab's that
+// writes depth alone.
+VkPipeline makeStudyPipeline(const common::Device& device, VkPipelineCache cache, const ShadowStudy& study,
+                             bool alphaTest) {
+    ShadowLayers layers = study.options.layers;
+    const char* vertexName = layers == ShadowLayers::GeometryShader ? "chapter-15-lab/shadow.vert"
+                             : layers == ShadowLayers::Multiview
+                                 ? "chapter-15-lab/shadow_cascade-multiview.vert"
+                                 : "chapter-15-lab/shadow_cascade.vert";
+    common::ShaderModule vertex(device, vertexName);
+    common::ShaderModule fragment(
+        device, variance(study) ? "chapter-15-lab/shadow.frag" : "chapter-15-lab/shadow_depth.frag");
+    VkBool32 alphaTestConstant = alphaTest;
+    VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+    VkSpecializationInfo specialization{1, &entry, sizeof(VkBool32), &alphaTestConstant};
+    std::vector<VkPipelineShaderStageCreateInfo> stages{
+        common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex)};
+    std::optional<common::ShaderModule> geometry;
+    if (layers == ShadowLayers::GeometryShader) {
+        geometry.emplace(device, "chapter-15-lab/shadow.geom");
+        stages.push_back(common::shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, *geometry));
+    }
+    stages.push_back(common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization));
+
+    common::SceneVertexInput vertexInput;
+    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
+    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
+    VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
+                                               .viewportCount = 1,
+                                               .scissorCount = 1};
+    VkPipelineRasterizationStateCreateInfo rasterization{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+        .depthClampEnable = device.depthClamp ? VK_TRUE : VK_FALSE,
+        .polygonMode = VK_POLYGON_MODE_FILL,
+        .cullMode = VK_CULL_MODE_NONE,
+        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+        .lineWidth = 1.0f};
+    VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+    VkPipelineDepthStencilStateCreateInfo depth{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+        .depthTestEnable = VK_TRUE,
+        .depthWriteEnable = VK_TRUE,
+        .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
+    VkPipelineColorBlendAttachmentState blend{.colorWriteMask =
+                                                  VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT};
+    VkPipelineColorBlendStateCreateInfo colorBlend{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+        .attachmentCount = variance(study) ? 1u : 0u,
+        .pAttachments = &blend};
+    std::array<VkDynamicState, 2> dynamic{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamicState{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+        .dynamicStateCount = uint32_t(dynamic.size()),
+        .pDynamicStates = dynamic.data()};
+    VkPipelineRenderingCreateInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+        .viewMask = layers == ShadowLayers::Multiview ? (1u << study.options.cascades.count) - 1u : 0u,
+        .colorAttachmentCount = variance(study) ? 1u : 0u,
+        .pColorAttachmentFormats = &kMomentsFormat,
+        .depthAttachmentFormat = study.depthFormat};
+    VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                      .pNext = &rendering,
+                                      .stageCount = uint32_t(stages.size()),
+                                      .pStages = stages.data(),
+                                      .pVertexInputState = &vertexInput.state,
+                                      .pInputAssemblyState = &inputAssembly,
+                                      .pViewportState = &viewport,
+                                      .pRasterizationState = &rasterization,
+                                      .pMultisampleState = &multisample,
+                                      .pDepthStencilState = &depth,
+                                      .pColorBlendState = &colorBlend,
+                                      .pDynamicState = &dynamicState,
+                                      .layout = study.pipelineLayout};
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
+    common::nameObject(device.handle, pipeline, alphaTest ? "shadow study: cut-out" : "shadow study: opaque");
+    return pipeline;
+}
+
+VkImageView layerView(const common::Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect,
+                      uint32_t layer) {
+    VkImageViewCreateInfo viewInfo{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                                   .image = image,
+                                   .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+                                   .format = format,
+                                   .subresourceRange = {aspect, 0, 1, layer, 1}};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(device.handle, &viewInfo, nullptr, &view));
+    return view;
+}
+
+}  // namespace
+
+ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cache,
+                              const ShadowStudyOptions& options, const ScenePass& scenePass,
+                              uint32_t framesInFlight) {
+    ShadowStudy study;
+    study.options = options;
+    study.depthFormat = scenePass.formats.depth;
+    const CascadeSettings& settings = options.cascades;
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device.physical, kMomentsFormat, &properties);
+    VkFormatFeatureFlags needed =
+        VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    if (variance(study) && (properties.optimalTilingFeatures & needed) != needed)
+        throw common::Failure(
+            "this device cannot render to and sample R32G32_SFLOAT, the variance map's format");
+    vkGetPhysicalDeviceFormatProperties(device.physical, study.depthFormat, &properties);
+    if (!variance(study) && (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0)
+        throw common::Failure("this device cannot sample its depth format: no depth comparison");
+    study.hardwarePcf = hardwarePcf(device, study.depthFormat);
+
+    // The variance map renders the moments; PCF reads the depth. The other binding gets a 1x1
+    // stand-in (every binding must be written).
+    uint32_t momentsSize = variance(study) ? settings.mapSize : 1u;
+    uint32_t momentsLayers = variance(study) ? settings.count : 1u;
+    study.moments = createLayeredImage(device, momentsSize, momentsLayers, kMomentsFormat,
+                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                       VK_IMAGE_ASPECT_COLOR_BIT, "shadow study: moments");
+    study.depth = createLayeredImage(device, settings.mapSize, settings.count, study.depthFormat,
+                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     VK_IMAGE_ASPECT_DEPTH_BIT, "shadow study: depth");
+    if (options.layers == ShadowLayers::PassPerCascade)
+        for (uint32_t layer = 0; layer < settings.count; ++layer) {
+            study.depthLayers.push_back(
+                layerView(device, study.depth.handle, study.depthFormat, VK_IMAGE_ASPECT_DEPTH_BIT, layer));
+            if (variance(study))
+                study.momentLayers.push_back(layerView(device, study.moments.handle, kMomentsFormat,
+                                                       VK_IMAGE_ASPECT_COLOR_BIT, layer));
+        }
+
+    study.cascadesLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT)},
+        "shadow study: cascades");
+    study.readLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+        "light: shadow study");
+    study.descriptorPool =
+        common::createDescriptorPool(device, 2 * framesInFlight,
+                                     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * framesInFlight},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * framesInFlight}},
+                                     "shadow study");
+    study.momentsSampler =
+        common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
+    // PCF in the sampler: each lookup compares the reference depth with the 2x2 texels around it
+    // and filters the four results bilinearly (1 where the point is no deeper than the map).
+    // Without linear filtering of depth, NEAREST: the shader gathers the four comparisons.
+    VkFilter filter = study.hardwarePcf ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    VkSamplerCreateInfo compareInfo{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+                                    .magFilter = filter,
+                                    .minFilter = filter,
+                                    .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                    .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                    .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                    .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                    .compareEnable = VK_TRUE,
+                                    .compareOp = VK_COMPARE_OP_LESS_OR_EQUAL,
+                                    .maxLod = 0.0f};
+    VK_CHECK(vkCreateSampler(device.handle, &compareInfo, nullptr, &study.depthSampler));
+    common::nameObject(device.handle, study.depthSampler, "shadow study: depth comparison");
+    VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        study.cascades.push_back(common::createBuffer(device, sizeof(CascadeUniform),
+                                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, hostVisible,
+                                                      "shadow study: cascades"));
+        VkBuffer buffer = study.cascades.back().handle;
+        study.cascadesSets.push_back(common::allocateDescriptorSet(
+            device, study.descriptorPool, study.cascadesLayout, "shadow study: cascades"));
+        common::writeBufferDescriptor(device, study.cascadesSets.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      buffer, sizeof(CascadeUniform));
+        study.readSets.push_back(common::allocateDescriptorSet(device, study.descriptorPool, study.readLayout,
+                                                               "light: shadow study"));
+        common::writeImageDescriptor(device, study.readSets.back(), 0, study.momentsSampler,
+                                     study.moments.view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        common::writeBufferDescriptor(device, study.readSets.back(), 1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                      buffer, sizeof(CascadeUniform));
+        common::writeImageDescriptor(device, study.readSets.back(), 2, study.depthSampler, study.depth.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    }
+
+    // chapter-16's sets and push constants (the model matrix for the vertex stage, the material
+    // for the fragment stage), and for a pass per cascade the cascade after them (vertex stage).
+    std::array<VkDescriptorSetLayout, 3> layouts{study.cascadesLayout, scenePass.materialsLayout,
+                                                 scenePass.texturesLayout};
+    std::array<VkPushConstantRange, 2> pushConstants{{
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants) + 2 * sizeof(uint32_t)},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
+    }};
+    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                          .setLayoutCount = uint32_t(layouts.size()),
+                                          .pSetLayouts = layouts.data(),
+                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
+                                          .pPushConstantRanges = pushConstants.data()};
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &study.pipelineLayout));
+    common::nameObject(device.handle, study.pipelineLayout, "shadow study");
+    study.opaque = makeStudyPipeline(device, cache, study, false);
+    study.cutout = makeStudyPipeline(device, cache, study, true);
+    return study;
+}
+
+void updateShadowStudy(ShadowStudy& study, uint32_t frame, const std::vector<Cascade>& cascades,
+                       const glm::mat4& cameraView) {
+    CascadeUniform uniform{};
+    for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
+        uniform.viewProjection[i] = cascades[i].viewProjection;
+        uniform.splitFar[int(i)] = cascades[i].splitFar;
+        uniform.texelSize[int(i)] = cascades[i].texel;
+    }
+    uniform.cameraView = cameraView;
+    uniform.count = int32_t(cascades.size());
+    uniform.redraw = (1u << cascades.size()) - 1u;  // every cascade, every frame
+    std::memcpy(study.cascades[frame].mapped, &uniform, sizeof(uniform));
+}
+
+//> record-study
+void recordShadowStudy(VkCommandBuffer cmd, const ShadowStudy& study, const ScenePass& scenePass,
+                       const common::GpuScene& scene, uint32_t frame) {
+    // Both images to ATTACHMENT_OPTIMAL once the previous frame's light pass has read them, their
+    // contents dropped (cleared below).
+    VkPipelineStageFlags2 depthStages =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    std::vector<VkImageMemoryBarrier2> init{common::imageBarrier(
+        study.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | depthStages,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthStages,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
+    if (variance(study))
+        init.push_back(common::imageBarrier(
+            study.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
+    else  // PCF: the moments' 1x1 stand-in in the layout its descriptor names (nothing reads it)
+        init.push_back(common::imageBarrier(study.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT,
+                                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+                                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    common::pipelineBarrier(cmd, init.data(), uint32_t(init.size()));
+
+    uint32_t size = study.options.cascades.mapSize, count = study.options.cascades.count;
+    bool perCascade = study.options.layers == ShadowLayers::PassPerCascade;
+    // One rendering for every layer (gl_Layer, or one view per cascade), or one per layer.
+    for (uint32_t pass = 0; pass < (perCascade ? count : 1u); ++pass) {
+        VkRenderingAttachmentInfo color{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+            .imageView = perCascade && variance(study) ? study.momentLayers[pass] : study.moments.view,
+            .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .clearValue = {.color = {{1.0f, 1.0f, 0.0f, 0.0f}}}};
+        VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                        .imageView = perCascade ? study.depthLayers[pass] : study.depth.view,
+                                        .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+                                        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                        .clearValue = {.depthStencil = {1.0f, 0}}};
+        bool multiview = study.options.layers == ShadowLayers::Multiview;
+        VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, {size, size}},
+                                  .layerCount = multiview || perCascade ? 1u : count,
+                                  .viewMask = multiview ? (1u << count) - 1u : 0u,
+                                  .colorAttachmentCount = variance(study) ? 1u : 0u,
+                                  .pColorAttachments = &color,
+                                  .pDepthAttachment = &depth};
+        common::vk13.CmdBeginRendering(cmd, &rendering);
+        VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        VkRect2D scissor{{0, 0}, {size, size}};
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        std::array<VkDescriptorSet, 2> shared{study.cascadesSets[frame], scenePass.materialsSet};
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.pipelineLayout, 0, 2,
+                                shared.data(), 0, nullptr);
+        VkPipeline bound = VK_NULL_HANDLE;
+        for (const common::Draw& draw : scene.draws) {
+            VkPipeline pipeline = scene.materials[draw.material].alphaTested ? study.cutout : study.opaque;
+            if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
+            const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+            VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+            vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.pipelineLayout, 2, 1,
+                                    &scenePass.materialTextureSets[draw.material], 0, nullptr);
+            DrawConstants constants{draw.model, {}};
+            vkCmdPushConstants(cmd, study.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
+                               &constants);
+            // The material (both stages' ranges hold its bytes) and the cascade of this pass.
+            std::array<uint32_t, 2> materialAndCascade{draw.material, pass};
+            vkCmdPushConstants(cmd, study.pipelineLayout,
+                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                               sizeof(DrawConstants), sizeof(uint32_t), &materialAndCascade[0]);
+            vkCmdPushConstants(cmd, study.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT,
+                               sizeof(DrawConstants) + sizeof(uint32_t), sizeof(uint32_t),
+                               &materialAndCascade[1]);
+            vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+        }
+        common::vk13.CmdEndRendering(cmd);
+    }
+
+    // Both to READ_ONLY_OPTIMAL for the light pass's fragment shader.
+    std::vector<VkImageMemoryBarrier2> finish{common::imageBarrier(
+        study.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT)};
+    if (variance(study))
+        finish.push_back(common::imageBarrier(
+            study.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT));
+    common::pipelineBarrier(cmd, finish.data(), uint32_t(finish.size()));
+}
+//< record-study
+
+void remakeShadowStudyPipelines(const common::Device& device, VkPipelineCache cache, ShadowStudy& study,
+                                const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (!reload.changed({"chapter-15-lab/shadow.vert", "chapter-15-lab/shadow.geom",
+                         "chapter-15-lab/shadow.frag", "chapter-15-lab/shadow_cascade.vert",
+                         "chapter-15-lab/shadow_cascade-multiview.vert", "chapter-15-lab/shadow_depth.frag"}))
+        return;
+    common::replacePipeline(swap, study.opaque,
+                            [&] { return makeStudyPipeline(device, cache, study, false); });
+    common::replacePipeline(swap, study.cutout,
+                            [&] { return makeStudyPipeline(device, cache, study, true); });
+}
+
+void destroyShadowStudy(const common::Device& device, ShadowStudy& study) {
+    vkDestroyPipeline(device.handle, study.cutout, nullptr);
+    vkDestroyPipeline(device.handle, study.opaque, nullptr);
+    vkDestroyPipelineLayout(device.handle, study.pipelineLayout, nullptr);
+    vkDestroySampler(device.handle, study.depthSampler, nullptr);
+    vkDestroySampler(device.handle, study.momentsSampler, nullptr);
+    vkDestroyDescriptorPool(device.handle, study.descriptorPool, nullptr);
+    for (common::Buffer& buffer : study.cascades) common::destroyBuffer(device, buffer);
+    vkDestroyDescriptorSetLayout(device.handle, study.readLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, study.cascadesLayout, nullptr);
+    for (VkImageView view : study.depthLayers) vkDestroyImageView(device.handle, view, nullptr);
+    for (VkImageView view : study.momentLayers) vkDestroyImageView(device.handle, view, nullptr);
+    destroyLayeredImage(device, study.depth);
+    destroyLayeredImage(device, study.moments);
+    study = {};
+}
