@@ -28,6 +28,7 @@ packages=(
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
     clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/fuzz/), symbolized reports
     gdb python3                                 # tests: a run killed mid-save (tests/cache_crash.sh), docs checks
+    libembree-dev                               # tests: the shadow study's reference (rays through a BVH)
     libgl1 libegl1 libopengl0                   # scripts/gpu_package.sh: GLVND, which NVIDIA's driver loads
 )
 

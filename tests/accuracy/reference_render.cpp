@@ -32,38 +32,14 @@
 
 #include "common/check.hpp"
 #include "common/scene.hpp"
+#include "tests/accuracy/pfm.hpp"
 #include "tests/pbr_reference.hpp"
 
 namespace {
 
+using accuracy::Pfm;
+using accuracy::readPfm;
 using glm::dvec3;
-
-struct Pfm {
-    int width = 0, height = 0, channels = 0;
-    std::vector<float> values;  // top row first, `channels` per pixel
-    dvec3 at(size_t pixel) const {
-        const float* v = &values[pixel * size_t(channels)];
-        return channels == 3 ? dvec3(v[0], v[1], v[2]) : dvec3(v[0]);
-    }
-};
-
-Pfm readPfm(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string magic;
-    double scale = 0;
-    Pfm pfm;
-    in >> magic >> pfm.width >> pfm.height >> scale;
-    in.get();
-    if (!in || (magic != "PF" && magic != "Pf") || scale >= 0 || pfm.width <= 0 || pfm.height <= 0)
-        throw common::InputError(path + ": not a little-endian PFM file");
-    pfm.channels = magic == "PF" ? 3 : 1;
-    size_t rowFloats = size_t(pfm.width) * size_t(pfm.channels);
-    pfm.values.resize(rowFloats * size_t(pfm.height));
-    for (int y = pfm.height - 1; y >= 0; --y)  // stored bottom row first
-        in.read(reinterpret_cast<char*>(&pfm.values[size_t(y) * rowFloats]), std::streamsize(rowFloats * 4));
-    if (!in) throw common::InputError(path + ": truncated");
-    return pfm;
-}
 
 double display(double linear) {
     double c = std::clamp(linear, 0.0, 1.0);
