@@ -627,6 +627,9 @@ void run(const common::Options& options) {
         info.push_back({"shadow_study", shadowFilterName(study.filter) + ", " + layers[int(study.layers)] +
                                             ", " + std::to_string(study.cascades.count) + " cascades of " +
                                             std::to_string(study.cascades.mapSize)});
+        if (study.filter != ShadowFilter::Variance)
+            info.push_back({"pcf_taps", shadowStudy.hardwarePcf ? "by the sampler (linear depth filtering)"
+                                                                 : "gathered (no linear depth filtering)"});
     }
     common::reportRun(run, device, info);
     if (gui.enabled)

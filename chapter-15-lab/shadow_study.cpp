@@ -34,6 +34,8 @@ ShadowStudyOptions readShadowStudy(const common::Options& options) {
         throw common::InputError("--shadows loops over every light: no --light-culling tiled");
     if (chosen("shading") != 0)
         throw common::InputError("--shadows reads the G-buffer: no --shading forward");
+    if (chosen("gbuffer") == 2)  // labLayouts(): book, reference, compact
+        throw common::InputError("--shadows reads the G-buffer's positions: --gbuffer book or reference");
     study.filter = ShadowFilter(shadows - 1);
     study.layers = ShadowLayers(chosen("shadow-layers"));
     const uint32_t kCounts[] = {3, 1, 2, 4}, kSizes[] = {2048, 512, 1024, 4096};
