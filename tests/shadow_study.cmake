@@ -77,6 +77,9 @@ if(TARGET shadow_reference)
     # dumped at 640x360 with the variance map and with PCF 3x3.
     foreach(scene box_on_plane cutout_over_plane sun_down)
         foreach(filter vsm pcf3)
+            if(scene STREQUAL "sun_down" AND filter STREQUAL "pcf3")
+                continue()
+            endif()
             set(name lab.shadows-dump-${scene}-${filter})
             chapter_test(${name} WORKDIR /
                 COMMAND ${LAB_RUN} --width 640 --height 360 --gbuffer reference --scene ${SHADOWS_GLTF}/${scene}.json
@@ -85,27 +88,26 @@ if(TARGET shadow_reference)
             set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ${name})
         endforeach()
     endforeach()
-    # Against the rays: at most 1% of the pixels facing the sun wrong, and none away from an
-    # outline (no acne, no leak). Measured: 0.1-0.3%, all at the outlines.
+    # Against the rays: at most 0.2% of the pixels facing the sun wrong, and none away from an
+    # outline (no acne, no leak). Measured: 0.02-0.04%, all at the outlines. Rays that ignored the
+    # cut-out's alpha would shadow the strip under its transparent half: 1.5% wrong.
     foreach(scene box_on_plane cutout_over_plane)
         add_test(NAME lab.shadows-reference-${scene}
             COMMAND ${REFERENCE} ${SHADOWS_GLTF}/${scene}.json ${TEST_OUT}/study/${scene}-vsm
                     --compare vsm=${TEST_OUT}/study/${scene}-vsm/light.pfm
-                    --compare pcf3=${TEST_OUT}/study/${scene}-pcf3/light.pfm --max-wrong 0.01)
+                    --compare pcf3=${TEST_OUT}/study/${scene}-pcf3/light.pfm --max-wrong 0.002)
         set_tests_properties(lab.shadows-reference-${scene} PROPERTIES
             FIXTURES_REQUIRED "lab.shadows-dump-${scene}-vsm;lab.shadows-dump-${scene}-pcf3"
             PASS_REGULAR_EXPRESSION "vsm +[0-9.]+ +[0-9.]+ +0\\.000 +0\\.000 .*pcf3 +[0-9.]+ +[0-9.]+ +0\\.000 +0\\.000 ")
     endforeach()
     # The same plane under the sun straight down, compared with the rays of the slanted sun: the
-    # shadow is elsewhere, and the comparison must say so (exit 1, over 1% wrong).
+    # shadow is elsewhere, and the comparison must say so (exit 1: 1.8% wrong, over the 0.2%).
     add_test(NAME lab.shadows-reference-sees-a-wrong-sun
         COMMAND ${REFERENCE} ${SHADOWS_GLTF}/box_on_plane.json ${TEST_OUT}/study/box_on_plane-vsm
-                --compare wrong-sun=${TEST_OUT}/study/sun_down-vsm/light.pfm --max-wrong 0.01)
+                --compare wrong-sun=${TEST_OUT}/study/sun_down-vsm/light.pfm --max-wrong 0.002)
     set_tests_properties(lab.shadows-reference-sees-a-wrong-sun PROPERTIES WILL_FAIL TRUE
         FIXTURES_REQUIRED "lab.shadows-dump-box_on_plane-vsm;lab.shadows-dump-sun_down-vsm")
-    # Without the cut-out's alpha the rays would find its transparent half and shadow the strip
-    # under it: the reference's own verdict on the strip, lit (exit 0 with the map, which is right
-    # there: chapter-16.cutout-shadow-only-where-opaque).
+    # A directory without the G-buffer: one line, exit 2.
     chapter_test(lab.shadows-reference-bad-dir COMMAND ${REFERENCE} ${SHADOWS_GLTF}/box_on_plane.json
                  ${TEST_OUT}/study/no-such-dir
         EXPECT_EXIT 2 EXPECT_STDERR "shadow_reference: .*no-such-dir/position.pfm: not a little-endian PFM file"
