@@ -129,20 +129,17 @@ out=$(cd "$out" && pwd)
 
 # The study's scenes: the default courtyard, its sun turned to 40 and 10 degrees above the horizon
 # (toward -x, -z), its models' paths made absolute.
+# (awk, not python: the GPU machine has no python.)
+scenes=$build/bin/scenes/default
 for scene in sun40 sun10; do
-    degrees=${scene#sun}
-    python3 - "$build/bin/scenes/default/scene.json" "$degrees" > "$out/scene-$scene.json" <<'EOF'
-import json, math, os, sys
-path, degrees = sys.argv[1], float(sys.argv[2])
-scene = json.load(open(path))
-e = math.radians(degrees)
-for light in scene["lights"]:
-    if light["type"] == "directional":
-        light["direction"] = [math.cos(e) * 0.7071, -math.sin(e), math.cos(e) * 0.7071]
-for model in scene["models"]:
-    model["file"] = os.path.abspath(os.path.join(os.path.dirname(path), model["file"]))
-print(json.dumps(scene, indent=2))
-EOF
+    awk -v degrees="${scene#sun}" -v dir="$scenes" '
+        BEGIN { e = degrees * atan2(0, -1) / 180 }
+        skipping { if ($0 ~ /\]/) skipping = 0; next }
+        /"direction": \[/ && !done {
+            printf "      \"direction\": [%.6f, %.6f, %.6f],\n", cos(e) * 0.7071, -sin(e), cos(e) * 0.7071
+            skipping = 1; done = 1; next
+        }
+        { sub(/"file": "/, "\"file\": \"" dir "/"); print }' "$scenes/scene.json" > "$out/scene-$scene.json"
 done
 
 # Each configuration's visibility, and the reference's verdict.

@@ -4,7 +4,8 @@
 # into .gpu/build/bin, the scene generator into .gpu/build/tools, the Sponza stand-in's generator
 # and the bandwidth probe (bench/run.sh --gpu) into .gpu/build/bench/bin (bench/startup.sh writes
 # the model there: it is too large to carry), the glTF cases' generator (bench/specialisation.sh)
-# into .gpu/build/tests/bin,
+# and the shadow study's reference (bench/shadow_study.sh, where the build has it) into
+# .gpu/build/tests/bin,
 # and into .gpu/debs the Debian (amd64) packages of every shared library those programs load --
 # found by ldd, each library mapped to its package with dpkg -S, so a library a chapter starts to
 # load is packed without anyone listing it -- plus the Khronos validation layer (and what it loads),
@@ -40,6 +41,8 @@ for library in libGLdispatch.so.0 libGLX.so.0 libGL.so.1 libEGL.so.1 libOpenGL.s
 done
 programs=("$build"/bin/chapter-* "$build/tools/generate_light_scene" "$build/bench/bin/sponza_standin"
           "$build/bench/bin/bandwidth" "$build/tests/bin/gltf_cases" "$layer" "${glvnd[@]}")
+# bench/shadow_study.sh's reference, where this build has it (Embree found).
+[ -x "$build/tests/bin/shadow_reference" ] && programs+=("$build/tests/bin/shadow_reference")
 for program in "${programs[@]}"; do
     [ -f "$program" ] || { echo "gpu_package.sh: $program is missing (build it first)" >&2; exit 1; }
 done
@@ -108,4 +111,5 @@ mkdir -p "$root/.gpu/build/bench/bin"
 cp "$build/bench/bin/sponza_standin" "$build/bench/bin/bandwidth" "$root/.gpu/build/bench/bin/"
 mkdir -p "$root/.gpu/build/tests/bin"  # bench/specialisation.sh writes its glTF scene with it
 cp "$build/tests/bin/gltf_cases" "$root/.gpu/build/tests/bin/"
+[ -x "$build/tests/bin/shadow_reference" ] && cp "$build/tests/bin/shadow_reference" "$root/.gpu/build/tests/bin/"
 echo "gpu_package.sh: ${#wanted[@]} packages; $(du -sh "$root/.gpu" | cut -f1) in .gpu"
