@@ -215,3 +215,12 @@ set_tests_properties(chapter-16.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cas
 add_test(NAME chapter-16.book-scene-image COMMAND image_compare ${TEST_OUT}/chapter-16-book-scene.png
     --size 640 360 --golden ${GOLDEN}/chapter-16-book-scene.png --max-diff 5 --max-fraction 0.001)
 set_tests_properties(chapter-16.book-scene-image PROPERTIES FIXTURES_REQUIRED ch16-book)
+
+# A scene without a sun: the first frame clears the layers (the light pass reads them), and no
+# cascade is ever drawn; finite output, validation clean.
+chapter_test(chapter-16.no-sun WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 5 --check-output
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/no_sun.json
+    EXPECT_STDOUT "cascades drawn 0, 0, 0 times in 5 frames.*light output 320x180: 0 NaN, 0 infinite, 0 negative"
+    QUIET_STDERR)
+set_tests_properties(chapter-16.no-sun PROPERTIES FIXTURES_REQUIRED gltf-cases)

@@ -413,6 +413,17 @@ void writeShadows(const fs::path& dir) {
              json::array({{{"type", "directional"}, {"direction", {0, -1, 0}}, {"intensity", 2.0}}})}};
         writeText(dir / "slab_overhead.json", root.dump(2));
     }
+    // No sun: a point light over the box alone.
+    {
+        json camera = {
+            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+        json root = {
+            {"models", json::array({{{"file", "box_on_plane.gltf"}}})},
+            {"camera", camera},
+            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.1}}},
+            {"lights", json::array({{{"type", "point"}, {"position", {2, 3, 1}}, {"intensity", 4.0}}})}};
+        writeText(dir / "no_sun.json", root.dump(2));
+    }
     // Looking along the plane (1 over it, 10 degrees down, far 20): which cascade each distance takes.
     scene("cascade_rows.json", {0, -1, 0}, json::array(),
           {{"position", {0, 1, 5.5}}, {"yaw", 0}, {"pitch", -10}, {"far", 20}});
