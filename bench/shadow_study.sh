@@ -66,7 +66,7 @@ def med(values, i):
 print("Device: %s. GPU medians in ms over %d rounds; errors in %% of the pixels facing the sun." %
       (device, len(rows[order[0]])))
 print()
-print("| configuration | shadow pass | light pass | frame | wrong, sun 40 deg | at outlines | acne | leaks | bleeding | MAE | wrong, sun 10 deg | acne | leaks |")
+print("| configuration | shadow pass ms | light pass ms | frame ms | wrong, sun 40 deg | at outlines | acne | leaks | bleeding | MAE | wrong, sun 10 deg | acne | leaks |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 points = []
 for name in order:

@@ -199,3 +199,12 @@ set_property(TEST live-reload.chapter-15.names APPEND PROPERTY ENVIRONMENT XDG_D
 live_test(live-reload.chapter-06.window-fix fix chapter-06/triangle.frag WINDOW COMMAND $<TARGET_FILE:chapter-06>)
 live_test(live-reload.chapter-15.window-edit edit chapter-15/light.frag WINDOW COMMAND $<TARGET_FILE:chapter-15>)
 live_test(live-reload.chapter-15.window-broken broken chapter-15/light.frag WINDOW COMMAND $<TARGET_FILE:chapter-15>)
+# chapter-16: its light shader edited; its shadow shader edited while the camera stands still --
+# the shadow pass's two pipelines made again, and every cascade drawn again with them (a still
+# camera draws none otherwise): the moments written as 0, the sun's light gone from the image.
+live_test(live-reload.chapter-16.edit edit chapter-16/light.frag COMMAND $<TARGET_FILE:chapter-16>)
+live_test(live-reload.chapter-16.shadow-edit edit chapter-16/shadow.frag COMMAND $<TARGET_FILE:chapter-16>
+    --device llvmpipe)
+set_property(TEST live-reload.chapter-16.shadow-edit APPEND PROPERTY ENVIRONMENT
+             XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=2
+             "GOOD=    outMoments = vec2(0.0)\;  // live_reload.sh")
