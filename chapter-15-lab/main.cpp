@@ -629,7 +629,7 @@ void run(const common::Options& options) {
                                             std::to_string(study.cascades.mapSize)});
         if (study.filter != ShadowFilter::Variance)
             info.push_back({"pcf_taps", shadowStudy.hardwarePcf ? "by the sampler (linear depth filtering)"
-                                                                 : "gathered (no linear depth filtering)"});
+                                                                : "gathered (no linear depth filtering)"});
     }
     common::reportRun(run, device, info);
     if (gui.enabled)

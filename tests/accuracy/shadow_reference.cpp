@@ -8,15 +8,15 @@
 //
 // GBUFFER_DIR is what chapter-15-lab --gbuffer reference --dump wrote: position.pfm (world, fp32)
 // and coverage.pfm; the camera is the scene's (the lab's, unmoved). Each pixel's triangle is found
-// by a ray from the camera through its G-buffer point, for its geometric normal. The scene's models are loaded as the chapters load them (their
-// transforms applied), cut-outs included: a ray passes where the material's alpha at the hit is
-// below its cutoff (the texel nearest the hit's texture coordinates). A VISIBILITY.pfm is the
-// light output of chapter-15-lab --shadows ... --view visibility --dump (the visibility in each
-// channel).
+// by a ray from the camera through its G-buffer point, for its geometric normal. The scene's models are
+// loaded as the chapters load them (their transforms applied), cut-outs included: a ray passes where the
+// material's alpha at the hit is below its cutoff (the texel nearest the hit's texture coordinates). A
+// VISIBILITY.pfm is the light output of chapter-15-lab --shadows ... --view visibility --dump (the visibility
+// in each channel).
 //
 // Only pixels whose triangle faces the sun count (N.L > 0 for its geometric normal: elsewhere the
-// sun adds nothing, whatever the map says). Each is classed by the reference (lit or shadowed) and by the map (lit
-// where its visibility is at least 0.5):
+// sun adds nothing, whatever the map says). Each is classed by the reference (lit or shadowed) and by the map
+// (lit where its visibility is at least 0.5):
 //   wrong:        the two disagree;
 //   edge:         wrong within 2 pixels of a pixel whose reference class differs (the outline of a
 //                 shadow: aliasing, blur);
@@ -41,8 +41,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <stb_image_write.h>
+#include <nlohmann/json.hpp>
 
 #include "common/check.hpp"
 #include "common/model.hpp"
@@ -110,8 +110,10 @@ void fail(const std::string& message) {
 int main(int argc, char** argv) {
     try {
         if (argc < 3)
-            fail("usage: shadow_reference SCENE.json GBUFFER_DIR [--compare NAME=VISIBILITY.pfm]... [--json FILE] "
-                 "[--errors NAME=IMAGE.png] [--max-wrong FRACTION]");
+            fail(
+                "usage: shadow_reference SCENE.json GBUFFER_DIR [--compare NAME=VISIBILITY.pfm]... [--json "
+                "FILE] "
+                "[--errors NAME=IMAGE.png] [--max-wrong FRACTION]");
         std::string dir = argv[2];
         std::vector<std::pair<std::string, std::string>> compares;
         std::map<std::string, std::string> errorImages;
@@ -163,16 +165,18 @@ int main(int argc, char** argv) {
             for (const common::MeshData& mesh : model.meshes) {
                 if (mesh.indices.empty()) continue;
                 RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-                auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-                    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+                auto* vertices = static_cast<float*>(
+                    rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                            3 * sizeof(float), mesh.vertices.size()));
                 for (size_t v = 0; v < mesh.vertices.size(); ++v) {
                     glm::vec3 p = glm::vec3(matrix * glm::vec4(mesh.vertices[v].position, 1.0f));
                     std::memcpy(&vertices[3 * v], &p, sizeof(p));
                     low = glm::min(low, p);
                     high = glm::max(high, p);
                 }
-                auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-                    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.indices.size() / 3));
+                auto* indices = static_cast<uint32_t*>(
+                    rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                            3 * sizeof(uint32_t), mesh.indices.size() / 3));
                 std::memcpy(indices, mesh.indices.data(), mesh.indices.size() / 3 * 3 * sizeof(uint32_t));
                 triangles += mesh.indices.size() / 3;
                 // Cut-outs, as the chapters decide them (common/gpu_scene.cpp): MASK, or an OBJ
@@ -184,13 +188,14 @@ int main(int argc, char** argv) {
                 if (!texture.empty()) {
                     auto found = alphaImages.find(texture.image);
                     if (found == alphaImages.end()) {
-                        common::Pixels decoded =
-                            texture.image.embedded
-                                ? common::decodePixels(texture.image.embedded->data(), texture.image.embedded->size(),
-                                                       texture.image.name(), 16384)
-                                : common::loadPixels(texture.image.file, 16384);
+                        common::Pixels decoded = texture.image.embedded
+                                                     ? common::decodePixels(texture.image.embedded->data(),
+                                                                            texture.image.embedded->size(),
+                                                                            texture.image.name(), 16384)
+                                                     : common::loadPixels(texture.image.file, 16384);
                         if (!material.alphaTexture.empty())  // map_d: its first channel is the alpha
-                            for (size_t t = 0; t < decoded.rgba.size(); t += 4) decoded.rgba[t + 3] = decoded.rgba[t];
+                            for (size_t t = 0; t < decoded.rgba.size(); t += 4)
+                                decoded.rgba[t + 3] = decoded.rgba[t];
                         found = alphaImages.emplace(texture.image, std::move(decoded)).first;
                     }
                     pixels = &found->second;
@@ -293,15 +298,19 @@ int main(int argc, char** argv) {
             counted += r >= 0;
             lit += r == 1;
         }
-        std::printf("reference: %dx%d, %zu triangles, %zu pixels facing the sun, %.1f%% of them lit; %zu pixels "
-                    "whose surface the camera's ray did not find\n",
-                    width, height, triangles, counted, counted ? 100.0 * double(lit) / double(counted) : 0.0,
-                    unmatched);
+        std::printf(
+            "reference: %dx%d, %zu triangles, %zu pixels facing the sun, %.1f%% of them lit; %zu pixels "
+            "whose surface the camera's ray did not find\n",
+            width, height, triangles, counted, counted ? 100.0 * double(lit) / double(counted) : 0.0,
+            unmatched);
 
-        nlohmann::json report = {
-            {"width", width}, {"height", height}, {"counted", counted}, {"lit", lit}, {"unmatched", unmatched}};
-        std::printf("%-24s %9s %9s %9s %9s %9s %9s\n", "compared", "wrong%", "edge%", "acne%", "leak%", "bleeding",
-                    "MAE");
+        nlohmann::json report = {{"width", width},
+                                 {"height", height},
+                                 {"counted", counted},
+                                 {"lit", lit},
+                                 {"unmatched", unmatched}};
+        std::printf("%-24s %9s %9s %9s %9s %9s %9s\n", "compared", "wrong%", "edge%", "acne%", "leak%",
+                    "bleeding", "MAE");
         bool failed = false;
         for (const auto& [name, file] : compares) {
             Pfm visibility = readPfm(file);
