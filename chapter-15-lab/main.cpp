@@ -172,7 +172,10 @@ struct RendererChoice {
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
                     RendererChoice& renderer, LightControls& controls, common::Scene& scene,
                     common::GpuScene& gpuScene, bool deferred, bool switchable) {
-    common::guiTimingsWindow(gui, run, deferred ? kChapter.views : std::vector<std::string>{"final"}, view,
+    // "visibility" (the last view) only with --shadows, where the overlay has no renderer switch.
+    std::vector<std::string> views = kChapter.views;
+    if (switchable) views.pop_back();
+    common::guiTimingsWindow(gui, run, deferred ? views : std::vector<std::string>{"final"}, view,
                              {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
                               "1/2, 3/4  move the point light up/down, along z"});
     ImGui::Begin("Frame");  // appends to the timings window
@@ -455,7 +458,7 @@ void run(const common::Options& options) {
             common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
             if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
             if (common::pressedOnce(target.window, viewKey) && keys && !forward)  // forward: no views
-                lightView.view = (lightView.view + 1) % int(kChapter.views.size());
+                lightView.view = (lightView.view + 1) % int(kChapter.views.size() - (study.enabled ? 0 : 1));
             if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;
         }
         camera.yaw += lightOptions.orbitDegrees;  // --orbit: 0 unless asked

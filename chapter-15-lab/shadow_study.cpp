@@ -181,7 +181,8 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
         throw common::Failure(
             "this device cannot render to and sample R32G32_SFLOAT, the variance map's format");
     vkGetPhysicalDeviceFormatProperties(device.physical, study.depthFormat, &properties);
-    if (!variance(study) && (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0)
+    // Sampled in both forms: PCF reads it, and the light pass's binding 2 holds it either way.
+    if ((properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0)
         throw common::Failure("this device cannot sample its depth format: no depth comparison");
     study.hardwarePcf = hardwarePcf(device, study.depthFormat);
 

@@ -103,6 +103,7 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
 
 //> fitted-far
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far) {
+    if (!(near > 0.0f) || !(far > near)) return far;  // no steps from a near plane at or past 0
     float farthest = near;
     for (int i = 0; i < 8; ++i) {
         glm::vec3 corner((i & 1) ? boundsMax.x : boundsMin.x, (i & 2) ? boundsMax.y : boundsMin.y,

@@ -66,5 +66,5 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
 // The view distance at which the scene's bounds end, seen from `view`: the farthest of the box's
 // corners in front of the camera, rounded up to a step of 2^(1/8) from `near` (so that it moves
 // in steps, not with every move of the camera), and at most `far`. A scene that ends before the
-// projection's far plane needs no cascades beyond it.
+// projection's far plane needs no cascades beyond it. `far` itself unless 0 < near < far.
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far);

@@ -112,8 +112,21 @@ void placePointLight(LightControls& controls, common::Scene& scene, common::GpuS
     ++controls.markerMoves;
     common::Transform transform = scene.models[size_t(light.marker)].transform;
     transform.position = light.position;
-    for (common::Draw& draw : gpuScene.draws)
-        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
+    for (common::Draw& draw : gpuScene.draws) {
+        if (draw.instance != uint32_t(light.marker)) continue;
+        common::setDrawModel(gpuScene, draw, transform.matrix());
+        // The scene's bounds grow to hold the marker where it went: the last cascade ends where
+        // they do, and without depth clamping the cascades reach its shadow through them.
+        const common::GpuMesh& mesh = gpuScene.meshes[draw.mesh];
+        for (int i = 0; i < 8; ++i) {
+            glm::vec3 corner((i & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
+                             (i & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
+                             (i & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
+            glm::vec3 world = glm::vec3(transform.matrix() * glm::vec4(corner, 1.0f));
+            gpuScene.boundsMin = glm::min(gpuScene.boundsMin, world);
+            gpuScene.boundsMax = glm::max(gpuScene.boundsMax, world);
+        }
+    }
 }
 
 void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
@@ -337,10 +350,9 @@ void setUp(Chapter& c, const common::Options& options) {
     c.cascadeSettings = {.count = kCascadeCounts[chosen("cascades")],
                          .mapSize = kMapSizes[chosen("shadow-map-size")]};
     c.fitFar = chosen("shadow-far") == 0;
-    // No depth clamping on this device: the cascades reach toward the sun as far as the scene does.
+    // No depth clamping on this device: the cascades reach toward the sun as far as the scene does
+    // (its bounds, updateFrame).
     c.cascadeSettings.reachCasters = !c.device.depthClamp;
-    c.cascadeSettings.castersMin = c.gpuScene.boundsMin;
-    c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
     const float kCameraSteps[] = {0.0f, 0.02f, 1e-4f};
     c.cameraStep = kCameraSteps[chosen("camera-motion")];
     double passesStart = common::millisecondsSinceStart();
@@ -407,6 +419,8 @@ void updateFrame(Chapter& c, uint32_t slot) {
         float far = c.scene.camera.far;
         if (c.fitFar)
             far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
+        c.cascadeSettings.castersMin = c.gpuScene.boundsMin;  // the casters: the scene, marker included
+        c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
         CascadeCamera camera{.view = view,
                              .fovY = glm::radians(c.scene.camera.fov),
                              .aspect = float(c.target.extent.width) / float(c.target.extent.height),
@@ -543,6 +557,8 @@ void report(Chapter& c, const common::Options& options) {
     info.push_back({"gbuffer_bytes_per_pixel", std::to_string(common::bytesPerPixel(kBookGBuffer.formats))});
     common::addPipelineInfo(info, c.scenePass.pipelines.pipelines.size(), c.passesMs);
     info.push_back({"light_pipeline", describeLightKinds(c.lightPass.kinds)});
+    // Without depth clamping the cascades reach toward the sun as far as the scene does.
+    info.push_back({"depth_clamp", c.device.depthClamp ? "yes" : "no: cascades reach the scene's casters"});
     for (const auto& [key, value] : describeCascades(c)) info.push_back({key, value});
     common::reportRun(c.run, c.device, info);
     // How often each cascade was drawn: once for a still camera, more as it moves.

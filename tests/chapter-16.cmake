@@ -122,18 +122,18 @@ set_tests_properties(chapter-16.creep-edges-still PROPERTIES FIXTURES_REQUIRED "
 
 # A walking camera: cascades drawn again as they move, and the image the one drawing every cascade
 # every frame gives, to the bit.
-foreach(redraw changed always)
+# The walk draws the first two cascades every frame and keeps the last in some (30, 30, 19): the
+# frames that draw some layers and load the others, validation clean.
+foreach(case "changed;cascades drawn 30, 30, 1[0-9] times in 30 frames"
+             "always;cascades drawn 30, 30, 30 times in 30 frames")
+    list(GET case 0 redraw)
+    list(GET case 1 expected)
     chapter_test(chapter-16.walk-${redraw} WORKDIR /
         COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 30 --camera-motion walk
                 --shadow-redraw ${redraw} --screenshot ${TEST_OUT}/chapter-16-walk-${redraw}.png
-        QUIET_STDERR)
+        EXPECT_STDOUT "${expected}" QUIET_STDERR)
     set_tests_properties(chapter-16.walk-${redraw} PROPERTIES FIXTURES_SETUP ch16-walk-${redraw})
 endforeach()
-set_tests_properties(chapter-16.walk-changed PROPERTIES
-    PASS_REGULAR_EXPRESSION "cascades drawn [0-9]+, [0-9]+, [0-9]+ times in 30 frames"
-    FAIL_REGULAR_EXPRESSION "drawn 30, 30, 30 times")
-set_tests_properties(chapter-16.walk-always PROPERTIES
-    PASS_REGULAR_EXPRESSION "cascades drawn 30, 30, 30 times in 30 frames")
 add_test(NAME chapter-16.walk-same-image COMMAND image_compare ${TEST_OUT}/chapter-16-walk-changed.png
     --size 320 180 --golden ${TEST_OUT}/chapter-16-walk-always.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-16.walk-same-image PROPERTIES FIXTURES_REQUIRED "ch16-walk-changed;ch16-walk-always")

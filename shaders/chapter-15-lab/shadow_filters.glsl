@@ -10,7 +10,7 @@
 // compares the point's depth with the 2x2 texels around it and weighs the four results by where
 // the point lies between their centres: the sampler does it (LINEAR with compareEnable) where the
 // device filters its depth format linearly; elsewhere (PCF_GATHER: Mesa lavapipe) a gather of the
-// four comparisons, weighed here -- the same result.
+// four comparisons, weighed here -- the same filter, up to the precision of the hardware's weights.
 // (The light pass's shader is compiled once per filter: SHADOW_VSM, SHADOW_PCF2 ...)
 #if defined(SHADOW_PCF2)
 const int SHADOW_FILTER = 1;

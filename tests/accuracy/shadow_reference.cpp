@@ -27,8 +27,10 @@
 //                 outline (partial light in full shadow: the variance map's light bleeding);
 //   MAE:          the mean |reference - visibility| over every counted pixel.
 // Fractions are of the counted pixels. --max-wrong F fails (exit 1) when a compared image's wrong
-// fraction is above F. --errors writes a picture of a comparison: white lit and grey shadowed
-// where both agree, red false shadow, blue false light, yellow wrong at an edge.
+// fraction is above F. A frame with no counted pixel, or whose G-buffer the camera's rays miss
+// on over 1% of its surface pixels, is refused (exit 2): there would be nothing to compare. --errors writes a
+// picture of a comparison: white lit and grey shadowed where both agree, red false shadow, blue false light,
+// yellow wrong at an edge.
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -119,6 +121,17 @@ int main(int argc, char** argv) {
         std::map<std::string, std::string> errorImages;
         std::string jsonPath;
         double maxWrong = -1.0;
+        auto fraction = [&](const std::string& text) {
+            size_t used = 0;
+            double value = -1.0;
+            try {
+                value = std::stod(text, &used);
+            } catch (const std::exception&) {
+            }
+            if (used != text.size() || !(value >= 0.0 && value <= 1.0))
+                fail("--max-wrong takes a fraction 0..1, got '" + text + "'");
+            return value;
+        };
         for (int i = 3; i < argc; ++i) {
             std::string arg = argv[i];
             if (i + 1 >= argc) fail(arg + " needs a value");
@@ -133,7 +146,7 @@ int main(int argc, char** argv) {
             else if (arg == "--json")
                 jsonPath = value;
             else if (arg == "--max-wrong")
-                maxWrong = std::stod(value);
+                maxWrong = fraction(value);
             else
                 fail("unknown option " + arg);
         }
@@ -156,7 +169,9 @@ int main(int argc, char** argv) {
         rtcSetSceneBuildQuality(rtScene, RTC_BUILD_QUALITY_HIGH);
         common::ModelCache models;
         std::vector<std::unique_ptr<CutoutMesh>> cutouts;
-        std::map<common::ImageSource, common::Pixels> alphaImages;
+        // Decoded images, by image and by whether the alpha comes from the first channel (an OBJ's
+        // map_d) or the fourth.
+        std::map<std::pair<common::ImageSource, bool>, common::Pixels> alphaImages;
         glm::vec3 low(1e30f), high(-1e30f);
         size_t triangles = 0;
         for (const common::ModelInstance& instance : scene.models) {
@@ -180,23 +195,33 @@ int main(int argc, char** argv) {
                 std::memcpy(indices, mesh.indices.data(), mesh.indices.size() / 3 * 3 * sizeof(uint32_t));
                 triangles += mesh.indices.size() / 3;
                 // Cut-outs, as the chapters decide them (common/gpu_scene.cpp): MASK, or an OBJ
-                // material with alpha below 1 in its factor or texture.
-                const common::MaterialData& material = model.materials[mesh.material];
+                // material with alpha below 1 in its factor or texture; the scene's overrides of a
+                // material's diffuse colour and texture applied as the chapters apply them.
+                common::MaterialData material = model.materials[mesh.material];
+                if (auto o = instance.materials.find(material.name); o != instance.materials.end()) {
+                    if (o->second.diffuse) material.diffuse = *o->second.diffuse;
+                    if (o->second.diffuseTexture)
+                        material.diffuseTexture.image =
+                            common::ImageSource{.file = *o->second.diffuseTexture};
+                }
+                bool firstChannel = !material.alphaTexture.empty();
                 const common::TextureRef& texture =
-                    material.alphaTexture.empty() ? material.diffuseTexture : material.alphaTexture;
+                    firstChannel ? material.alphaTexture : material.diffuseTexture;
                 const common::Pixels* pixels = nullptr;
                 if (!texture.empty()) {
-                    auto found = alphaImages.find(texture.image);
+                    auto found = alphaImages.find({texture.image, firstChannel});
                     if (found == alphaImages.end()) {
                         common::Pixels decoded = texture.image.embedded
                                                      ? common::decodePixels(texture.image.embedded->data(),
                                                                             texture.image.embedded->size(),
                                                                             texture.image.name(), 16384)
                                                      : common::loadPixels(texture.image.file, 16384);
-                        if (!material.alphaTexture.empty())  // map_d: its first channel is the alpha
+                        if (firstChannel)  // map_d: its first channel is the alpha
                             for (size_t t = 0; t < decoded.rgba.size(); t += 4)
                                 decoded.rgba[t + 3] = decoded.rgba[t];
-                        found = alphaImages.emplace(texture.image, std::move(decoded)).first;
+                        found =
+                            alphaImages.emplace(std::pair{texture.image, firstChannel}, std::move(decoded))
+                                .first;
                     }
                     pixels = &found->second;
                 }
@@ -304,6 +329,14 @@ int main(int argc, char** argv) {
             width, height, triangles, counted, counted ? 100.0 * double(lit) / double(counted) : 0.0,
             unmatched);
 
+        // Nothing to compare is a failure, not a pass: a G-buffer the camera's rays do not find
+        // (positions in another space, another camera) or a frame without a sunlit surface.
+        size_t covered = 0;
+        for (size_t p = 0; p < pixels; ++p) covered += coverage.at(p).x >= 0.5 ? 1 : 0;
+        if (counted == 0) fail(dir + ": no pixel shows a surface facing the sun: nothing to compare");
+        if (double(unmatched) > 0.01 * double(covered))
+            fail(dir + ": the camera's rays miss " + std::to_string(unmatched) +
+                 " of the G-buffer's surface pixels (over 1%): not this scene's frame");
         nlohmann::json report = {{"width", width},
                                  {"height", height},
                                  {"counted", counted},
