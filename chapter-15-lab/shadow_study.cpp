@@ -67,89 +67,23 @@ bool variance(const ShadowStudy& study) {
     return study.options.filter == ShadowFilter::Variance;
 }
 
-// The pipeline for the study's form: chapter-16's vertex and geometry shaders (one pass, gl_Layer),
-// or the lab's vertex shader that takes the cascade from gl_ViewIndex (multiview) or a push
-// constant (a pass per cascade); chapter-16's fragment shader for the moments, or the lab's that
-// writes depth alone.
+// The pipeline for the study's form, made by chapter-16's createShadowPipeline: chapter-16's
+// vertex and geometry shaders (one pass, gl_Layer), or the lab's vertex shader that takes the
+// cascade from gl_ViewIndex (multiview) or gl_InstanceIndex (a pass per cascade, drawn with the
+// cascade as firstInstance); chapter-16's fragment shader for the moments, or the lab's that
+// writes depth alone. (The lab compiles chapter-16's shaders into its own directory.)
 VkPipeline makeStudyPipeline(const common::Device& device, VkPipelineCache cache, const ShadowStudy& study,
                              bool alphaTest) {
     ShadowLayers layers = study.options.layers;
-    const char* vertexName = layers == ShadowLayers::GeometryShader ? "chapter-15-lab/shadow.vert"
-                             : layers == ShadowLayers::Multiview
-                                 ? "chapter-15-lab/shadow_cascade-multiview.vert"
-                                 : "chapter-15-lab/shadow_cascade.vert";
-    common::ShaderModule vertex(device, vertexName);
-    common::ShaderModule fragment(
-        device, variance(study) ? "chapter-15-lab/shadow.frag" : "chapter-15-lab/shadow_depth.frag");
-    VkBool32 alphaTestConstant = alphaTest;
-    VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-    VkSpecializationInfo specialization{1, &entry, sizeof(VkBool32), &alphaTestConstant};
-    std::vector<VkPipelineShaderStageCreateInfo> stages{
-        common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex)};
-    std::optional<common::ShaderModule> geometry;
-    if (layers == ShadowLayers::GeometryShader) {
-        geometry.emplace(device, "chapter-15-lab/shadow.geom");
-        stages.push_back(common::shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, *geometry));
-    }
-    stages.push_back(common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization));
-
-    common::SceneVertexInput vertexInput;
-    common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
-    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
-    VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
-                                               .viewportCount = 1,
-                                               .scissorCount = 1};
-    VkPipelineRasterizationStateCreateInfo rasterization{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-        .depthClampEnable = device.depthClamp ? VK_TRUE : VK_FALSE,
-        .polygonMode = VK_POLYGON_MODE_FILL,
-        .cullMode = VK_CULL_MODE_NONE,
-        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-        .lineWidth = 1.0f};
-    VkPipelineMultisampleStateCreateInfo multisample{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
-    VkPipelineDepthStencilStateCreateInfo depth{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
-        .depthTestEnable = VK_TRUE,
-        .depthWriteEnable = VK_TRUE,
-        .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
-    VkPipelineColorBlendAttachmentState blend{.colorWriteMask =
-                                                  VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT};
-    VkPipelineColorBlendStateCreateInfo colorBlend{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-        .attachmentCount = variance(study) ? 1u : 0u,
-        .pAttachments = &blend};
-    std::array<VkDynamicState, 2> dynamic{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamicState{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-        .dynamicStateCount = uint32_t(dynamic.size()),
-        .pDynamicStates = dynamic.data()};
-    VkPipelineRenderingCreateInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-        .viewMask = layers == ShadowLayers::Multiview ? (1u << study.options.cascades.count) - 1u : 0u,
-        .colorAttachmentCount = variance(study) ? 1u : 0u,
-        .pColorAttachmentFormats = &kMomentsFormat,
-        .depthAttachmentFormat = study.depthFormat};
-    VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                      .pNext = &rendering,
-                                      .stageCount = uint32_t(stages.size()),
-                                      .pStages = stages.data(),
-                                      .pVertexInputState = &vertexInput.state,
-                                      .pInputAssemblyState = &inputAssembly,
-                                      .pViewportState = &viewport,
-                                      .pRasterizationState = &rasterization,
-                                      .pMultisampleState = &multisample,
-                                      .pDepthStencilState = &depth,
-                                      .pColorBlendState = &colorBlend,
-                                      .pDynamicState = &dynamicState,
-                                      .layout = study.pipelineLayout};
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
-    common::nameObject(device.handle, pipeline, alphaTest ? "shadow study: cut-out" : "shadow study: opaque");
-    return pipeline;
+    ShadowPipelineShaders shaders{
+        .vertex = layers == ShadowLayers::GeometryShader ? "chapter-15-lab/shadow.vert"
+                  : layers == ShadowLayers::Multiview    ? "chapter-15-lab/shadow_cascade-multiview.vert"
+                                                         : "chapter-15-lab/shadow_cascade.vert",
+        .geometry = layers == ShadowLayers::GeometryShader ? "chapter-15-lab/shadow.geom" : nullptr,
+        .fragment = variance(study) ? "chapter-15-lab/shadow.frag" : "chapter-15-lab/shadow_depth.frag",
+        .moments = variance(study),
+        .viewMask = layers == ShadowLayers::Multiview ? (1u << study.options.cascades.count) - 1u : 0u};
+    return createShadowPipeline(device, cache, study.pipelineLayout, study.depthFormat, shaders, alphaTest);
 }
 
 VkImageView layerView(const common::Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect,
@@ -261,11 +195,11 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
     }
 
     // chapter-16's sets and push constants (the model matrix for the vertex stage, the material
-    // for the fragment stage), and for a pass per cascade the cascade after them (vertex stage).
+    // for the fragment stage).
     std::array<VkDescriptorSetLayout, 3> layouts{study.cascadesLayout, scenePass.materialsLayout,
                                                  scenePass.texturesLayout};
     std::array<VkPushConstantRange, 2> pushConstants{{
-        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants) + 2 * sizeof(uint32_t)},
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
         {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
     }};
     VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
@@ -351,29 +285,9 @@ void recordShadowStudy(VkCommandBuffer cmd, const ShadowStudy& study, const Scen
         std::array<VkDescriptorSet, 2> shared{study.cascadesSets[frame], scenePass.materialsSet};
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.pipelineLayout, 0, 2,
                                 shared.data(), 0, nullptr);
-        VkPipeline bound = VK_NULL_HANDLE;
-        for (const common::Draw& draw : scene.draws) {
-            VkPipeline pipeline = scene.materials[draw.material].alphaTested ? study.cutout : study.opaque;
-            if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
-            const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
-            vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.pipelineLayout, 2, 1,
-                                    &scenePass.materialTextureSets[draw.material], 0, nullptr);
-            DrawConstants constants{draw.model, {}};
-            vkCmdPushConstants(cmd, study.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
-                               &constants);
-            // The material (both stages' ranges hold its bytes) and the cascade of this pass.
-            std::array<uint32_t, 2> materialAndCascade{draw.material, pass};
-            vkCmdPushConstants(cmd, study.pipelineLayout,
-                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                               sizeof(DrawConstants), sizeof(uint32_t), &materialAndCascade[0]);
-            vkCmdPushConstants(cmd, study.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT,
-                               sizeof(DrawConstants) + sizeof(uint32_t), sizeof(uint32_t),
-                               &materialAndCascade[1]);
-            vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
-        }
+        // chapter-16's draws; a pass per cascade tells the vertex shader its cascade as the
+        // instance index.
+        recordShadowDraws(cmd, study.pipelineLayout, study.opaque, study.cutout, scenePass, scene, pass);
         common::vk13.CmdEndRendering(cmd);
     }
 

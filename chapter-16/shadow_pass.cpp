@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "common/barriers.hpp"
@@ -65,24 +66,25 @@ void destroyLayeredImage(const common::Device& device, LayeredImage& image) {
     image = {};
 }
 
-namespace {
-
 //> shadow-pipeline
 // The scene's triangles through a geometry shader into every cascade's layer. Written out here,
 // as chapter-06 writes out its pipeline, for what this chapter adds: the geometry stage and depth
 // clamping (casters nearer the light than the cascade's box still cast their shadow, at depth 0).
-VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cache, const ShadowPass& pass,
-                              bool alphaTest) {
-    common::ShaderModule vertex(device, "chapter-16/shadow.vert");
-    common::ShaderModule geometry(device, "chapter-16/shadow.geom");
-    common::ShaderModule fragment(device, "chapter-16/shadow.frag");
+VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
+                                VkFormat depthFormat, const ShadowPipelineShaders& shaders, bool alphaTest) {
+    common::ShaderModule vertex(device, shaders.vertex);
+    common::ShaderModule fragment(device, shaders.fragment);
     VkBool32 alphaTestConstant = alphaTest;
     VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
     VkSpecializationInfo specialization{1, &entry, sizeof(VkBool32), &alphaTestConstant};
-    std::array<VkPipelineShaderStageCreateInfo, 3> stages{
-        common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-        common::shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, geometry),
-        common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)};
+    std::vector<VkPipelineShaderStageCreateInfo> stages{
+        common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex)};
+    std::optional<common::ShaderModule> geometry;
+    if (shaders.geometry) {
+        geometry.emplace(device, shaders.geometry);
+        stages.push_back(common::shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, *geometry));
+    }
+    stages.push_back(common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization));
     common::SceneVertexInput vertexInput;
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{
@@ -110,7 +112,7 @@ VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cach
                                                   VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT};
     VkPipelineColorBlendStateCreateInfo colorBlend{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-        .attachmentCount = 1,
+        .attachmentCount = shaders.moments ? 1u : 0u,
         .pAttachments = &blend};
     std::array<VkDynamicState, 2> dynamic{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamicState{
@@ -118,9 +120,10 @@ VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cach
         .dynamicStateCount = uint32_t(dynamic.size()),
         .pDynamicStates = dynamic.data()};
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                            .colorAttachmentCount = 1,
+                                            .viewMask = shaders.viewMask,
+                                            .colorAttachmentCount = shaders.moments ? 1u : 0u,
                                             .pColorAttachmentFormats = &kMomentsFormat,
-                                            .depthAttachmentFormat = pass.depthFormat};
+                                            .depthAttachmentFormat = depthFormat};
     VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                       .pNext = &rendering,
                                       .stageCount = uint32_t(stages.size()),
@@ -133,13 +136,21 @@ VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cach
                                       .pDepthStencilState = &depth,
                                       .pColorBlendState = &colorBlend,
                                       .pDynamicState = &dynamicState,
-                                      .layout = pass.pipelineLayout};
+                                      .layout = layout};
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
-    common::nameObject(device.handle, pipeline, alphaTest ? "shadow: cut-out" : "shadow: opaque");
+    common::nameObject(device.handle, pipeline,
+                       std::string(alphaTest ? "shadow: cut-out, " : "shadow: opaque, ") + shaders.vertex);
     return pipeline;
 }
 //< shadow-pipeline
+
+namespace {
+
+VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cache, const ShadowPass& pass,
+                              bool alphaTest) {
+    return createShadowPipeline(device, cache, pass.pipelineLayout, pass.depthFormat, {}, alphaTest);
+}
 
 }  // namespace
 
@@ -312,23 +323,7 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
     std::array<VkDescriptorSet, 2> shared{pass.cascadesSets[frame], scenePass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
-    VkPipeline bound = VK_NULL_HANDLE;
-    for (const common::Draw& draw : scene.draws) {
-        VkPipeline pipeline = scene.materials[draw.material].alphaTested ? pass.cutout : pass.opaque;
-        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
-        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        VkDeviceSize offset = 0;
-        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
-        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 2, 1,
-                                &scenePass.materialTextureSets[draw.material], 0, nullptr);
-        DrawConstants constants{draw.model, {}};
-        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
-                           &constants);
-        vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
-                           sizeof(uint32_t), &draw.material);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
-    }
+    recordShadowDraws(cmd, pass.pipelineLayout, pass.opaque, pass.cutout, scenePass, scene);
     common::vk13.CmdEndRendering(cmd);
 
     // The moments to READ_ONLY_OPTIMAL for the light pass's fragment shader.
@@ -340,6 +335,28 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
     common::pipelineBarrier(cmd, &finish, 1);
 }
 //< record-shadow
+
+//> shadow-draws
+void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
+                       const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance) {
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const common::Draw& draw : scene.draws) {
+        VkPipeline pipeline = scene.materials[draw.material].alphaTested ? cutout : opaque;
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
+                                &scenePass.materialTextureSets[draw.material], 0, nullptr);
+        DrawConstants constants{draw.model, {}};
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t),
+                           &draw.material);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
+    }
+}
+//< shadow-draws
 
 void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,
                            const common::ShaderReload& reload, common::PipelineSwap& swap) {

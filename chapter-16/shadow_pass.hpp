@@ -46,6 +46,27 @@ LayeredImage createLayeredImage(const common::Device& device, uint32_t size, uin
                                 VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* name);
 void destroyLayeredImage(const common::Device& device, LayeredImage& image);
 
+// The shaders of a shadow pipeline, chapter-16's by default: the model matrix, then the geometry
+// shader sending each triangle to every cascade's layer, then the moments. (chapter-15-lab's
+// shadow study draws the layers without the geometry stage -- multiview, a pass per cascade --
+// and the depth alone, for depth comparison.)
+struct ShadowPipelineShaders {
+    const char* vertex = "chapter-16/shadow.vert";
+    const char* geometry = "chapter-16/shadow.geom";  // nullptr: no geometry stage
+    const char* fragment = "chapter-16/shadow.frag";
+    bool moments = true;    // a colour attachment of kMomentsFormat; false: depth alone
+    uint32_t viewMask = 0;  // multiview: a bit per cascade
+};
+// `alphaTest`: the cut-outs' pipeline (constant_id 0 ALPHA_TEST); `layout` as ShadowPass's.
+VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
+                                VkFormat depthFormat, const ShadowPipelineShaders& shaders, bool alphaTest);
+// The scene's draws into a shadow map, inside a rendering: each with its material's pipeline
+// (cut-out or opaque), its mesh, its textures (set 2) and its model matrix and material (push
+// constants); sets 0 and 1 bound by the caller. `firstInstance` reaches the vertex shader as
+// gl_InstanceIndex (chapter-15-lab's pass per cascade: the cascade).
+void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
+                       const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance = 0);
+
 struct ShadowPass {
     CascadeSettings settings;
     LayeredImage moments;  // R32G32_SFLOAT: depth, depth^2

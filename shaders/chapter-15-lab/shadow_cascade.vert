@@ -1,7 +1,8 @@
 #version 450
 // chapter-15-lab shadow study: the scene's positions straight into one cascade's clip space,
 // without chapter-16's geometry shader -- the cascade from gl_ViewIndex (MULTIVIEW: one pass,
-// each cascade a view of VK_KHR_multiview) or from a push constant (one pass per cascade).
+// each cascade a view of VK_KHR_multiview) or from gl_InstanceIndex (one pass per cascade, each
+// drawn with its cascade as firstInstance).
 #extension GL_GOOGLE_include_directive : require
 #ifdef MULTIVIEW
 #extension GL_EXT_multiview : require
@@ -20,15 +21,14 @@ layout(std140, set = 0, binding = 0) uniform CascadeBlock {
 };
 
 layout(push_constant) uniform DrawBlock {
-    DrawConstants draw;                // the scene pass's (the normal matrix is not read)
-    layout(offset = 116) uint cascade;  // a pass per cascade: which
+    DrawConstants draw;  // the scene pass's (the normal matrix is not read)
 };
 
 void main() {
 #ifdef MULTIVIEW
     uint index = gl_ViewIndex;
 #else
-    uint index = cascade;
+    uint index = uint(gl_InstanceIndex);
 #endif
     gl_Position = cascades.viewProjection[index] * (draw.model * vec4(inPosition, 1.0));
     outUv = inUv;
