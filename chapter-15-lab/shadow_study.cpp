@@ -194,20 +194,8 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
                                      VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     }
 
-    // chapter-16's sets and push constants (the model matrix for the vertex stage, the material
-    // for the fragment stage).
-    std::array<VkDescriptorSetLayout, 3> layouts{study.cascadesLayout, scenePass.materialsLayout,
-                                                 scenePass.texturesLayout};
-    std::array<VkPushConstantRange, 2> pushConstants{{
-        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
-        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
-    }};
-    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = uint32_t(layouts.size()),
-                                          .pSetLayouts = layouts.data(),
-                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
-                                          .pPushConstantRanges = pushConstants.data()};
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &study.pipelineLayout));
+    study.pipelineLayout =
+        createShadowPipelineLayout(device, study.cascadesLayout, scenePass);  // chapter-16's
     common::nameObject(device.handle, study.pipelineLayout, "shadow study");
     study.opaque = makeStudyPipeline(device, cache, study, false);
     study.cutout = makeStudyPipeline(device, cache, study, true);
@@ -216,15 +204,8 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
 
 void updateShadowStudy(ShadowStudy& study, uint32_t frame, const std::vector<Cascade>& cascades,
                        const glm::mat4& cameraView) {
-    CascadeUniform uniform{};
-    for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
-        uniform.viewProjection[i] = cascades[i].viewProjection;
-        uniform.splitFar[int(i)] = cascades[i].splitFar;
-        uniform.texelSize[int(i)] = cascades[i].texel;
-    }
-    uniform.cameraView = cameraView;
-    uniform.count = int32_t(cascades.size());
-    uniform.redraw = (1u << cascades.size()) - 1u;  // every cascade, every frame
+    CascadeUniform uniform =
+        cascadeUniform(cascades, cameraView, (1u << cascades.size()) - 1u);  // all, always
     std::memcpy(study.cascades[frame].mapped, &uniform, sizeof(uniform));
 }
 

@@ -154,6 +154,40 @@ VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cach
 
 }  // namespace
 
+VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDescriptorSetLayout cascades,
+                                            const ScenePass& scenePass) {
+    // Set 0 the cascades, 1 and 2 the scene pass's materials and textures; the scene pass's push
+    // constants (the model matrix for the vertex stage, the material for the fragment stage).
+    std::array<VkDescriptorSetLayout, 3> layouts{cascades, scenePass.materialsLayout,
+                                                 scenePass.texturesLayout};
+    std::array<VkPushConstantRange, 2> pushConstants{{
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
+    }};
+    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                          .setLayoutCount = uint32_t(layouts.size()),
+                                          .pSetLayouts = layouts.data(),
+                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
+                                          .pPushConstantRanges = pushConstants.data()};
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &layout));
+    return layout;
+}
+
+CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
+                              uint32_t redraw) {
+    CascadeUniform uniform{};
+    for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
+        uniform.viewProjection[i] = cascades[i].viewProjection;
+        uniform.splitFar[int(i)] = cascades[i].splitFar;
+        uniform.texelSize[int(i)] = cascades[i].texel;
+    }
+    uniform.cameraView = cameraView;
+    uniform.count = int32_t(cascades.size());
+    uniform.redraw = redraw;
+    return uniform;
+}
+
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const CascadeSettings& settings, const ScenePass& scenePass,
                             uint32_t framesInFlight) {
@@ -209,20 +243,7 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                                       pass.cascades.back().handle, sizeof(CascadeUniform));
     }
 
-    // Set 0 the cascades, 1 and 2 the scene pass's materials and textures; the scene pass's push
-    // constants (the model matrix for the vertex stage, the material for the fragment stage).
-    std::array<VkDescriptorSetLayout, 3> layouts{pass.cascadesLayout, scenePass.materialsLayout,
-                                                 scenePass.texturesLayout};
-    std::array<VkPushConstantRange, 2> pushConstants{{
-        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
-        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
-    }};
-    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = uint32_t(layouts.size()),
-                                          .pSetLayouts = layouts.data(),
-                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
-                                          .pPushConstantRanges = pushConstants.data()};
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
+    pass.pipelineLayout = createShadowPipelineLayout(device, pass.cascadesLayout, scenePass);
     common::nameObject(device.handle, pass.pipelineLayout, "shadow");
     pass.opaque = makeShadowPipeline(device, cache, pass, false);
     pass.cutout = makeShadowPipeline(device, cache, pass, true);
@@ -232,13 +253,9 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
 //> redraw
 uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
                         const glm::mat4& cameraView, uint64_t geometryVersion) {
-    CascadeUniform uniform{};
     if (geometryVersion != pass.drawnGeometry || pass.redrawAlways) pass.held = 0;
     pass.redraw = 0;
     for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
-        uniform.viewProjection[i] = cascades[i].viewProjection;
-        uniform.splitFar[int(i)] = cascades[i].splitFar;
-        uniform.texelSize[int(i)] = cascades[i].texel;
         // The same matrix to the bit (computeCascades snaps it, so a camera moving within a texel
         // gives the same one) over the same geometry: the layer already holds this cascade.
         bool same = (pass.held >> i & 1u) &&
@@ -254,9 +271,7 @@ uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Casc
     pass.held = (1u << cascades.size()) - 1u;
     pass.drawnGeometry = geometryVersion;
     ++pass.frames;
-    uniform.cameraView = cameraView;
-    uniform.count = int32_t(cascades.size());
-    uniform.redraw = pass.redraw;
+    CascadeUniform uniform = cascadeUniform(cascades, cameraView, pass.redraw);
     std::memcpy(pass.cascades[frame].mapped, &uniform, sizeof(uniform));
     return pass.redraw;
 }

@@ -67,6 +67,14 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
 void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
                        const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance = 0);
 
+// The shadow pipelines' layout: set 0 `cascades` (the cascade uniform), sets 1 and 2 the scene
+// pass's materials and textures, and the scene pass's push constants.
+VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDescriptorSetLayout cascades,
+                                            const ScenePass& scenePass);
+// The cascade uniform for `cascades`, the camera's view and the cascades to draw (bits).
+CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
+                              uint32_t redraw);
+
 struct ShadowPass {
     CascadeSettings settings;
     LayeredImage moments;  // R32G32_SFLOAT: depth, depth^2

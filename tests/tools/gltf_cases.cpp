@@ -333,17 +333,26 @@ void writeShadows(const fs::path& dir) {
     int box = file.mesh(json::array({boxPrimitive(file, white, {-0.5f, 1, -0.5f}, {0.5f, 2, 0.5f})}));
     file.scene({file.node({{"mesh", plane}}), file.node({{"mesh", box}})});
     file.writeGltf(dir / "box_on_plane.gltf");
-    auto scene = [&](const char* name, json direction, json more = json::array(), json cameraChanges = {}) {
-        json lights = json::array({{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}}});
-        for (json& light : more) lights.push_back(light);
+    // A scene of `model` seen from 10 above (unless `cameraChanges` say otherwise), with `lights`
+    // and `ambient` white light.
+    auto sceneFile = [&](const char* name, const char* model, json lights, json cameraChanges = {},
+                         double ambient = 0.0) {
         json camera = {
             {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
         if (cameraChanges.is_object()) camera.update(cameraChanges);
-        json root = {{"models", json::array({{{"file", "box_on_plane.gltf"}}})},
+        json root = {{"models", json::array({{{"file", model}}})},
                      {"camera", camera},
-                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", ambient}}},
                      {"lights", lights}};
         writeText(dir / name, root.dump(2));
+    };
+    auto sun = [](json direction) {
+        return json{{"type", "directional"}, {"direction", direction}, {"intensity", 2.0}};
+    };
+    auto scene = [&](const char* name, json direction, json more = json::array(), json cameraChanges = {}) {
+        json lights = json::array({sun(direction)});
+        for (json& light : more) lights.push_back(light);
+        sceneFile(name, "box_on_plane.gltf", lights, cameraChanges);
     };
     // A point light under the box, over the middle of the sun's shadow: the sun's shadow must not
     // darken it (the book multiplies all the lights by the sun's visibility).
@@ -380,15 +389,7 @@ void writeShadows(const fs::path& dir) {
         int ground = cut.mesh(json::array({boxPrimitive(cut, floor, {-6, -0.1f, -6}, {6, 0, 6})}));
         cut.scene({cut.node({{"mesh", ground}}), cut.node({{"mesh", cut.mesh(json::array({quad}))}})});
         cut.writeGltf(dir / "cutout_over_plane.gltf");
-        json camera = {
-            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
-        json root = {
-            {"models", json::array({{{"file", "cutout_over_plane.gltf"}}})},
-            {"camera", camera},
-            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
-            {"lights",
-             json::array({{{"type", "directional"}, {"direction", {1, -1, 0}}, {"intensity", 2.0}}})}};
-        writeText(dir / "cutout_over_plane.json", root.dump(2));
+        sceneFile("cutout_over_plane.json", "cutout_over_plane.gltf", json::array({sun({1, -1, 0})}));
     }
     // The same seen through extreme splits (near 0.01, far 1000: a scene much smaller than the
     // view), and from under the box looking straight up.
@@ -403,27 +404,11 @@ void writeShadows(const fs::path& dir) {
         int slab = high.mesh(json::array({boxPrimitive(high, grey, {-6, 20, -6}, {-2.5f, 20.1f, 6})}));
         high.scene({high.node({{"mesh", ground}}), high.node({{"mesh", slab}})});
         high.writeGltf(dir / "slab_overhead.gltf");
-        json camera = {
-            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
-        json root = {
-            {"models", json::array({{{"file", "slab_overhead.gltf"}}})},
-            {"camera", camera},
-            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
-            {"lights",
-             json::array({{{"type", "directional"}, {"direction", {0, -1, 0}}, {"intensity", 2.0}}})}};
-        writeText(dir / "slab_overhead.json", root.dump(2));
+        sceneFile("slab_overhead.json", "slab_overhead.gltf", json::array({sun({0, -1, 0})}));
     }
     // No sun: a point light over the box alone.
-    {
-        json camera = {
-            {"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
-        json root = {
-            {"models", json::array({{{"file", "box_on_plane.gltf"}}})},
-            {"camera", camera},
-            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.1}}},
-            {"lights", json::array({{{"type", "point"}, {"position", {2, 3, 1}}, {"intensity", 4.0}}})}};
-        writeText(dir / "no_sun.json", root.dump(2));
-    }
+    sceneFile("no_sun.json", "box_on_plane.gltf",
+              json::array({{{"type", "point"}, {"position", {2, 3, 1}}, {"intensity", 4.0}}}), {}, 0.1);
     // Looking along the plane (1 over it, 10 degrees down, far 20): which cascade each distance takes.
     scene("cascade_rows.json", {0, -1, 0}, json::array(),
           {{"position", {0, 1, 5.5}}, {"yaw", 0}, {"pitch", -10}, {"far", 20}});
