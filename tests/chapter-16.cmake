@@ -224,3 +224,19 @@ chapter_test(chapter-16.no-sun WORKDIR /
     EXPECT_STDOUT "cascades drawn 0, 0, 0 times in 5 frames.*light output 320x180: 0 NaN, 0 infinite, 0 negative"
     QUIET_STDERR)
 set_tests_properties(chapter-16.no-sun PROPERTIES FIXTURES_REQUIRED gltf-cases)
+
+# Peter-panning: a box standing on the plane under the sun one degree above the horizon, along +x
+# (shadows/box_standing_grazing.json). The plane a quarter metre behind its foot is in its shadow
+# -- (0.75, 0), (0.7, 0.25) -- as is a point 2.5 m behind it (3, 0); beside the strip (3, 1) and in
+# front of the box (-2, 0) it is lit (23: the sun at one degree). An offset lifting the receivers
+# 100 times further (150 texels) lights all of the strip's points: the test fails with it.
+chapter_test(chapter-16.standing-box-grazing WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180
+            --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/box_standing_grazing.json
+            --screenshot ${TEST_OUT}/chapter-16-standing-box.png
+    EXPECT_STDOUT "chapter-16: 2 draws" QUIET_STDERR)
+set_tests_properties(chapter-16.standing-box-grazing PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-standing)
+add_test(NAME chapter-16.standing-box-no-peter-panning COMMAND image_compare ${TEST_OUT}/chapter-16-standing-box.png
+    --size 320 180 --pixel 160 102 0 0 0 --pixel 156 101 0 0 0 --pixel 160 137 0 0 0
+    --pixel 144 137 23 23 23 --pixel 160 59 23 23 23 --pixel-tolerance 2)
+set_tests_properties(chapter-16.standing-box-no-peter-panning PROPERTIES FIXTURES_REQUIRED ch16-standing)

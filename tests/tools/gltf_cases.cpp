@@ -406,6 +406,20 @@ void writeShadows(const fs::path& dir) {
         high.writeGltf(dir / "slab_overhead.gltf");
         sceneFile("slab_overhead.json", "slab_overhead.gltf", json::array({sun({0, -1, 0})}));
     }
+    // Peter-panning: a box standing on the plane (y 0..1) under a sun one degree above the horizon,
+    // along +x: its shadow must start at its foot, not a gap away (an offset that lifts the
+    // receiver toward the light too far would light the plane just behind the box).
+    {
+        gltf::File standing;
+        int grey = standing.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}});
+        int ground = standing.mesh(json::array({boxPrimitive(standing, grey, {-6, -0.1f, -6}, {6, 0, 6})}));
+        int block =
+            standing.mesh(json::array({boxPrimitive(standing, grey, {-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f})}));
+        standing.scene({standing.node({{"mesh", ground}}), standing.node({{"mesh", block}})});
+        standing.writeGltf(dir / "box_standing.gltf");
+        sceneFile("box_standing_grazing.json", "box_standing.gltf",
+                  json::array({sun({std::cos(glm::radians(1.0)), -std::sin(glm::radians(1.0)), 0})}));
+    }
     // No sun: a point light over the box alone.
     sceneFile("no_sun.json", "box_on_plane.gltf",
               json::array({{{"type", "point"}, {"position", {2, 3, 1}}, {"intensity", 4.0}}}), {}, 0.1);
