@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "common/cli.hpp"
 #include "common/commands.hpp"
 #include "common/device.hpp"
+#include "common/files.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
 #include "common/gui_pass.hpp"
@@ -208,10 +210,10 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 //> book-scene
 // --book-scene: the book's chapter 16 changes chapter 15's scene (its Main.java): the camera at
 // (-5, 5, 0), turned 90 degrees about y (looking along +x) and 20 down; zNear 0.5 and zFar 50; the
-// sun straight down at intensity 8; no point light, and no marker for it. The book also adds a
-// tree scaled 0.005, which it ships only in its own converted format (the .vtx/.idx binaries its
-// model generator writes), not as glTF: it is not loaded here.
-void useBookChapter16Scene(common::Scene& scene) {
+// sun straight down at intensity 8; no point light, and no marker for it; and a tree at the
+// origin, scaled 0.005, which the book ships in its own converted format only
+// (booksamples/chapter-16/resources/models/tree/tree.json, common/book_model.hpp).
+void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bookScene) {
     scene.camera.position = {-5.0f, 5.0f, 0.0f};
     scene.camera.yaw = 90.0f;
     scene.camera.pitch = -20.0f;
@@ -220,6 +222,22 @@ void useBookChapter16Scene(common::Scene& scene) {
     scene.lights = {common::Light{
         .type = common::Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}, .intensity = 8.0f}};
     scene.models.resize(1);  // Sponza; the point light's marker goes with the light
+    // The clone's chapter-16 sample, from the clone or from chapter-15's Sponza.gltf in it
+    // (booksamples/chapter-15/resources/models/sponza/Sponza.gltf).
+    std::error_code ec;
+    std::filesystem::path samples =
+        std::filesystem::is_directory(bookScene, ec)
+            ? bookScene / "booksamples"
+            : bookScene.parent_path().parent_path().parent_path().parent_path().parent_path();
+    std::filesystem::path tree = samples / "chapter-16" / "resources" / "models" / "tree" / "tree.json";
+    if (!std::filesystem::is_regular_file(tree, ec)) {
+        std::printf("chapter-16: the book's tree is not at %s: the scene without it\n",
+                    common::utf8(tree).c_str());
+        return;
+    }
+    common::ModelInstance treeInstance{.file = tree};
+    treeInstance.transform.scale = glm::vec3(0.005f);
+    scene.models.push_back(treeInstance);
 }
 //< book-scene
 
@@ -316,7 +334,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
 void setUp(Chapter& c, const common::Options& options) {
     common::ModelCache models;
     c.scene = common::sceneFromOptions(options, models);
-    if (!options.bookScene.empty()) useBookChapter16Scene(c.scene);
+    if (!options.bookScene.empty()) useBookChapter16Scene(c.scene, options.bookScene);
 
     c.target = common::openTarget(options, "chapter-16: cascade shadows");
     c.instance =

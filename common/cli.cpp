@@ -56,9 +56,10 @@ constexpr const char* kUsage =
 constexpr const char* kSceneUsage =
     "  --scene FILE.json  render the scene described by FILE.json (default: the generated default scene)\n"
     "  --model FILE       render one model, framed by the camera: OBJ (with its MTL and textures)\n"
-    "                     or glTF 2.0 (.gltf with its files, or .glb)\n"
-    "  --book-scene PATH  the book's chapter-15 scene: its Sponza.gltf (PATH: the book's clone, or the\n"
-    "                     .gltf), its camera and lights\n"
+    "                     or glTF 2.0 (.gltf with its files, or .glb), or the book's converted\n"
+    "                     models (.json with its .vtx, .idx and _mat.json)\n"
+    "  --book-scene PATH  the book's scene: its Sponza.gltf (PATH: the book's clone, or the .gltf)\n"
+    "                     with chapter 15's camera and lights (chapter-16: chapter 16's, and its tree)\n"
     "  --view NAME        show one attachment instead of the final image: %s\n";
 
 constexpr const char* kExitCodes =

@@ -1,6 +1,8 @@
 // OBJ/MTL loading and tangent generation.
 #include "common/model.hpp"
 
+#include "common/book_model.hpp"
+
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
@@ -460,8 +462,11 @@ ModelData loadModel(const std::filesystem::path& path) {
         model = loadGltfModel(path);
     else if (extension == ".obj")
         model = loadObjModel(path);
+    else if (extension == ".json")  // the book's converted models (its chapter-16 tree)
+        model = loadBookModel(path);
     else
-        throw InputError(utf8(path) + ": not a model file we read (.obj, .gltf or .glb)");
+        throw InputError(utf8(path) +
+                         ": not a model file we read (.obj, .gltf, .glb or the book's converted .json)");
     // Every coordinate finite is not enough: a model from -3e38 to 3e38 has an infinite extent,
     // and the camera framed on it, the bounds and the distances the renderer squares overflow.
     for (const glm::vec3& corner : {model.boundsMin, model.boundsMax})

@@ -206,11 +206,25 @@ set_tests_properties(chapter-16.cascade-choice-by-distance PROPERTIES FIXTURES_R
 
 # --book-scene on the stand-in clone (tools/gltf_cases.cpp, book/): the book's chapter-16 set-up --
 # its camera at (-5, 5, 0) looking along +x, the sun straight down at intensity 8, no point light
-# and no marker cube (5 draws where chapter-15 has 6).
+# and no marker cube (5 draws where chapter-15 has 6), and the stand-in tree in the book's converted
+# format (2 draws more, its crown a checker of cut-out leaves whose shadow is a checker too); from
+# the clone or from its chapter-15 Sponza.gltf; a clone without chapter-16's tree: the scene
+# without it, said.
 chapter_test(chapter-16.book-scene WORKDIR /
     COMMAND ${CH16_RUN} --headless --width 640 --height 360 --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book
             --screenshot ${TEST_OUT}/chapter-16-book-scene.png
-    EXPECT_STDOUT "chapter-16: 5 draws, 640 triangles.*1 lights" QUIET_STDERR)
+    EXPECT_STDOUT "chapter-16: 7 draws, 650 triangles.*1 lights" QUIET_STDERR)
+chapter_test(chapter-16.book-scene-from-gltf WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --book-scene
+            ${CMAKE_CURRENT_BINARY_DIR}/gltf/book/booksamples/chapter-15/resources/models/sponza/Sponza.gltf
+    EXPECT_STDOUT "chapter-16: 7 draws, 650 triangles" QUIET_STDERR)
+chapter_test(chapter-16.book-scene-without-tree WORKDIR /
+    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --book-scene
+            ${CMAKE_CURRENT_BINARY_DIR}/gltf/book-without-tree
+    EXPECT_STDOUT "the book's tree is not at .*tree.json: the scene without it.*chapter-16: 5 draws, 640 triangles"
+    QUIET_STDERR)
+set_tests_properties(chapter-16.book-scene-from-gltf chapter-16.book-scene-without-tree PROPERTIES
+    FIXTURES_REQUIRED gltf-cases)
 set_tests_properties(chapter-16.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cases FIXTURES_SETUP ch16-book)
 add_test(NAME chapter-16.book-scene-image COMMAND image_compare ${TEST_OUT}/chapter-16-book-scene.png
     --size 640 360 --golden ${GOLDEN}/chapter-16-book-scene.png --max-diff 5 --max-fraction 0.001)

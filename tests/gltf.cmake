@@ -186,8 +186,8 @@ gltf_hostile(brackets-in-string 0 "chapter-[0-9]+: 1 draws" brackets_in_string.g
 hostile_test(gltf-shared-sparse-indexed 15 0 "chapter-15: 1000 draws, 1000 triangles" --model ${GH}/shared_sparse_indexed.gltf)
 # A loose timeout: decoded once per node, the accessor would take about 70 s here.
 set_tests_properties(hostile.gltf-shared-sparse-indexed PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases" TIMEOUT 40)
-hostile_test(gltf-unknown-extension 15 2 "${DATA}/syntax_error.json: not a model file we read \\(.obj, .gltf or .glb\\)"
-    --model ${DATA}/syntax_error.json)
+hostile_test(gltf-unknown-extension 15 2 "${DATA}/corrupt.png: not a model file we read \\(.obj, .gltf, .glb or the book's converted .json\\)"
+    --model ${DATA}/corrupt.png)
 # Warnings: a missing image is a missing texture (the default one); BLEND is drawn as MASK.
 gltf_hostile(missing-image warn "texture '${GH}/no_such_image.png' not found. using the default texture" missing_image.gltf)
 gltf_hostile(blend warn "${GH}/blend.gltf: alphaMode BLEND is drawn as MASK with a cutoff of 0.5 \\(a G-buffer holds one surface per pixel\\)"
@@ -235,3 +235,36 @@ hostile_test(book-scene-missing 10 2
     --book-scene ${GLTF}/no-such-clone)
 set_tests_properties(hostile.book-scene-not-a-clone hostile.book-scene-missing PROPERTIES
     FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
+
+# The book's converted models (common/book_model.cpp): the stand-in tree loads (--model, any
+# chapter), and each broken rule is refused in one line naming the file and the rule -- a range
+# past its file, one whose offset would wrap a sum, part of a vertex or a triangle, a material id
+# no material has, a size that is not a number, no meshes, a colour beyond a float, an index past
+# its mesh, a missing .idx -- and 20,000 meshes naming one 50 KB range (18 million vertices) are
+# refused by their sum before anything is decoded.
+set(BOOK_TREE ${GLTF}/book/booksamples/chapter-16/resources/models/tree/tree.json)
+hostile_test(book-model-tree 15 0 "chapter-15: 2 draws, 10 triangles, [0-9]+ textures, 2 materials" --model ${BOOK_TREE})
+set_tests_properties(hostile.book-model-tree PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
+set(BH ${GLTF}/book-hostile)
+foreach(case "vertices_past_end|tree.json: mesh 1's vertices \\(bytes 896 \\+ 56000\\) lie past the end of the .vtx file \\(1120 bytes\\)"
+             "offset_wraps|tree.json: mesh 0's vertices \\(bytes 18446744073709551605 \\+ 896\\) lie past the end"
+             "partial_vertex|tree.json: mesh 0's vtx_size 55 is not a whole number of 56-byte vertices"
+             "partial_triangle|tree.json: mesh 0's idx_size 8 is not a whole number of triangles"
+             "unknown_material|tree.json: mesh 0's material_id 'no-such-material' is in none of tree_mat.json"
+             "size_not_a_number|tree.json: mesh 0's \"vtx_size\" is not a whole number 0 or more"
+             "no_meshes|tree.json: \"meshes\" is not a list of meshes"
+             "color_not_finite|tree_mat.json: material 0's diffuse_color's \"x\" is not a finite number"
+             "index_past_vertices|tree.json: mesh 0's index 6 is 4, past its 4 vertices"
+             "ranges_repeated|tree.json: its meshes make more than 16777216 vertices, our limit"
+             "missing_idx|tree.idx: no such file")
+    string(FIND "${case}" "|" bar)
+    string(SUBSTRING "${case}" 0 ${bar} name)
+    math(EXPR rest "${bar} + 1")
+    string(SUBSTRING "${case}" ${rest} -1 message)
+    string(REPLACE "_" "-" test ${name})
+    hostile_test(book-model-${test} 15 2 "${BH}/${name}/${message}" --model ${BH}/${name}/tree.json)
+    set_tests_properties(hostile.book-model-${test} PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases" TIMEOUT 20)
+endforeach()
+# Not JSON: one line.
+hostile_test(book-model-not-json 15 2 "${DATA}/syntax_error.json: not JSON \\(the book's converted model\\)"
+    --model ${DATA}/syntax_error.json)

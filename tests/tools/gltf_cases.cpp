@@ -847,11 +847,98 @@ void writeHostile(const fs::path& dir) {
 
 // ---- A stand-in for the book's clone (--book-scene) -----------------------------------------
 
+// The book's converted model format (common/book_model.hpp): 14 big-endian floats a vertex,
+// big-endian 32-bit indices, a JSON of byte ranges and one of materials.
+struct BookMesh {
+    std::vector<float> vertices;  // 14 a vertex
+    std::vector<uint32_t> indices;
+    std::string material;
+};
+
+void bookQuad(BookMesh& mesh, vec3 corner, vec3 u, vec3 v, glm::vec2 uvScale) {
+    vec3 n = glm::normalize(glm::cross(u, v)), t = glm::normalize(u), b = glm::normalize(v);
+    uint32_t first = uint32_t(mesh.vertices.size() / 14);
+    const glm::vec2 corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (glm::vec2 c : corners) {
+        vec3 p = corner + u * c.x + v * c.y;
+        for (float f :
+             {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y, t.z, b.x, b.y, b.z, c.x * uvScale.x, c.y * uvScale.y})
+            mesh.vertices.push_back(f);
+    }
+    mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+}
+
+// DIR/tree.json, tree.vtx, tree.idx, tree_mat.json, trunk.png, leaf.png: a stand-in for the book's
+// chapter-16 tree in its units (the book scales it by 0.005): a trunk 100 x 1000 x 100 and a flat
+// crown 800 x 800 at height 900 whose leaf texture is a checker of opaque and transparent
+// squares (the shadow it casts is that checker).
+void writeBookTree(const fs::path& dir) {
+    fs::create_directories(dir);
+    BookMesh trunk{.material = "tree-mat-1"}, crown{.material = "tree-mat-2"};
+    const float h = 50, top = 1000;
+    bookQuad(trunk, {-h, 0, h}, {2 * h, 0, 0}, {0, top, 0}, {1, 1});       // +z face
+    bookQuad(trunk, {h, 0, -h}, {-2 * h, 0, 0}, {0, top, 0}, {1, 1});      // -z
+    bookQuad(trunk, {h, 0, h}, {0, 0, -2 * h}, {0, top, 0}, {1, 1});       // +x
+    bookQuad(trunk, {-h, 0, -h}, {0, 0, 2 * h}, {0, top, 0}, {1, 1});      // -x
+    bookQuad(crown, {-400, 900, 400}, {800, 0, 0}, {0, 0, -800}, {1, 1});  // facing up
+    std::vector<uint8_t> vtx, idx;
+    auto put = [](std::vector<uint8_t>& out, uint32_t bits) {
+        for (int shift : {24, 16, 8, 0}) out.push_back(uint8_t(bits >> shift));
+    };
+    json meshes = json::array();
+    for (const BookMesh* mesh : {&trunk, &crown}) {
+        size_t vtxStart = vtx.size(), idxStart = idx.size();
+        for (float f : mesh->vertices) {
+            uint32_t bits;
+            std::memcpy(&bits, &f, sizeof(bits));
+            put(vtx, bits);
+        }
+        for (uint32_t i : mesh->indices) put(idx, i);
+        meshes.push_back({{"id", mesh->material == "tree-mat-1" ? "trunk_0" : "leaf_1"},
+                          {"material_id", mesh->material},
+                          {"offset_vtx", vtxStart},
+                          {"vtx_size", vtx.size() - vtxStart},
+                          {"offset_idx", idxStart},
+                          {"idx_size", idx.size() - idxStart}});
+    }
+    writeText(dir / "tree.vtx", std::string(vtx.begin(), vtx.end()));
+    writeText(dir / "tree.idx", std::string(idx.begin(), idx.end()));
+    writeText(dir / "tree.json", json({{"id", "tree"},
+                                       {"meshes", meshes},
+                                       {"vtx_path", "resources/models/tree/tree.vtx"},
+                                       {"idx_path", "resources/models/tree/tree.idx"}})
+                                     .dump(2));
+    auto material = [](const char* id, const char* texture) {
+        return json{{"id", id},
+                    {"texture_path", texture},
+                    {"normal_map_path", ""},
+                    {"metal_rough_map", ""},
+                    {"diffuse_color", {{"x", 1.0}, {"y", 1.0}, {"z", 1.0}, {"w", 1.0}}},
+                    {"roughness_factor", 1.0},
+                    {"metallic_factor", 0.0}};
+    };
+    writeText(dir / "tree_mat.json",
+              json::array({material("tree-mat-1", "resources\\models\\tree\\trunk.png"),
+                           material("tree-mat-2", "resources\\models\\tree\\leaf.png")})
+                  .dump(2));
+    std::vector<uint8_t> bark(8 * 8 * 3), leaf(8 * 8 * 4);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            uint8_t* b = &bark[size_t(y * 8 + x) * 3];
+            b[0] = 110, b[1] = 80, b[2] = 50;
+            uint8_t* l = &leaf[size_t(y * 8 + x) * 4];
+            l[0] = 60, l[1] = 150, l[2] = 50;
+            l[3] = ((x / 2 + y / 2) % 2) ? 255 : 0;  // 2 x 2 texel squares, every other one transparent
+        }
+    writePng(dir / "trunk.png", 8, 8, 3, bark);
+    writePng(dir / "leaf.png", 8, 8, 4, leaf);
+}
+
 // DIR/booksamples/chapter-15/resources/models/sponza/Sponza.gltf, where the book keeps Sponza: a
 // floor and four walls of Sponza's extent (x -15..14, y -1..11.5, z -9.5..9), under one node
 // scaled 0.008 like the real file's, each face its own grey, so that the book's camera (at
 // (0, 5, 0), looking along +x and down) and lights show in one picture.
-void writeBookClone(const fs::path& dir) {
+void writeBookClone(const fs::path& dir, bool tree = true) {
     fs::path models = dir / "booksamples" / "chapter-15" / "resources" / "models" / "sponza";
     fs::create_directories(models);
     gltf::File file;
@@ -895,6 +982,54 @@ void writeBookClone(const fs::path& dir) {
     file.node({{"mesh", file.mesh(primitives)}, {"scale", {0.008, 0.008, 0.008}}});
     file.scene({0});
     file.writeGltf(models / "Sponza.gltf");
+    if (tree) writeBookTree(dir / "booksamples" / "chapter-16" / "resources" / "models" / "tree");
+}
+
+// The book's converted format broken one rule at a time (DIR/NAME/tree.json, with the stand-in
+// tree's other files): each must be refused in one line naming the file and the rule.
+void writeBookModelHostile(const fs::path& dir) {
+    auto variant = [&](const char* name, const std::function<void(json&, json&)>& change) {
+        fs::path out = dir / name;
+        writeBookTree(out);
+        json model = json::parse(std::ifstream(out / "tree.json"));
+        json materials = json::parse(std::ifstream(out / "tree_mat.json"));
+        change(model, materials);
+        writeText(out / "tree.json", model.dump(2));
+        writeText(out / "tree_mat.json", materials.dump(2));
+    };
+    variant("vertices_past_end", [](json& m, json&) { m["meshes"][1]["vtx_size"] = 56 * 1000; });
+    variant("offset_wraps", [](json& m, json&) { m["meshes"][0]["offset_vtx"] = UINT64_MAX - 10; });
+    variant("partial_vertex", [](json& m, json&) { m["meshes"][0]["vtx_size"] = 55; });
+    variant("partial_triangle", [](json& m, json&) { m["meshes"][0]["idx_size"] = 8; });
+    variant("unknown_material", [](json& m, json&) { m["meshes"][0]["material_id"] = "no-such-material"; });
+    variant("size_not_a_number", [](json& m, json&) { m["meshes"][0]["vtx_size"] = "many"; });
+    variant("no_meshes", [](json& m, json&) { m["meshes"] = json::array(); });
+    variant("color_not_finite", [](json&, json& mat) { mat[0]["diffuse_color"]["x"] = 1e300; });
+    // A small file asking for much work: 20,000 meshes each naming the same 900 vertices (50 KB of
+    // them) make 18 million vertices, more than the 2^24 our limit allows -- refused before any is
+    // decoded.
+    {
+        fs::path out = dir / "ranges_repeated";
+        writeBookTree(out);
+        writeText(out / "tree.vtx", std::string(900 * 56, '\0'));
+        writeText(out / "tree.idx", std::string(12, '\0'));
+        json meshes = json::array();
+        for (int i = 0; i < 20000; ++i)
+            meshes.push_back({{"material_id", "tree-mat-1"},
+                              {"offset_vtx", 0},
+                              {"vtx_size", 900 * 56},
+                              {"offset_idx", 0},
+                              {"idx_size", 12}});
+        writeText(out / "tree.json",
+                  json({{"meshes", meshes}, {"vtx_path", "tree.vtx"}, {"idx_path", "tree.idx"}}).dump());
+    }
+    variant("index_past_vertices", [](json& m, json&) {
+        m["meshes"][0]["vtx_size"] = 56 * 4;  // the trunk's first face only: its indices reach 15
+    });
+    // The .idx file named by the JSON is not there.
+    fs::path missing = dir / "missing_idx";
+    writeBookTree(missing);
+    fs::remove(missing / "tree.idx");
 }
 
 }  // namespace
@@ -913,6 +1048,8 @@ int main(int argc, char** argv) {
         writeShadows(dir / "shadows");
         writeHostile(dir / "hostile");
         writeBookClone(dir / "book");
+        writeBookClone(dir / "book-without-tree", false);
+        writeBookModelHostile(dir / "book-hostile");
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "gltf_cases: %s\n", error.what());

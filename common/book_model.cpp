@@ -1,0 +1,224 @@
+// The book's converted models (book_model.hpp).
+#include "common/book_model.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/check.hpp"
+#include "common/files.hpp"
+
+namespace common {
+
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+    std::string file;  // for messages
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(file + ": " + what); }
+    const json& field(const json& object, const char* name, const std::string& where) const {
+        if (!object.is_object() || !object.contains(name)) fail(where + " has no \"" + name + "\"");
+        return object[name];
+    }
+    std::string text(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_string()) fail(where + "'s \"" + name + "\" is not a string");
+        return value.get<std::string>();
+    }
+    uint64_t count(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_number_unsigned()) fail(where + "'s \"" + name + "\" is not a whole number 0 or more");
+        return value.get<uint64_t>();
+    }
+    float number(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_number() || !std::isfinite(value.get<double>()) || std::abs(value.get<double>()) > 1e30)
+            fail(where + "'s \"" + name + "\" is not a finite number");
+        return value.get<float>();
+    }
+};
+
+json parse(const std::filesystem::path& path) {
+    std::string bytes = readInputFile(path);
+    json root = json::parse(bytes, nullptr, false);
+    if (root.is_discarded()) throw InputError(utf8(path) + ": not JSON (the book's converted model)");
+    return root;
+}
+
+// A path of the book's ("resources\models\tree\trunk.png", from its sample directory): the file of
+// that name beside the model's JSON. Empty: none.
+TextureRef bookTexture(const std::filesystem::path& directory, std::string path) {
+    if (path.empty()) return {};
+    for (char& c : path)
+        if (c == '\\') c = '/';
+    return TextureRef{.image = {.file = directory / std::filesystem::path(path).filename()}};
+}
+
+float bigEndianFloat(const uint8_t* bytes) {
+    uint32_t bits = uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | bytes[3];
+    float value;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+}
+
+uint32_t bigEndianInt(const uint8_t* bytes) {
+    return uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | bytes[3];
+}
+
+// A binary file the model names, whole, within `limit` bytes.
+std::vector<uint8_t> readBinary(const std::filesystem::path& path, uint64_t limit, const Reader& r) {
+    requireInputFile(path);
+    std::error_code ec;
+    uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) r.fail("cannot read '" + utf8(path) + "'");
+    if (size > limit)
+        r.fail("'" + utf8(path) + "' has " + std::to_string(size) + " bytes, more than the " +
+               std::to_string(limit) + " our limits allow");
+    std::vector<char> bytes = readFile(path);
+    return std::vector<uint8_t>(bytes.begin(), bytes.end());
+}
+
+}  // namespace
+
+//> book-model
+ModelData loadBookModel(const std::filesystem::path& path) {
+    Reader r{utf8(path)};
+    json root = parse(path);
+    std::filesystem::path directory = path.parent_path();
+    const json& meshes = r.field(root, "meshes", "the model");
+    if (!meshes.is_array() || meshes.empty()) r.fail("\"meshes\" is not a list of meshes");
+    if (meshes.size() > kMaxModelPrimitives)
+        r.fail(std::to_string(meshes.size()) + " meshes, more than the " +
+               std::to_string(kMaxModelPrimitives) + " our limits allow");
+    constexpr uint64_t kVertexBytes = 14 * 4, kIndexBytes = 4;
+    std::vector<uint8_t> vertices =
+        readBinary(directory / std::filesystem::path(r.text(root, "vtx_path", "the model")).filename(),
+                   kMaxModelVertices * kVertexBytes, r);
+    std::vector<uint8_t> indices =
+        readBinary(directory / std::filesystem::path(r.text(root, "idx_path", "the model")).filename(),
+                   kMaxModelIndices * kIndexBytes, r);
+
+    // The materials: NAME_mat.json beside NAME.json, by id.
+    ModelData model;
+    std::map<std::string, uint32_t> materialIndex;
+    std::filesystem::path materialsPath = directory / (path.stem().string() + "_mat.json");
+    Reader m{utf8(materialsPath)};
+    json materials = parse(materialsPath);
+    if (!materials.is_array()) m.fail("not a list of materials");
+    for (size_t i = 0; i < materials.size(); ++i) {
+        const json& entry = materials[i];
+        std::string where = "material " + std::to_string(i);
+        MaterialData material;
+        material.name = m.text(entry, "id", where);
+        const json& color = m.field(entry, "diffuse_color", where);
+        material.diffuse = {m.number(color, "x", where + "'s diffuse_color"), m.number(color, "y", where),
+                            m.number(color, "z", where), m.number(color, "w", where)};
+        material.roughness = m.number(entry, "roughness_factor", where);
+        material.metallic = m.number(entry, "metallic_factor", where);
+        material.diffuseTexture = bookTexture(directory, m.text(entry, "texture_path", where));
+        material.normalTexture = bookTexture(directory, m.text(entry, "normal_map_path", where));
+        material.metalRoughTexture = bookTexture(directory, m.text(entry, "metal_rough_map", where));
+        // The book's shaders discard texels of alpha below 0.5: a cut-out wherever there is alpha.
+        material.alphaMode = AlphaMode::Auto;
+        materialIndex[material.name] = uint32_t(model.materials.size());
+        model.materials.push_back(material);
+    }
+    if (model.materials.empty()) model.materials.push_back(MaterialData{.name = "default"});
+
+    // First every mesh's ranges, checked, and their sums against our limits (ranges may be named
+    // more than once: a small file may ask for much work); only then anything decoded.
+    struct Range {
+        uint64_t vertexOffset, vertexCount, indexOffset, indexCount;
+        uint32_t material;
+    };
+    std::vector<Range> ranges;
+    uint64_t totalVertices = 0, totalIndices = 0;
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        std::string where = "mesh " + std::to_string(i);
+        const json& entry = meshes[i];
+        uint64_t vertexOffset = r.count(entry, "offset_vtx", where),
+                 vertexBytes = r.count(entry, "vtx_size", where);
+        uint64_t indexOffset = r.count(entry, "offset_idx", where),
+                 indexBytes = r.count(entry, "idx_size", where);
+        // Each range within its file (compared without a sum that could wrap), whole vertices and
+        // whole triangles.
+        if (vertexOffset > vertices.size() || vertexBytes > vertices.size() - vertexOffset)
+            r.fail(where + "'s vertices (bytes " + std::to_string(vertexOffset) + " + " +
+                   std::to_string(vertexBytes) + ") lie past the end of the .vtx file (" +
+                   std::to_string(vertices.size()) + " bytes)");
+        if (indexOffset > indices.size() || indexBytes > indices.size() - indexOffset)
+            r.fail(where + "'s indices (bytes " + std::to_string(indexOffset) + " + " +
+                   std::to_string(indexBytes) + ") lie past the end of the .idx file (" +
+                   std::to_string(indices.size()) + " bytes)");
+        if (vertexBytes % kVertexBytes != 0)
+            r.fail(where + "'s vtx_size " + std::to_string(vertexBytes) +
+                   " is not a whole number of 56-byte vertices");
+        if (indexBytes % (3 * kIndexBytes) != 0)
+            r.fail(where + "'s idx_size " + std::to_string(indexBytes) +
+                   " is not a whole number of triangles");
+        uint32_t material = 0;
+        std::string materialId = r.text(entry, "material_id", where);
+        if (auto found = materialIndex.find(materialId); found != materialIndex.end())
+            material = found->second;
+        else if (!materialId.empty())
+            r.fail(where + "'s material_id '" + materialId + "' is in none of " +
+                   utf8(materialsPath.filename()));
+        ranges.push_back(
+            {vertexOffset, vertexBytes / kVertexBytes, indexOffset, indexBytes / kIndexBytes, material});
+        totalVertices += vertexBytes / kVertexBytes;
+        totalIndices += indexBytes / kIndexBytes;
+        if (totalVertices > kMaxModelVertices || totalIndices > kMaxModelIndices)
+            r.fail("its meshes make more than " +
+                   (totalVertices > kMaxModelVertices ? std::to_string(kMaxModelVertices) + " vertices"
+                                                      : std::to_string(kMaxModelIndices) + " indices") +
+                   ", our limit");
+    }
+
+    model.boundsMin = glm::vec3(std::numeric_limits<float>::max());
+    model.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        const Range& range = ranges[i];
+        std::string where = "mesh " + std::to_string(i);
+        MeshData mesh;
+        mesh.material = range.material;
+        mesh.vertices.resize(size_t(range.vertexCount));
+        for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+            const uint8_t* bytes = &vertices[size_t(range.vertexOffset) + v * kVertexBytes];
+            float f[14];
+            for (int k = 0; k < 14; ++k) {
+                f[k] = bigEndianFloat(bytes + 4 * k);
+                if (!std::isfinite(f[k]) || std::abs(f[k]) > kMaxModelCoordinate)
+                    r.fail(where + "'s vertex " + std::to_string(v) +
+                           " has a value that is not finite or beyond 1e15");
+            }
+            Vertex& vertex = mesh.vertices[v];
+            vertex.position = {f[0], f[1], f[2]};
+            vertex.normal = {f[3], f[4], f[5]};
+            vertex.tangent = {f[6], f[7], f[8]};
+            vertex.bitangent = {f[9], f[10], f[11]};
+            vertex.uv = {f[12], f[13]};  // the book's generator already made v top-down (1 - v)
+            model.boundsMin = glm::min(model.boundsMin, vertex.position);
+            model.boundsMax = glm::max(model.boundsMax, vertex.position);
+        }
+        mesh.indices.resize(size_t(range.indexCount));
+        for (size_t k = 0; k < mesh.indices.size(); ++k) {
+            uint32_t index = bigEndianInt(&indices[size_t(range.indexOffset) + k * kIndexBytes]);
+            if (index >= range.vertexCount)
+                r.fail(where + "'s index " + std::to_string(k) + " is " + std::to_string(index) +
+                       ", past its " + std::to_string(range.vertexCount) + " vertices");
+            mesh.indices[k] = index;
+        }
+        if (!mesh.indices.empty()) model.meshes.push_back(std::move(mesh));
+    }
+    if (model.meshes.empty()) r.fail("no mesh has a triangle");
+    return model;
+}
+//< book-model
+
+}  // namespace common
