@@ -223,16 +223,18 @@ void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bo
         .type = common::Light::Type::Directional, .direction = {0.0f, -1.0f, 0.0f}, .intensity = 8.0f}};
     scene.models.resize(1);  // Sponza; the point light's marker goes with the light
     // The clone's chapter-16 sample, from the clone or from chapter-15's Sponza.gltf in it
-    // (booksamples/chapter-15/resources/models/sponza/Sponza.gltf).
+    // (booksamples/chapter-15/resources/models/sponza/Sponza.gltf), however the path was written.
     std::error_code ec;
+    std::filesystem::path given =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(bookScene, ec), ec);
     std::filesystem::path samples =
-        std::filesystem::is_directory(bookScene, ec)
-            ? bookScene / "booksamples"
-            : bookScene.parent_path().parent_path().parent_path().parent_path().parent_path();
+        std::filesystem::is_directory(given, ec)
+            ? given / "booksamples"
+            : given.parent_path().parent_path().parent_path().parent_path().parent_path();
     std::filesystem::path tree = samples / "chapter-16" / "resources" / "models" / "tree" / "tree.json";
     if (!std::filesystem::is_regular_file(tree, ec)) {
-        std::printf("chapter-16: the book's tree is not at %s: the scene without it\n",
-                    common::utf8(tree).c_str());
+        std::fprintf(stderr, "warning: the book's tree is not at %s: the scene without it\n",
+                     common::utf8(tree).c_str());
         return;
     }
     common::ModelInstance treeInstance{.file = tree};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/gltf_document.hpp"  // pathFromUtf8
 
 namespace common {
 
@@ -36,10 +38,11 @@ struct Reader {
         if (!value.is_number_unsigned()) fail(where + "'s \"" + name + "\" is not a whole number 0 or more");
         return value.get<uint64_t>();
     }
-    float number(const json& object, const char* name, const std::string& where) const {
+    // A factor, 0 to 1 as glTF's.
+    float factor(const json& object, const char* name, const std::string& where) const {
         const json& value = field(object, name, where);
-        if (!value.is_number() || !std::isfinite(value.get<double>()) || std::abs(value.get<double>()) > 1e30)
-            fail(where + "'s \"" + name + "\" is not a finite number");
+        if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() <= 1.0))
+            fail(where + "'s \"" + name + "\" is not a number from 0 to 1");
         return value.get<float>();
     }
 };
@@ -51,13 +54,22 @@ json parse(const std::filesystem::path& path) {
     return root;
 }
 
-// A path of the book's ("resources\models\tree\trunk.png", from its sample directory): the file of
-// that name beside the model's JSON. Empty: none.
-TextureRef bookTexture(const std::filesystem::path& directory, std::string path) {
-    if (path.empty()) return {};
+// A path of the book's ("resources\\models\\tree\\trunk.png", from its sample directory, with
+// Windows' backslashes or not): the file of that name beside the model's JSON.
+std::filesystem::path besideJson(const std::filesystem::path& directory, std::string path, const Reader& r,
+                                 const std::string& what) {
     for (char& c : path)
         if (c == '\\') c = '/';
-    return TextureRef{.image = {.file = directory / std::filesystem::path(path).filename()}};
+    std::filesystem::path name = pathFromUtf8(path).filename();
+    if (name.empty() || name == "." || name == "..") r.fail(what + " '" + path + "' names no file");
+    return directory / name;
+}
+
+// A material's texture: none where its path is empty.
+TextureRef bookTexture(const std::filesystem::path& directory, const std::string& path, const Reader& r,
+                       const std::string& what) {
+    if (path.empty()) return {};
+    return TextureRef{.image = {.file = besideJson(directory, path, r, what)}};
 }
 
 float bigEndianFloat(const uint8_t* bytes) {
@@ -71,17 +83,20 @@ uint32_t bigEndianInt(const uint8_t* bytes) {
     return uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | bytes[3];
 }
 
-// A binary file the model names, whole, within `limit` bytes.
+// A binary file the model names, whole, within `limit` bytes; InputError naming it otherwise.
 std::vector<uint8_t> readBinary(const std::filesystem::path& path, uint64_t limit, const Reader& r) {
     requireInputFile(path);
     std::error_code ec;
     uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec) r.fail("cannot read '" + utf8(path) + "'");
+    if (ec) throw InputError(utf8(path) + ": cannot read it");
     if (size > limit)
         r.fail("'" + utf8(path) + "' has " + std::to_string(size) + " bytes, more than the " +
                std::to_string(limit) + " our limits allow");
-    std::vector<char> bytes = readFile(path);
-    return std::vector<uint8_t>(bytes.begin(), bytes.end());
+    std::vector<uint8_t> bytes(static_cast<size_t>(size));
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        throw InputError(utf8(path) + ": cannot read it");
+    return bytes;
 }
 
 }  // namespace
@@ -98,16 +113,16 @@ ModelData loadBookModel(const std::filesystem::path& path) {
                std::to_string(kMaxModelPrimitives) + " our limits allow");
     constexpr uint64_t kVertexBytes = 14 * 4, kIndexBytes = 4;
     std::vector<uint8_t> vertices =
-        readBinary(directory / std::filesystem::path(r.text(root, "vtx_path", "the model")).filename(),
+        readBinary(besideJson(directory, r.text(root, "vtx_path", "the model"), r, "\"vtx_path\""),
                    kMaxModelVertices * kVertexBytes, r);
     std::vector<uint8_t> indices =
-        readBinary(directory / std::filesystem::path(r.text(root, "idx_path", "the model")).filename(),
+        readBinary(besideJson(directory, r.text(root, "idx_path", "the model"), r, "\"idx_path\""),
                    kMaxModelIndices * kIndexBytes, r);
 
     // The materials: NAME_mat.json beside NAME.json, by id.
     ModelData model;
     std::map<std::string, uint32_t> materialIndex;
-    std::filesystem::path materialsPath = directory / (path.stem().string() + "_mat.json");
+    std::filesystem::path materialsPath = directory / pathFromUtf8(utf8(path.stem()) + "_mat.json");
     Reader m{utf8(materialsPath)};
     json materials = parse(materialsPath);
     if (!materials.is_array()) m.fail("not a list of materials");
@@ -116,20 +131,32 @@ ModelData loadBookModel(const std::filesystem::path& path) {
         std::string where = "material " + std::to_string(i);
         MaterialData material;
         material.name = m.text(entry, "id", where);
+        if (material.name.empty() || materialIndex.count(material.name))
+            m.fail(where + "'s id '" + material.name + "' is empty or another material's");
         const json& color = m.field(entry, "diffuse_color", where);
-        material.diffuse = {m.number(color, "x", where + "'s diffuse_color"), m.number(color, "y", where),
-                            m.number(color, "z", where), m.number(color, "w", where)};
-        material.roughness = m.number(entry, "roughness_factor", where);
-        material.metallic = m.number(entry, "metallic_factor", where);
-        material.diffuseTexture = bookTexture(directory, m.text(entry, "texture_path", where));
-        material.normalTexture = bookTexture(directory, m.text(entry, "normal_map_path", where));
-        material.metalRoughTexture = bookTexture(directory, m.text(entry, "metal_rough_map", where));
+        std::string colorWhere = where + "'s diffuse_color";
+        material.diffuse = {m.factor(color, "x", colorWhere), m.factor(color, "y", colorWhere),
+                            m.factor(color, "z", colorWhere), m.factor(color, "w", colorWhere)};
+        material.roughness = m.factor(entry, "roughness_factor", where);
+        material.metallic = m.factor(entry, "metallic_factor", where);
+        material.diffuseTexture =
+            bookTexture(directory, m.text(entry, "texture_path", where), m, where + "'s texture_path");
+        material.normalTexture =
+            bookTexture(directory, m.text(entry, "normal_map_path", where), m, where + "'s normal_map_path");
+        material.metalRoughTexture =
+            bookTexture(directory, m.text(entry, "metal_rough_map", where), m, where + "'s metal_rough_map");
         // The book's shaders discard texels of alpha below 0.5: a cut-out wherever there is alpha.
         material.alphaMode = AlphaMode::Auto;
         materialIndex[material.name] = uint32_t(model.materials.size());
         model.materials.push_back(material);
     }
-    if (model.materials.empty()) model.materials.push_back(MaterialData{.name = "default"});
+    // A mesh without a material id (the book's generator writes "" for none) gets a default one.
+    auto defaultMaterial = [&] {
+        if (auto found = materialIndex.find(""); found != materialIndex.end()) return found->second;
+        materialIndex[""] = uint32_t(model.materials.size());
+        model.materials.push_back(MaterialData{.name = "default"});
+        return uint32_t(model.materials.size() - 1);
+    };
 
     // First every mesh's ranges, checked, and their sums against our limits (ranges may be named
     // more than once: a small file may ask for much work); only then anything decoded.
@@ -164,9 +191,11 @@ ModelData loadBookModel(const std::filesystem::path& path) {
                    " is not a whole number of triangles");
         uint32_t material = 0;
         std::string materialId = r.text(entry, "material_id", where);
-        if (auto found = materialIndex.find(materialId); found != materialIndex.end())
+        if (materialId.empty())
+            material = defaultMaterial();
+        else if (auto found = materialIndex.find(materialId); found != materialIndex.end())
             material = found->second;
-        else if (!materialId.empty())
+        else
             r.fail(where + "'s material_id '" + materialId + "' is in none of " +
                    utf8(materialsPath.filename()));
         ranges.push_back(
@@ -203,8 +232,6 @@ ModelData loadBookModel(const std::filesystem::path& path) {
             vertex.tangent = {f[6], f[7], f[8]};
             vertex.bitangent = {f[9], f[10], f[11]};
             vertex.uv = {f[12], f[13]};  // the book's generator already made v top-down (1 - v)
-            model.boundsMin = glm::min(model.boundsMin, vertex.position);
-            model.boundsMax = glm::max(model.boundsMax, vertex.position);
         }
         mesh.indices.resize(size_t(range.indexCount));
         for (size_t k = 0; k < mesh.indices.size(); ++k) {
@@ -214,7 +241,12 @@ ModelData loadBookModel(const std::filesystem::path& path) {
                        ", past its " + std::to_string(range.vertexCount) + " vertices");
             mesh.indices[k] = index;
         }
-        if (!mesh.indices.empty()) model.meshes.push_back(std::move(mesh));
+        if (mesh.indices.empty()) continue;  // nothing to draw, and no part of the bounds
+        for (const Vertex& vertex : mesh.vertices) {
+            model.boundsMin = glm::min(model.boundsMin, vertex.position);
+            model.boundsMax = glm::max(model.boundsMax, vertex.position);
+        }
+        model.meshes.push_back(std::move(mesh));
     }
     if (model.meshes.empty()) r.fail("no mesh has a triangle");
     return model;

@@ -239,9 +239,10 @@ set_tests_properties(hostile.book-scene-not-a-clone hostile.book-scene-missing P
 # The book's converted models (common/book_model.cpp): the stand-in tree loads (--model, any
 # chapter), and each broken rule is refused in one line naming the file and the rule -- a range
 # past its file, one whose offset would wrap a sum, part of a vertex or a triangle, a material id
-# no material has, a size that is not a number, no meshes, a colour beyond a float, an index past
-# its mesh, a missing .idx -- and 20,000 meshes naming one 50 KB range (18 million vertices) are
-# refused by their sum before anything is decoded.
+# no material has, a size that is not a number, no meshes, a factor outside 0..1, materials that
+# are not a list, an id twice, a texture path naming no file, 20,001 meshes, a NaN vertex, an
+# index past its mesh, a missing .idx -- and 20,000 meshes naming one 50 KB range (18 million
+# vertices) are refused by their sum before anything is decoded.
 set(BOOK_TREE ${GLTF}/book/booksamples/chapter-16/resources/models/tree/tree.json)
 hostile_test(book-model-tree 15 0 "chapter-15: 2 draws, 10 triangles, [0-9]+ textures, 2 materials" --model ${BOOK_TREE})
 set_tests_properties(hostile.book-model-tree PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
@@ -253,7 +254,12 @@ foreach(case "vertices_past_end|tree.json: mesh 1's vertices \\(bytes 896 \\+ 56
              "unknown_material|tree.json: mesh 0's material_id 'no-such-material' is in none of tree_mat.json"
              "size_not_a_number|tree.json: mesh 0's \"vtx_size\" is not a whole number 0 or more"
              "no_meshes|tree.json: \"meshes\" is not a list of meshes"
-             "color_not_finite|tree_mat.json: material 0's diffuse_color's \"x\" is not a finite number"
+             "color_out_of_range|tree_mat.json: material 0's diffuse_color's \"x\" is not a number from 0 to 1"
+             "materials_not_a_list|tree_mat.json: not a list of materials"
+             "material_id_twice|tree_mat.json: material 1's id 'tree-mat-1' is empty or another material's"
+             "texture_names_no_file|tree_mat.json: material 0's texture_path 'resources/models/..' names no file"
+             "too_many_meshes|tree.json: 20001 meshes, more than the 20000 our limits allow"
+             "vertex_nan|tree.json: mesh 0's vertex 2 has a value that is not finite or beyond 1e15"
              "index_past_vertices|tree.json: mesh 0's index 6 is 4, past its 4 vertices"
              "ranges_repeated|tree.json: its meshes make more than 16777216 vertices, our limit"
              "missing_idx|tree.idx: no such file")
@@ -265,6 +271,10 @@ foreach(case "vertices_past_end|tree.json: mesh 1's vertices \\(bytes 896 \\+ 56
     hostile_test(book-model-${test} 15 2 "${BH}/${name}/${message}" --model ${BH}/${name}/tree.json)
     set_tests_properties(hostile.book-model-${test} PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases" TIMEOUT 20)
 endforeach()
+# Accepted: backslashes in the binaries' paths, a mesh without a material id.
+hostile_test(book-model-windows-paths 15 0 "chapter-15: 2 draws, 10 triangles, [0-9]+ textures, 3 materials"
+    --model ${BH}/windows_paths/tree.json)
+set_tests_properties(hostile.book-model-windows-paths PROPERTIES FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
 # Not JSON: one line.
 hostile_test(book-model-not-json 15 2 "${DATA}/syntax_error.json: not JSON \\(the book's converted model\\)"
     --model ${DATA}/syntax_error.json)

@@ -1004,7 +1004,33 @@ void writeBookModelHostile(const fs::path& dir) {
     variant("unknown_material", [](json& m, json&) { m["meshes"][0]["material_id"] = "no-such-material"; });
     variant("size_not_a_number", [](json& m, json&) { m["meshes"][0]["vtx_size"] = "many"; });
     variant("no_meshes", [](json& m, json&) { m["meshes"] = json::array(); });
-    variant("color_not_finite", [](json&, json& mat) { mat[0]["diffuse_color"]["x"] = 1e300; });
+    variant("color_out_of_range", [](json&, json& mat) { mat[0]["diffuse_color"]["x"] = 1e30; });
+    variant("materials_not_a_list", [](json&, json& mat) { mat = json::object(); });
+    variant("material_id_twice", [](json&, json& mat) { mat[1]["id"] = "tree-mat-1"; });
+    variant("texture_names_no_file",
+            [](json&, json& mat) { mat[0]["texture_path"] = "resources\\models\\.."; });
+    variant("too_many_meshes", [](json& m, json&) {
+        json one = m["meshes"][0];
+        m["meshes"] = json::array();
+        for (int i = 0; i < 20001; ++i) m["meshes"].push_back(one);
+    });
+    // Accepted: backslashes in the binaries' paths (a model converted on Windows), and a mesh
+    // without a material id (the default material).
+    variant("windows_paths", [](json& m, json&) {
+        m["vtx_path"] = "resources\\models\\tree\\tree.vtx";
+        m["idx_path"] = "resources\\models\\tree\\tree.idx";
+        m["meshes"][1]["material_id"] = "";
+    });
+    {  // a NaN among the vertices
+        fs::path out = dir / "vertex_nan";
+        writeBookTree(out);
+        std::ifstream in(out / "tree.vtx", std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        in.close();
+        const char nan[4] = {'\x7f', '\xc0', 0, 0};  // big-endian quiet NaN
+        bytes.replace(56 * 2 + 4, 4, nan, 4);        // vertex 2's y
+        writeText(out / "tree.vtx", bytes);
+    }
     // A small file asking for much work: 20,000 meshes each naming the same 900 vertices (50 KB of
     // them) make 18 million vertices, more than the 2^24 our limit allows -- refused before any is
     // decoded.
