@@ -95,6 +95,7 @@ VkImageView layerView(const common::Device& device, VkImage image, VkFormat form
                                    .subresourceRange = {aspect, 0, 1, layer, 1}};
     VkImageView view = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device.handle, &viewInfo, nullptr, &view));
+    common::nameObject(device.handle, view, "shadow study: layer " + std::to_string(layer));
     return view;
 }
 
