@@ -87,9 +87,19 @@ for name in order:
     print("| " + " | ".join(cells) + " |")
 if plot and points:
     data = os.path.join(out, "plot.dat")
+    # Labels of points that would overlap (the same error, nearly the same time: the ways of
+    # drawing the layers) stacked one under the other.
+    xs = [p[0] for p in points]
+    ys = [p[1] for p in points]
+    dx, dy = (max(xs) - min(xs)) or 1.0, (max(ys) - min(ys)) or 1.0
+    placed = []
     with open(data, "w") as f:
         for x, y, name in points:
-            f.write('%f %f "%s"\n' % (x, y, name))
+            ly = y
+            while any(abs(x - px) < 0.12 * dx and abs(ly - py) < 0.04 * dy for px, py in placed):
+                ly -= 0.05 * dy
+            placed.append((x, ly))
+            f.write('%f %f %f "%s"\n' % (x, y, ly, name))
     script = """set terminal svg size 720,420 font 'sans,11'
 set output '%s'
 set title 'Shadows: GPU time against error (%s)'
@@ -100,7 +110,7 @@ set key off
 set offsets graph 0.02, graph 0.2, graph 0.08, graph 0.05
 set yrange [0:*]
 plot '%s' using 1:2 with points pointtype 7 pointsize 0.8 linecolor rgb '#1f5fa8', \
-     '' using 1:2:3 with labels offset 0.8,0.6 left font ',9'
+     '' using 1:3:4 with labels offset 0.8,0.6 left font ',9'
 """ % (plot, device, data)
     subprocess.run(["gnuplot"], input=script.encode(), check=True)
 EOF
