@@ -162,9 +162,13 @@ int main(int argc, char** argv) {
         dvec3 toSun = -glm::normalize(dvec3(sun->direction));
 
         // The scene's triangles in the world, in Embree's BVH.
-        RTCDevice device = rtcNewDevice(nullptr);
+        // Released however this ends (a refused input throws).
+        std::unique_ptr<RTCDeviceTy, void (*)(RTCDevice)> deviceHandle(rtcNewDevice(nullptr),
+                                                                       rtcReleaseDevice);
+        RTCDevice device = deviceHandle.get();
         if (!device) fail("Embree could not start");
-        RTCScene rtScene = rtcNewScene(device);
+        std::unique_ptr<RTCSceneTy, void (*)(RTCScene)> sceneHandle(rtcNewScene(device), rtcReleaseScene);
+        RTCScene rtScene = sceneHandle.get();
         rtcSetSceneFlags(rtScene, RTC_SCENE_FLAG_ROBUST);
         rtcSetSceneBuildQuality(rtScene, RTC_BUILD_QUALITY_HIGH);
         common::ModelCache models;
@@ -179,7 +183,9 @@ int main(int argc, char** argv) {
             glm::mat4 matrix = instance.transform.matrix();
             for (const common::MeshData& mesh : model.meshes) {
                 if (mesh.indices.empty()) continue;
-                RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+                std::unique_ptr<RTCGeometryTy, void (*)(RTCGeometry)> geometryHandle(
+                    rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE), rtcReleaseGeometry);
+                RTCGeometry geometry = geometryHandle.get();
                 auto* vertices = static_cast<float*>(
                     rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                             3 * sizeof(float), mesh.vertices.size()));
@@ -240,8 +246,7 @@ int main(int argc, char** argv) {
                     rtcSetGeometryIntersectFilterFunction(geometry, cutoutFilter);
                 }
                 rtcCommitGeometry(geometry);
-                rtcAttachGeometry(rtScene, geometry);
-                rtcReleaseGeometry(geometry);
+                rtcAttachGeometry(rtScene, geometry);  // the scene holds it from here
             }
         }
         rtcCommitScene(rtScene);
@@ -298,8 +303,6 @@ int main(int argc, char** argv) {
             rtcOccluded1(rtScene, &context, &ray);
             reference[p] = ray.tfar < 0.0f ? 0 : 1;  // Embree sets tfar to -inf when something is hit
         }
-        rtcReleaseScene(rtScene);
-        rtcReleaseDevice(device);
 
         // A pixel at an outline: one within 2 pixels whose reference class differs.
         std::vector<uint8_t> outline(pixels, 0);
