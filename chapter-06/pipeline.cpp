@@ -9,6 +9,7 @@
 #include "common/debug_names.hpp"
 #include "common/files.hpp"
 #include "common/formats.hpp"
+#include "common/report.hpp"
 #include "shader_compiler.hpp"
 
 //> shader-module
@@ -44,8 +45,7 @@ common::PipelineCache createPipelineCache(const common::Device& device) {
         .pInitialData = file.data.data(),
     };
     if (vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle) != VK_SUCCESS) {
-        std::fprintf(stderr, "warning: the driver refused pipeline cache '%s'; starting empty\n",
-                     common::utf8(file.path).c_str());
+        common::warn("the driver refused pipeline cache '" + common::utf8(file.path) + "'; starting empty");
         info.initialDataSize = 0;
         info.pInitialData = nullptr;
         VK_CHECK(vkCreatePipelineCache(device.handle, &info, nullptr, &cache.handle));

@@ -35,6 +35,7 @@
 #include "common/instance.hpp"
 #include "common/pipeline.hpp"
 #include "common/post_pass.hpp"
+#include "common/report.hpp"
 #include "common/run_control.hpp"
 #include "common/scene.hpp"
 #include "common/shader_watch.hpp"
@@ -233,8 +234,7 @@ void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bo
             : given.parent_path().parent_path().parent_path().parent_path().parent_path();
     std::filesystem::path tree = samples / "chapter-16" / "resources" / "models" / "tree" / "tree.json";
     if (!std::filesystem::is_regular_file(tree, ec)) {
-        std::fprintf(stderr, "warning: the book's tree is not at %s: the scene without it\n",
-                     common::utf8(tree).c_str());
+        common::warn("the book's tree is not at " + common::utf8(tree) + ": the scene without it");
         return;
     }
     common::ModelInstance treeInstance{.file = tree};
@@ -565,6 +565,31 @@ std::vector<std::pair<std::string, std::string>> describeCascades(const Chapter&
     return rows;
 }
 
+// --check-output: the last frame's sun and cascades are finite numbers. A light direction or a
+// cascade of NaN or infinity puts every pixel in shadow (or none), which no NaN in the image shows.
+void checkShadowInputs(const Chapter& c) {
+    auto finite = [](const glm::mat4& m) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (!std::isfinite(m[i][j])) return false;
+        return true;
+    };
+    if (c.lightControls.sun >= 0) {
+        glm::vec3 d = c.scene.lights[size_t(c.lightControls.sun)].direction;
+        float length = glm::length(d);
+        if (!std::isfinite(length) || !(length > 0.5f && length < 2.0f))
+            throw common::Failure("--check-output: the sun's direction is not a finite unit vector");
+    }
+    for (size_t i = 0; i < c.cascades.size(); ++i) {
+        const Cascade& cascade = c.cascades[i];
+        if (!finite(cascade.viewProjection) || !std::isfinite(cascade.texel) || !(cascade.texel > 0.0f) ||
+            !std::isfinite(cascade.splitFar) || !(cascade.splitFar > cascade.splitNear))
+            throw common::Failure("--check-output: cascade " + std::to_string(i) +
+                                  " is not finite (its matrix, texel or slice)");
+    }
+    std::printf("chapter-16: output check: the sun and %zu cascades finite\n", c.cascades.size());
+}
+
 // After the last frame: where the camera and lights went, --benchmark's report, --check-output.
 void report(Chapter& c, const common::Options& options) {
     const common::CameraDesc& start = c.scene.camera;
@@ -596,7 +621,10 @@ void report(Chapter& c, const common::Options& options) {
         std::printf("chapter-16: lights moved: sun at %.1f degrees, point light at (%.2f, %.2f, %.2f)\n",
                     c.lightControls.sunAngle, p.x, p.y, p.z);
     }
-    if (options.switches.count("check-output")) checkLightOutput(c.device, c.lightPass);
+    if (options.switches.count("check-output")) {
+        checkLightOutput(c.device, c.lightPass);
+        checkShadowInputs(c);
+    }
 }
 
 //> teardown

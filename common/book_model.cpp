@@ -1,6 +1,7 @@
 // The book's converted models (book_model.hpp).
 #include "common/book_model.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include "common/check.hpp"
 #include "common/files.hpp"
 #include "common/gltf_document.hpp"  // pathFromUtf8
+#include "common/report.hpp"
 
 namespace common {
 
@@ -58,6 +60,7 @@ json parse(const std::filesystem::path& path) {
 // Windows' backslashes or not): the file of that name beside the model's JSON.
 std::filesystem::path besideJson(const std::filesystem::path& directory, std::string path, const Reader& r,
                                  const std::string& what) {
+    if (hasControlCharacter(path)) r.fail(what + " '" + oneLine(path) + "' has a control character (NUL, a line break, ...)");
     for (char& c : path)
         if (c == '\\') c = '/';
     std::filesystem::path name = pathFromUtf8(path).filename();
@@ -211,9 +214,17 @@ ModelData loadBookModel(const std::filesystem::path& path) {
 
     model.boundsMin = glm::vec3(std::numeric_limits<float>::max());
     model.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
+    // A range that several meshes name is decoded and kept once: the others draw it again.
+    std::map<std::array<uint64_t, 4>, uint32_t> decoded;  // range -> its mesh in model.meshes
     for (size_t i = 0; i < ranges.size(); ++i) {
         const Range& range = ranges[i];
         std::string where = "mesh " + std::to_string(i);
+        const std::array<uint64_t, 4> key{range.vertexOffset, range.vertexCount, range.indexOffset,
+                                          range.indexCount};
+        if (auto found = decoded.find(key); found != decoded.end()) {
+            model.repeats.push_back({found->second, range.material});
+            continue;
+        }
         MeshData mesh;
         mesh.material = range.material;
         mesh.vertices.resize(size_t(range.vertexCount));
@@ -246,6 +257,7 @@ ModelData loadBookModel(const std::filesystem::path& path) {
             model.boundsMin = glm::min(model.boundsMin, vertex.position);
             model.boundsMax = glm::max(model.boundsMax, vertex.position);
         }
+        decoded[key] = uint32_t(model.meshes.size());
         model.meshes.push_back(std::move(mesh));
     }
     if (model.meshes.empty()) r.fail("no mesh has a triangle");

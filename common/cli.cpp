@@ -19,7 +19,9 @@
 #include "common/files.hpp"
 #include "common/formats.hpp"
 #include "common/instance.hpp"
+#include "common/report.hpp"
 #include "common/shader_compiler.hpp"
+#include "common/stop.hpp"
 
 namespace common {
 namespace {
@@ -113,16 +115,6 @@ std::string joined(const std::vector<std::string>& values) {
     std::string out;
     for (const std::string& value : values) out += (out.empty() ? "" : "|") + value;
     return out;
-}
-
-// An error message as one printable line, whatever the input put into it (a file name or a token
-// with a line break, a megabyte of garbage).
-std::string oneLine(std::string message) {
-    for (char& c : message)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-    constexpr size_t kMaxLength = 1000;
-    if (message.size() > kMaxLength) message = message.substr(0, kMaxLength) + "...";
-    return message;
 }
 
 }  // namespace
@@ -314,6 +306,7 @@ int runChapter(int argc, const char* const* argv, const ChapterInfo& info,
             std::printf("%s\n", shaderSourcesSummary().c_str());
             std::fflush(stdout);  // for whoever waits for it (a test, a script)
         }
+        watchForStop(name);
         chapter(options);
     } catch (const InputError& error) {
         std::fprintf(stderr, "%s: error: %s\n", name, oneLine(error.what()).c_str());

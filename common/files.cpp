@@ -1,8 +1,12 @@
 // Files next to the executable, shader modules and the cache directory.
 #include "common/files.hpp"
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <string>
 
 #if defined(_WIN32)
@@ -11,8 +15,10 @@
 #include <windows.h>
 #elif defined(__APPLE__)
 #include <mach-o/dyld.h>
+#include <signal.h>
 #include <unistd.h>
 #else
+#include <signal.h>
 #include <unistd.h>
 #endif
 
@@ -64,6 +70,55 @@ std::filesystem::path temporarySibling(const std::filesystem::path& path) {
     std::filesystem::path temporary = path;
     temporary += ".tmp" + std::to_string(pid);
     return temporary;
+}
+
+namespace {
+// Never destroyed: a watchdog thread may remove the temporaries while the process exits.
+std::mutex& temporariesMutex() {
+    static std::mutex* mutex = new std::mutex;
+    return *mutex;
+}
+std::set<std::filesystem::path>& temporaries() {
+    static auto* set = new std::set<std::filesystem::path>;
+    return *set;
+}
+}  // namespace
+
+void registerTemporary(const std::filesystem::path& temporary) {
+    std::lock_guard lock(temporariesMutex());
+    temporaries().insert(temporary);
+}
+
+void forgetTemporary(const std::filesystem::path& temporary) {
+    std::lock_guard lock(temporariesMutex());
+    temporaries().erase(temporary);
+}
+
+void removeRegisteredTemporaries() {
+    std::lock_guard lock(temporariesMutex());
+    std::error_code ec;
+    for (const std::filesystem::path& temporary : temporaries()) std::filesystem::remove(temporary, ec);
+    temporaries().clear();
+}
+
+void removeStaleTemporaries(const std::filesystem::path& path) {
+#if defined(_WIN32)
+    (void)path;
+#else
+    std::error_code ec;
+    const std::string prefix = utf8(path.filename()) + ".tmp";
+    std::filesystem::directory_iterator entries(path.parent_path().empty() ? "." : path.parent_path(), ec);
+    if (ec) return;
+    for (const auto& entry : entries) {
+        std::string name = utf8(entry.path().filename());
+        if (!name.starts_with(prefix) || name.size() == prefix.size() || name.size() > prefix.size() + 10) continue;
+        std::string digits = name.substr(prefix.size());
+        if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) continue;
+        long pid = std::strtol(digits.c_str(), nullptr, 10);
+        if (pid <= 0 || pid == long(getpid())) continue;
+        if (kill(pid_t(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), ec);
+    }
+#endif
 }
 
 bool isWritable(const std::filesystem::path& path) {

@@ -28,6 +28,26 @@ std::string utf8(const std::filesystem::path& path);
 // so that no reader ever sees it half-written.
 std::filesystem::path temporarySibling(const std::filesystem::path& path);
 
+// The temporaries being written: a run cut short by Ctrl+C or SIGTERM (common/run_control.hpp)
+// removes the registered ones before it exits. Safe to call from several threads.
+void registerTemporary(const std::filesystem::path& temporary);
+void forgetTemporary(const std::filesystem::path& temporary);
+void removeRegisteredTemporaries();
+// temporarySibling(target), registered while this lives.
+struct RegisteredTemporary {
+    std::filesystem::path path;
+    explicit RegisteredTemporary(const std::filesystem::path& target) : path(temporarySibling(target)) {
+        registerTemporary(path);
+    }
+    ~RegisteredTemporary() { forgetTemporary(path); }
+    RegisteredTemporary(const RegisteredTemporary&) = delete;
+    RegisteredTemporary& operator=(const RegisteredTemporary&) = delete;
+};
+// Removes the temporaries of `path` that processes no longer running left behind (killed with
+// SIGKILL, or a machine that lost power, halfway through writing): "NAME.tmpPID" beside it.
+// Where a process cannot be asked whether it runs (Windows), nothing is removed.
+void removeStaleTemporaries(const std::filesystem::path& path);
+
 // Whether this process may write the file or directory `path` (which must exist).
 bool isWritable(const std::filesystem::path& path);
 

@@ -13,6 +13,7 @@
 #include "common/check.hpp"
 #include "common/checked.hpp"
 #include "common/files.hpp"
+#include "common/report.hpp"
 
 namespace common {
 
@@ -82,7 +83,7 @@ void checkUri(const std::string& origin, const std::string& where, const std::st
                          " (a model reads only files in its own directory)");
     };
     if (decoded.empty()) fail("is empty");
-    if (decoded.find('\0') != std::string::npos) fail("has a NUL character");
+    if (hasControlCharacter(decoded)) fail("has a control character (NUL, a line break, ...)");
     size_t colon = decoded.find(':'), slash = decoded.find_first_of("/\\");
     if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
         fail("is not a relative path");  // a scheme, or a Windows drive ("C:")

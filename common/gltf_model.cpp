@@ -27,6 +27,7 @@
 #include "common/gltf_accessors.hpp"
 #include "common/gltf_document.hpp"
 #include "common/model.hpp"
+#include "common/report.hpp"
 
 namespace common {
 namespace {
@@ -70,11 +71,7 @@ public:
         if (extensions_.size() > kMaxExtensionNotes)
             notes.push_back(std::to_string(extensions_.size() - kMaxExtensionNotes) +
                             " more extensions are skipped");
-        for (std::string what : notes) {
-            for (char& c : what)
-                if (static_cast<unsigned char>(c) < 0x20) c = '?';
-            std::fprintf(stderr, "warning: %s: %s\n", origin_.c_str(), what.c_str());
-        }
+        for (const std::string& what : notes) warn(origin_ + ": " + what);
     }
 
 private:

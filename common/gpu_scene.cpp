@@ -17,6 +17,7 @@
 #include "common/check.hpp"
 #include "common/checked.hpp"
 #include "common/files.hpp"
+#include "common/report.hpp"
 #include "common/texture.hpp"
 
 namespace common {
@@ -200,7 +201,8 @@ private:
         const uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
         uint64_t meshBytes = 0, texelBytes = 0;
         for (const GpuMesh& mesh : scene.meshes)
-            meshBytes = saturatingAdd(meshBytes, saturatingAdd(mesh.vertices.size, mesh.indices.size));
+            meshBytes = saturatingAdd(meshBytes, saturatingAdd(mesh.ownsVertices ? mesh.vertices.size : 0,
+                                                               mesh.indices.size));
         for (const TextureRequest& request : requests_) {
             std::optional<ImageExtent> extent;
             for (const ImageSource* source : {&request.first, &request.second}) {
@@ -275,13 +277,7 @@ private:
         std::error_code ec;
         if (!std::filesystem::exists(source.file, ec)) {
             std::lock_guard lock(mutex_);
-            if (warned_.insert(source.file).second) {
-                std::string shownName = utf8(source.file);  // one line, whatever the file's name holds
-                for (char& c : shownName)
-                    if (static_cast<unsigned char>(c) < 0x20) c = '?';
-                std::fprintf(stderr, "warning: texture '%s' not found; using the default texture\n",
-                             shownName.c_str());
-            }
+            warn("texture '" + utf8(source.file) + "' not found; using the default texture");
             return std::nullopt;
         }
         return loadPixels(source.file, maxDimension);
@@ -309,7 +305,6 @@ private:
     std::deque<PreparedTexture> ready_;
     bool stopped_ = false;
     std::exception_ptr error_;
-    std::set<std::filesystem::path> warned_;
 };
 
 // A material while its textures are being made: request ids where GpuMaterial will hold images.
@@ -347,6 +342,7 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
     TextureBuilder textures(device);
     std::vector<PendingMaterial> pending;
     std::map<std::filesystem::path, uint32_t> firstMesh;       // per model: its meshes' index in gpu.meshes
+    std::map<std::filesystem::path, uint32_t> firstMirroredMesh;  // the same, turned round (mirrored transforms)
     std::map<std::filesystem::path, uint32_t> plainMaterials;  // per model without overrides: its materials
     bool firstBounds = true;
     uint64_t meshBytes = 0;  // of the meshes uploaded so far
@@ -355,38 +351,66 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
         const ModelInstance& instance = scene.models[instanceIndex];
         const ModelData& model = loadModelCached(models, instance.file);
         const std::filesystem::path key = modelKey(instance.file);  // one upload per file, however spelled
-        if (!firstMesh.count(key)) {
-            firstMesh[key] = uint32_t(gpu.meshes.size());
-            checkAllocationCount(device, 2 * (gpu.meshes.size() + model.meshes.size()), instance.file);
+        // The glTF specification's rule for every chapter (3.7.4 "Instantiation"): a transform of
+        // negative determinant (a mirror) makes clockwise triangles the front faces. Such a scene
+        // transform draws a copy of the model's meshes whose indices run the other way round,
+        // with the same vertex buffers, so culling and gl_FrontFacing stay right in every pass.
+        glm::mat4 matrix = instance.transform.matrix();
+        const bool mirrored = glm::determinant(glm::dmat3(glm::dmat4(matrix))) < 0.0;
+        std::map<std::filesystem::path, uint32_t>& uploaded = mirrored ? firstMirroredMesh : firstMesh;
+        if (!uploaded.count(key)) {
+            const bool copy = mirrored && firstMesh.count(key);  // the vertices are there already
+            if (mirrored && !copy) {
+                // Unmirrored first (never drawn unless another instance is), then the mirror.
+                firstMesh[key] = uint32_t(gpu.meshes.size());
+            }
+            const uint32_t base = uint32_t(gpu.meshes.size()) + (mirrored && !copy ? uint32_t(model.meshes.size()) : 0);
+            uploaded[key] = base;
+            const uint64_t newMeshes = (mirrored && !copy ? 2 : 1) * model.meshes.size();
+            checkAllocationCount(device, 2 * (gpu.meshes.size() + newMeshes), instance.file);
             // The meshes' device memory, model by model before each is uploaded (the textures are
             // added from their headers before they are decoded, in TextureBuilder).
-            for (const MeshData& mesh : model.meshes)
-                meshBytes = saturatingAdd(
-                    meshBytes, saturatingAdd(saturatingMul(mesh.vertices.size(), sizeof(Vertex)),
-                                             saturatingMul(mesh.indices.size(), sizeof(uint32_t))));
+            for (const MeshData& mesh : model.meshes) {
+                uint64_t indexBytes = saturatingMul(mesh.indices.size(), sizeof(uint32_t));
+                if (!copy)
+                    meshBytes = saturatingAdd(meshBytes, saturatingAdd(saturatingMul(mesh.vertices.size(), sizeof(Vertex)), indexBytes));
+                if (mirrored) meshBytes = saturatingAdd(meshBytes, indexBytes);
+            }
             if (const MemoryBudget memory = memoryBudget(device); meshBytes > memory.scene)
                 throw InputError(
                     utf8(instance.file) + ": the scene's meshes need " + mebibytes(meshBytes) +
                     " MiB of device memory with it; this device's largest device-local memory heap has " +
                     std::to_string(memory.heap >> 20) + " MiB, of which a scene may use 3/4 (" +
                     std::to_string(memory.scene >> 20) + " MiB)");
-            for (const MeshData& mesh : model.meshes) {
-                GpuMesh out;
-                out.vertices =
-                    uploadStaged(device, batch, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex),
-                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                 meshName(instance.file, gpu.meshes.size(), "vertices"));
-                out.indices = uploadStaged(
-                    device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
-                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "indices"));
-                out.indexCount = uint32_t(mesh.indices.size());
-                out.boundsMin = out.boundsMax = mesh.vertices.front().position;
-                for (const Vertex& v : mesh.vertices) {
-                    out.boundsMin = glm::min(out.boundsMin, v.position);
-                    out.boundsMax = glm::max(out.boundsMax, v.position);
+            if (!copy)
+                for (const MeshData& mesh : model.meshes) {
+                    GpuMesh out;
+                    out.vertices =
+                        uploadStaged(device, batch, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex),
+                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                     meshName(instance.file, gpu.meshes.size(), "vertices"));
+                    out.indices = uploadStaged(
+                        device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
+                        VK_BUFFER_USAGE_INDEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "indices"));
+                    out.indexCount = uint32_t(mesh.indices.size());
+                    out.boundsMin = out.boundsMax = mesh.vertices.front().position;
+                    for (const Vertex& v : mesh.vertices) {
+                        out.boundsMin = glm::min(out.boundsMin, v.position);
+                        out.boundsMax = glm::max(out.boundsMax, v.position);
+                    }
+                    gpu.meshes.push_back(out);
                 }
-                gpu.meshes.push_back(out);
-            }
+            if (mirrored)
+                for (size_t i = 0; i < model.meshes.size(); ++i) {
+                    GpuMesh out = gpu.meshes[firstMesh[key] + i];
+                    out.ownsVertices = false;
+                    std::vector<uint32_t> turned = model.meshes[i].indices;
+                    for (size_t k = 0; k + 2 < turned.size(); k += 3) std::swap(turned[k + 1], turned[k + 2]);
+                    out.indices = uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
+                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                               meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
+                    gpu.meshes.push_back(out);
+                }
         }
 
         for (const auto& [name, unused] : instance.materials) {
@@ -446,24 +470,36 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
 
         // Every draw is recorded each frame: a scene that places a model of many meshes many
         // times is refused before the product is made.
-        if (gpu.draws.size() + model.meshes.size() > kMaxSceneDraws || pending.size() > kMaxSceneDraws)
+        if (gpu.draws.size() + model.meshes.size() + model.repeats.size() > kMaxSceneDraws ||
+            pending.size() > kMaxSceneDraws)
             throw InputError(
                 utf8(instance.file) + ": the scene places it as model " + std::to_string(instanceIndex + 1) +
                 ", past " + std::to_string(kMaxSceneDraws) +
                 " draws (or materials) in all, models times their meshes; at most that many are drawn");
-        glm::mat4 matrix = instance.transform.matrix();
-        for (size_t i = 0; i < model.meshes.size(); ++i) {
-            gpu.draws.push_back(Draw{.mesh = firstMesh[key] + uint32_t(i),
-                                     .material = materialBase + model.meshes[i].material,
+        auto addDraw = [&](uint32_t mesh, uint32_t material) {
+            gpu.draws.push_back(Draw{.mesh = uploaded[key] + mesh, .material = materialBase + material,
                                      .instance = instanceIndex});
             setDrawModel(gpu, gpu.draws.back(), matrix);
-            gpu.triangles += model.meshes[i].indices.size() / 3;
-        }
+            gpu.triangles += model.meshes[mesh].indices.size() / 3;
+        };
+        for (size_t i = 0; i < model.meshes.size(); ++i) addDraw(uint32_t(i), model.meshes[i].material);
+        for (const MeshRepeat& repeat : model.repeats) addDraw(repeat.mesh, repeat.material);
         for (int corner = 0; corner < 8; ++corner) {
-            glm::vec3 local((corner & 1) ? model.boundsMax.x : model.boundsMin.x,
-                            (corner & 2) ? model.boundsMax.y : model.boundsMin.y,
-                            (corner & 4) ? model.boundsMax.z : model.boundsMin.z);
-            glm::vec3 world = glm::vec3(matrix * glm::vec4(local, 1.0f));
+            glm::dvec3 local((corner & 1) ? model.boundsMax.x : model.boundsMin.x,
+                             (corner & 2) ? model.boundsMax.y : model.boundsMin.y,
+                             (corner & 4) ? model.boundsMax.z : model.boundsMin.z);
+            // In double, then checked: a model at 1e15 scaled by 1e30 has corners no float holds,
+            // and the bounds feed the camera, the cascades and the culling.
+            glm::dvec3 placed = glm::dvec3(glm::dmat4(matrix) * glm::dvec4(local, 1.0));
+            for (int axis = 0; axis < 3; ++axis)
+                if (!(std::abs(placed[axis]) <= double(kMaxModelCoordinate))) {
+                    char text[64];
+                    std::snprintf(text, sizeof(text), "%g", placed[axis]);
+                    throw InputError(utf8(instance.file) + ": the scene's transform (model " +
+                                     std::to_string(instanceIndex) + ") places a corner of its bounds at " +
+                                     text + " on an axis; coordinates from -1e15 to 1e15 are drawn");
+                }
+            glm::vec3 world(placed);
             gpu.boundsMin = firstBounds ? world : glm::min(gpu.boundsMin, world);
             gpu.boundsMax = firstBounds ? world : glm::max(gpu.boundsMax, world);
             firstBounds = false;
@@ -496,7 +532,7 @@ void destroyGpuScene(const Device& device, GpuScene& scene) {
     for (Image& texture : scene.textures) destroyImage(device, texture);
     for (GpuMesh& mesh : scene.meshes) {
         destroyBuffer(device, mesh.indices);
-        destroyBuffer(device, mesh.vertices);
+        if (mesh.ownsVertices) destroyBuffer(device, mesh.vertices);
     }
     scene = {};
 }

@@ -23,6 +23,9 @@ namespace common {
 struct GpuMesh {
     Buffer vertices;  // common::Vertex
     Buffer indices;   // uint32_t
+    // A mirrored copy (drawn by a scene transform of negative determinant): the same vertex
+    // buffer, owned by the mesh it copies, with every triangle's winding turned around.
+    bool ownsVertices = true;
     uint32_t indexCount = 0;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // model space, to sort draws by distance
 };

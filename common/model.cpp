@@ -20,6 +20,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/report.hpp"
 
 namespace common {
 namespace {
@@ -441,10 +442,8 @@ ModelData loadObjModel(const std::filesystem::path& path) {
     std::set<std::string> warned;
     for (const auto& [name, line] : checked.usemtl)
         if (!stated.count(name) && warned.insert(name).second)
-            std::fprintf(
-                stderr,
-                "warning: %s:%d: material '%s' is in none of its MTL files; using the default material\n",
-                utf8(path).c_str(), line, name.c_str());
+            warn(utf8(path) + ":" + std::to_string(line) + ": material '" + name +
+                 "' is in none of its MTL files; using the default material");
     return model;
 }
 

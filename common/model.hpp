@@ -100,8 +100,16 @@ struct MeshData {
     uint32_t material = 0;  // index into ModelData::materials
 };
 
+// A mesh drawn once more with another material: a model that names one range of vertices and
+// indices several times (the book's converted format) holds the range once, as one mesh.
+struct MeshRepeat {
+    uint32_t mesh = 0;
+    uint32_t material = 0;
+};
+
 struct ModelData {
     std::vector<MeshData> meshes;
+    std::vector<MeshRepeat> repeats;  // drawn after the meshes, in this order
     std::vector<MaterialData> materials;  // at least one: a default white material
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };

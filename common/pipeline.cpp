@@ -11,6 +11,7 @@
 #include "common/check.hpp"
 #include "common/debug_names.hpp"
 #include "common/files.hpp"
+#include "common/report.hpp"
 
 namespace common {
 namespace {
@@ -29,10 +30,6 @@ std::string cacheMismatch(const Device& device, const std::vector<char>& data) {
         std::memcmp(header.pipelineCacheUUID, device.properties.pipelineCacheUUID, VK_UUID_SIZE) != 0)
         return "it was written by another device or driver";
     return {};
-}
-
-void warn(const std::string& message) {
-    std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 
 }  // namespace
@@ -100,7 +97,9 @@ void savePipelineCache(const Device& device, const PipelineCache& cache) {
     // bytes go to a file of our own first, which then replaces the old one in one rename().
     std::error_code ec;
     std::filesystem::create_directories(cache.file.parent_path(), ec);
-    std::filesystem::path temporary = temporarySibling(cache.file);
+    removeStaleTemporaries(cache.file);
+    RegisteredTemporary written(cache.file);  // removed by a run cut short (run_control.hpp)
+    const std::filesystem::path& temporary = written.path;
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out.write(data.data(), static_cast<std::streamsize>(data.size()));

@@ -1,30 +1,13 @@
 // Run control and per-frame bookkeeping.
 #include "common/run_control.hpp"
 
-#include <csignal>
-
 #include "common/debug_names.hpp"
-
 #include "common/screenshot.hpp"
 
 namespace common {
 
-namespace {
-
-// Ctrl+C or a TERM signal ends the run at the next frame like closing the window does, so a
-// headless run of many frames still writes its --screenshot (and a live-reload test can end one).
-volatile std::sig_atomic_t gInterrupted = 0;
-extern "C" void interrupt(int) {
-    gInterrupted = 1;
-}
-
-}  // namespace
-
 RunControl createRunControl(const Options& options, const Device& device, std::vector<std::string> passes) {
     RunControl run;
-    gInterrupted = 0;
-    std::signal(SIGINT, interrupt);
-    std::signal(SIGTERM, interrupt);
     run.passNames = passes;
     run.frameLimit = frameCount(options);
     run.scriptedResize = options.resizeTo;
@@ -47,7 +30,7 @@ bool beginFrame(RunControl& run, Target& target, uint32_t frame) {
         requestTargetSize(target, *run.scriptedResize);
         run.scriptedResize.reset();
     }
-    bool closing = pollTarget(target) || gInterrupted != 0;
+    bool closing = pollTarget(target) || stopRequested();
     return closing || (run.frameLimit != 0 && frame + 1 >= run.frameLimit);
 }
 

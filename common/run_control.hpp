@@ -17,6 +17,7 @@
 #include "common/benchmark.hpp"
 #include "common/cli.hpp"
 #include "common/device.hpp"
+#include "common/stop.hpp"
 #include "common/target.hpp"
 
 namespace common {

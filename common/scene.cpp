@@ -12,6 +12,7 @@
 
 #include "common/check.hpp"
 #include "common/files.hpp"
+#include "common/report.hpp"
 
 namespace common {
 namespace {
@@ -68,9 +69,7 @@ public:
             fail(where, "expected a non-empty string");
         const std::string& text = value.get_ref<const std::string&>();
         // File names and types: a line break in one would break the one-line messages that name it.
-        if (std::any_of(text.begin(), text.end(),
-                        [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
-            fail(where, "must not contain control characters");
+        if (hasControlCharacter(text)) fail(where, "must not contain control characters (NUL, a line break, ...)");
         return text;
     }
 
@@ -84,6 +83,9 @@ private:
 };
 
 constexpr float kHuge = 1e30f;  // finite, but nothing a scene can sensibly exceed
+// Places and distances: those of a model's vertices (common/model.hpp), so that their squares,
+// and sums of them, stay finite in 32-bit floats.
+constexpr float kFar = kMaxModelCoordinate;
 // A light's radiance is colour x intensity. Each may be large, but the shading multiplies their
 // product by 1/d^2 (d down to 1 cm), by the BRDF's peak and sums it over lights: beyond 1e20 that
 // can exceed the largest 32-bit float (3.4e38) and turn pixels infinite.
@@ -102,7 +104,7 @@ void checkRadiance(const Reader& r, const std::string& where, glm::vec3 color, f
 Transform readTransform(const Reader& r, const json& model, const std::string& where) {
     Transform t;
     if (model.contains("position"))
-        t.position = r.vector<3>(model["position"], where + ".position", -kHuge, kHuge);
+        t.position = r.vector<3>(model["position"], where + ".position", -kFar, kFar);
     if (model.contains("rotation"))
         t.rotation = r.vector<3>(model["rotation"], where + ".rotation", -360.0f, 360.0f);
     if (model.contains("scale")) {
@@ -192,13 +194,22 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         r.onlyKeys(c, "camera", {"position", "yaw", "pitch", "fov", "near", "far"});
         CameraDesc& cam = scene.camera;
         if (c.contains("position"))
-            cam.position = r.vector<3>(c["position"], "camera.position", -kHuge, kHuge);
+            cam.position = r.vector<3>(c["position"], "camera.position", -kFar, kFar);
         if (c.contains("yaw")) cam.yaw = r.number(c["yaw"], "camera.yaw", -360.0f, 360.0f);
         if (c.contains("pitch")) cam.pitch = r.number(c["pitch"], "camera.pitch", -89.0f, 89.0f);
         if (c.contains("fov")) cam.fov = r.number(c["fov"], "camera.fov", 1.0f, 179.0f);
-        if (c.contains("near")) cam.near = r.number(c["near"], "camera.near", 1e-6f, kHuge);
-        if (c.contains("far")) cam.far = r.number(c["far"], "camera.far", 1e-6f, kHuge);
+        if (c.contains("near")) cam.near = r.number(c["near"], "camera.near", 1e-6f, kFar);
+        if (c.contains("far")) cam.far = r.number(c["far"], "camera.far", 1e-6f, kFar);
         if (!(cam.far > cam.near)) r.fail("camera.far", "must be greater than camera.near");
+        // The depth buffer resolves view distances up to far / near = 1e5 (at 1e5 the farthest
+        // half of the view still has about 170 steps of a 24-bit depth; past 1.7e7 everything
+        // beyond some distance rounds to depth 1 and is not drawn at all).
+        if (double(cam.far) > kMaxFarOverNear * double(cam.near)) {
+            char ratio[64];
+            std::snprintf(ratio, sizeof(ratio), "%g", double(cam.far) / double(cam.near));
+            r.fail("camera.far", std::string("far / near is ") + ratio +
+                                     ", more than 1e5: the depth buffer cannot tell distances that far apart");
+        }
     }
 
     if (root.contains("ambient")) {
@@ -224,14 +235,18 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (type == "directional") {
                 light.type = Light::Type::Directional;
                 if (!l.contains("direction")) r.fail(where, "a directional light needs 'direction'");
-                light.direction = r.vector<3>(l["direction"], where + ".direction", -kHuge, kHuge);
-                if (glm::length(light.direction) < 1e-6f) r.fail(where + ".direction", "must not be zero");
+                // Normalised here, in double: [0, -1e30, 0] is a direction, but its length in
+                // 32-bit floats is infinite (and so every later normalisation would make it zero).
+                glm::dvec3 direction(r.vector<3>(l["direction"], where + ".direction", -kHuge, kHuge));
+                double length = glm::length(direction);
+                if (!(length >= 1e-6)) r.fail(where + ".direction", "must not be zero (its length is below 1e-6)");
+                light.direction = glm::vec3(direction / length);
                 if (l.contains("position"))
                     r.fail(where + ".position", "a directional light has no position");
             } else if (type == "point") {
                 light.type = Light::Type::Point;
                 if (!l.contains("position")) r.fail(where, "a point light needs 'position'");
-                light.position = r.vector<3>(l["position"], where + ".position", -kHuge, kHuge);
+                light.position = r.vector<3>(l["position"], where + ".position", -kFar, kFar);
                 if (l.contains("direction")) r.fail(where + ".direction", "a point light has no direction");
             } else {
                 r.fail(where + ".type", "expected \"directional\" or \"point\"");
@@ -243,7 +258,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (l.contains("range")) {
                 if (light.type != Light::Type::Point)
                     r.fail(where + ".range", "only a point light has a range");
-                light.range = r.number(l["range"], where + ".range", 0.0f, kHuge);
+                light.range = r.number(l["range"], where + ".range", 0.0f, kFar);
                 if (!(light.range > 0.0f)) r.fail(where + ".range", "must be greater than 0");
             }
             if (l.contains("marker")) {

@@ -43,6 +43,9 @@ struct ModelInstance {
     bool operator==(const ModelInstance&) const = default;
 };
 
+// The largest camera.far / camera.near a scene may ask for: what a depth buffer resolves.
+inline constexpr double kMaxFarOverNear = 1e5;
+
 struct CameraDesc {
     glm::vec3 position{0.0f};
     float yaw = 0.0f;    // degrees; 0 looks along -Z, positive turns towards +X

@@ -180,7 +180,9 @@ void saveScreenshot(const Device& device, VkImage image, VkFormat format, VkExte
     for (size_t i = 0, n = size_t{extent.width} * extent.height; i < n; ++i)
         decodeTexel(format, &texels[i * 4], &rgb[i * 3]);
 
-    std::filesystem::path temporary = temporarySibling(path);
+    removeStaleTemporaries(path);
+    RegisteredTemporary written(path);  // removed by a run cut short (run_control.hpp)
+    const std::filesystem::path& temporary = written.path;
     if (!stbi_write_png(utf8(temporary).c_str(), static_cast<int>(extent.width),
                         static_cast<int>(extent.height), 3, rgb.data(), static_cast<int>(extent.width * 3)))
         throw Failure("cannot write screenshot '" + utf8(temporary) + "'");
