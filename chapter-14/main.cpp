@@ -21,6 +21,7 @@
 #include "common/cli.hpp"
 #include "common/commands.hpp"
 #include "common/device.hpp"
+#include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
 #include "common/gui_pass.hpp"
@@ -145,6 +146,9 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetImages(c.target, c.device);
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
+    // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
+    const common::RasterView firstView = common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
+    common::checkFrameCost(c.scene, models, {&firstView, 1});
     c.gpuScene = common::loadGpuScene(c.device, c.scene, models, {});
     std::printf("chapter-14: %zu draws, %llu triangles, %zu textures, %zu materials\n",
                 c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),

@@ -24,6 +24,7 @@
 #include "common/commands.hpp"
 #include "common/debug_names.hpp"
 #include "common/device.hpp"
+#include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
 #include "common/gui_pass.hpp"
@@ -283,6 +284,10 @@ void run(const common::Options& options) {
         common::nameObject(device.handle, lateCommands[i], "frame " + std::to_string(i) + " late commands");
     }
 
+    // What the first frame's view may cost to rasterise, refused beyond a budget
+    // (common/frame_cost.hpp; chapter-16 adds its cascades).
+    const common::RasterView firstView = common::sceneRasterView(scene, target.extent.width, target.extent.height);
+    common::checkFrameCost(scene, models, {&firstView, 1});
     common::GpuScene gpuScene = common::loadGpuScene(
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     models.clear();

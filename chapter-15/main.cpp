@@ -24,6 +24,7 @@
 #include "common/cli.hpp"
 #include "common/commands.hpp"
 #include "common/device.hpp"
+#include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
 #include "common/gui_pass.hpp"
@@ -239,6 +240,9 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetImages(c.target, c.device);
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
+    // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
+    const common::RasterView firstView = common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
+    common::checkFrameCost(c.scene, models, {&firstView, 1});
     c.gpuScene = common::loadGpuScene(c.device, c.scene, models,
                                       {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",

@@ -29,6 +29,7 @@
 #include "common/commands.hpp"
 #include "common/device.hpp"
 #include "common/files.hpp"
+#include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
 #include "common/gui_pass.hpp"
@@ -273,6 +274,7 @@ struct Chapter {
     float cameraStep = 0.0f;          // --camera-motion: metres forward per frame
     std::vector<Cascade> cascades;    // this frame's
     double passesMs = 0.0;            // how long createPasses took at start-up (pipelines, mostly)
+    std::vector<uint64_t> firstFrameCost;  // fragments bound: the view, then each cascade
 };
 //< chapter-state
 
@@ -331,6 +333,22 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
     common::finishShaderReload();
 }
 //< passes
+
+// The cascades for a frame's camera and sun, over the view from near to where the scene ends
+// (--shadow-far scene) or to the far plane; none without a directional light.
+std::vector<Cascade> frameCascades(Chapter& c, const glm::mat4& view) {
+    if (c.lightControls.sun < 0) return {};
+    float far = c.scene.camera.far;
+    if (c.fitFar) far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
+    c.cascadeSettings.castersMin = c.gpuScene.boundsMin;  // the casters: the scene, marker included
+    c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
+    CascadeCamera camera{.view = view,
+                         .fovY = glm::radians(c.scene.camera.fov),
+                         .aspect = float(c.target.extent.width) / float(c.target.extent.height),
+                         .near = c.scene.camera.near,
+                         .far = far};
+    return computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
+}
 
 //> setup
 void setUp(Chapter& c, const common::Options& options) {
@@ -391,6 +409,19 @@ void setUp(Chapter& c, const common::Options& options) {
                    .near = c.scene.camera.near,
                    .far = c.scene.camera.far};
     c.fxaa = options.switches.count("fxaa") != 0;
+
+    // What the first frame may cost to rasterise -- the view and every cascade, each triangle
+    // drawn into each layer -- refused beyond a budget (common/frame_cost.hpp).
+    std::vector<common::RasterView> views{
+        common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height)};
+    std::vector<Cascade> first = frameCascades(c, common::viewMatrix(c.camera));
+    for (size_t i = 0; i < first.size(); ++i)
+        views.push_back({.name = "shadow cascade " + std::to_string(i),
+                         .viewProjection = first[i].viewProjection,
+                         .width = c.cascadeSettings.mapSize,
+                         .height = c.cascadeSettings.mapSize,
+                         .clipDepth = false});  // depth-clamped: nothing is clipped in depth
+    c.firstFrameCost = common::checkFrameCost(c.scene, models, views).fragments;
 }
 //< setup
 
@@ -434,21 +465,7 @@ void updateFrame(Chapter& c, uint32_t slot) {
     // The cascades for this frame's camera and sun, over the view from near to where the scene
     // ends (--shadow-far scene) or to the far plane. Without a directional light there are none:
     // every pixel's visibility is 1.
-    c.cascades.clear();
-    if (c.lightControls.sun >= 0) {
-        float far = c.scene.camera.far;
-        if (c.fitFar)
-            far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
-        c.cascadeSettings.castersMin = c.gpuScene.boundsMin;  // the casters: the scene, marker included
-        c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
-        CascadeCamera camera{.view = view,
-                             .fovY = glm::radians(c.scene.camera.fov),
-                             .aspect = float(c.target.extent.width) / float(c.target.extent.height),
-                             .near = c.scene.camera.near,
-                             .far = far};
-        c.cascades =
-            computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
-    }
+    c.cascades = frameCascades(c, view);
     // Which cascades the shadow pass draws: those whose view changed, or all when geometry moved.
     updateCascades(c.shadowPass, slot, c.cascades, view, c.lightControls.markerMoves);
     updateLights(c.lightPass, slot, shaderLights(c.scene),
@@ -605,6 +622,11 @@ void report(Chapter& c, const common::Options& options) {
     // Without depth clamping the cascades reach toward the sun as far as the scene does.
     info.push_back({"depth_clamp", c.device.depthClamp ? "yes" : "no: cascades reach the scene's casters"});
     for (const auto& [key, value] : describeCascades(c)) info.push_back({key, value});
+    // The bound of the first frame's fragments that setUp checked (common/frame_cost.hpp).
+    std::string bound;
+    for (uint64_t fragments : c.firstFrameCost) bound += (bound.empty() ? "" : ", ") + std::to_string(fragments);
+    info.push_back({"first_frame_fragments_bound", bound + " (the view, then each cascade; at most " +
+                                                        std::to_string(common::kMaxFrameFragments) + " in all)"});
     common::reportRun(c.run, c.device, info);
     // How often each cascade was drawn: once for a still camera, more as it moves.
     std::string drawn;

@@ -204,7 +204,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         // The depth buffer resolves view distances up to far / near = 1e5 (at 1e5 the farthest
         // half of the view still has about 170 steps of a 24-bit depth; past 1.7e7 everything
         // beyond some distance rounds to depth 1 and is not drawn at all).
-        if (double(cam.far) > kMaxFarOverNear * double(cam.near)) {
+        if (double(cam.far) > kMaxFarOverNear * double(cam.near) * (1.0 + 1e-6)) {  // 1e5 as floats round it
             char ratio[64];
             std::snprintf(ratio, sizeof(ratio), "%g", double(cam.far) / double(cam.near));
             r.fail("camera.far", std::string("far / near is ") + ratio +

@@ -156,7 +156,7 @@ gltf_hostile(huge-scale 2 "${GH}/huge_scale.gltf: a vertex lies at 3e\\+38 on an
     huge_scale.gltf)
 gltf_hostile(data-folder-uri 2 "${GH}/data_folder_uri.gltf: images\\[0\\].uri 'data:/../outside.png' is not a relative path"
     data_folder_uri.gltf)
-gltf_hostile(missing-newline warn "texture '${GH}/missing[?]line.png' not found. using the default texture"
+gltf_hostile(missing-newline 2 "${GH}/missing_newline.gltf: images\\[0\\].uri 'missing%0Aline.png' has a control character \\(NUL, a line break, [.][.][.]\\)"
     missing_newline.gltf)
 gltf_hostile(webp-fallback warn "${GH}/webp_fallback.gltf: texture extension EXT_texture_webp is skipped"
     webp_fallback.gltf)
