@@ -291,6 +291,8 @@ void run(const common::Options& options) {
     common::GpuScene gpuScene = common::loadGpuScene(
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     models.clear();
+    // The book's layout (which the overlay may switch to) keeps world positions in 16-bit floats.
+    common::checkPositionRange(kBookGBuffer.formats, gpuScene.boundsMin, gpuScene.boundsMax);
     std::printf("chapter-15-lab: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
                 gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),
                 gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());

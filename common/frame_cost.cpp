@@ -66,11 +66,10 @@ double trianglePixels(const glm::dvec4 (&corner)[3], double width, double height
 
 }  // namespace
 
-FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views, uint64_t limit) {
+FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views) {
     FrameCost cost;
     cost.fragments.assign(views.size(), 0);
     std::vector<double> sums(views.size(), 0.0);
-    double total = 0.0;
     std::vector<glm::dvec4> clip;
     for (size_t index = 0; index < scene.models.size(); ++index) {
         const ModelInstance& instance = scene.models[index];
@@ -96,9 +95,9 @@ FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const Rast
                 }
                 pixels *= draws[m];
                 sums[v] += pixels;
-                total += pixels;
-                if (total > double(limit)) {
+                if (sums[v] > double(view.budget)) {
                     cost.over = true;
+                    cost.overView = v;
                     break;
                 }
             }
@@ -108,7 +107,6 @@ FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const Rast
     }
     for (size_t v = 0; v < views.size(); ++v)
         cost.fragments[v] = sums[v] >= 1.8e19 ? UINT64_MAX : uint64_t(sums[v]);
-    cost.total = total >= 1.8e19 ? UINT64_MAX : uint64_t(total);
     return cost;
 }
 
@@ -116,21 +114,24 @@ RasterView sceneRasterView(const Scene& scene, uint32_t width, uint32_t height) 
     const CameraDesc& camera = scene.camera;
     glm::mat4 view = viewMatrix(Camera{camera.position, camera.yaw, camera.pitch});
     glm::mat4 projection = projectionMatrix(camera.fov, VkExtent2D{width, height}, camera.near, camera.far);
-    return RasterView{.name = "the view", .viewProjection = projection * view, .width = width, .height = height};
+    return RasterView{.name = "the view",
+                      .viewProjection = projection * view,
+                      .width = width,
+                      .height = height,
+                      .budget = kMaxViewFragmentsPerPixel * width * height};
 }
 
 FrameCost checkFrameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views) {
     FrameCost cost = frameCost(scene, models, views);
     if (!cost.over) return cost;
-    size_t worst = size_t(std::max_element(cost.fragments.begin(), cost.fragments.end()) - cost.fragments.begin());
-    char text[320];
+    const RasterView& view = views[cost.overView];
+    char text[400];
     std::snprintf(text, sizeof(text),
-                  ": its triangles would make the first frame rasterise more than %llu fragments "
-                  "(%s alone %.3g when the count stopped, model %zu of the scene): triangles that cover "
-                  "the view or a shadow cascade many times over; at most %llu a frame",
-                  static_cast<unsigned long long>(kMaxFrameFragments), views[worst].name.c_str(),
-                  double(cost.fragments[worst]), cost.lastModel,
-                  static_cast<unsigned long long>(kMaxFrameFragments));
+                  ": its triangles cover %s many times over: the first frame would rasterise more than "
+                  "%llu fragments there, the budget of a %ux%u target (counted triangle by triangle; "
+                  "model %zu of the scene)",
+                  view.name.c_str(), static_cast<unsigned long long>(view.budget), view.width, view.height,
+                  cost.lastModel);
     throw InputError(utf8(scene.models[cost.lastModel].file) + text);
 }
 

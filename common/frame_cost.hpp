@@ -4,8 +4,8 @@
 // triangles and 2,000 layers of fragments, in every pass. A chapter adds up, triangle by
 // triangle, an upper bound of the fragments its first frame rasterises -- each triangle's area in
 // pixels in each pass that draws it, plus its perimeter and one (a triangle covers no more pixel
-// centres than that; nor more than its bounding box on the target) -- and refuses a scene beyond
-// kMaxFrameFragments in one line (docs/reliability.md, "What a frame may cost").
+// centres than that; nor more than its bounding box on the target) -- and refuses a scene whose
+// bound passes a view's budget in one line (docs/reliability.md, "What a frame may cost").
 #pragma once
 
 #include <cstdint>
@@ -28,32 +28,34 @@ struct RasterView {
     // A perspective view clips triangles at its near plane and drops those wholly beyond its far
     // plane; a depth-clamped orthographic cascade clips nothing in depth.
     bool clipDepth = true;
+    uint64_t budget = 0;  // the most fragments the bound may reach in this view
 };
 
-// At most 2^31 fragments a frame (the bound, not what the GPU finally shades): about 3 s of
-// lavapipe on two cores, where chapter-16's shadow pass rasterises some 0.67e9 of the bound a
-// second, and milliseconds on a desktop GPU. chapter-16's default scene at 1280x720 bounds at 13
-// million (docs/reliability.md has the scenes' figures).
-inline constexpr uint64_t kMaxFrameFragments = uint64_t{1} << 31;
+// The budgets. The view: on average 64 fragments a pixel (59 million at 1280x720; chapter-15's
+// scene pass shades some 34 million a second on lavapipe on two cores: under 2 s, while a real
+// scene bounds at a few a pixel -- chapter-15's default scene at 2.2). The shadow cascades: 2^31
+// fragments together, whatever their number and size (chapter-16's shadow pass rasterises some
+// 0.8e9 a second on lavapipe: under 3 s). docs/reliability.md has the measurements.
+inline constexpr uint64_t kMaxViewFragmentsPerPixel = 64;
+inline constexpr uint64_t kMaxShadowFragments = uint64_t{1} << 31;
 
 struct FrameCost {
     std::vector<uint64_t> fragments;  // per view, an upper bound (saturating)
-    uint64_t total = 0;
-    bool over = false;     // total > limit: the count stopped there
+    bool over = false;     // some view's bound passed its budget: the count stopped there
+    size_t overView = 0;   // which
     size_t lastModel = 0;  // the scene's model being counted when it stopped
 };
 
 // The bound for `scene` (its models from `models`, every placed mesh and repeat, as loadGpuScene
-// draws them) in each of `views`. Stops counting once the total passes `limit`: the work is at
+// draws them) in each of `views`. Stops counting once a view passes its budget: the work is at
 // most the scene's triangles times the views.
-FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views,
-                    uint64_t limit = kMaxFrameFragments);
+FrameCost frameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views);
 
 // The view of the scene's camera (its place, yaw, pitch, field of view, near and far) on a
-// width x height target: what the first frame's scene pass draws.
+// width x height target: what the first frame's scene pass draws, with its budget.
 RasterView sceneRasterView(const Scene& scene, uint32_t width, uint32_t height);
 
-// Throws InputError naming the costliest view when the bound passes kMaxFrameFragments;
+// Throws InputError naming the view whose bound passed its budget, and the model that did it;
 // returns the bound otherwise.
 FrameCost checkFrameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views);
 

@@ -1,6 +1,9 @@
 // G-buffer attachments, their barriers and vkCmdBeginRendering.
 #include "common/gbuffer.hpp"
 
+#include <cstdio>
+#include <string>
+
 #include "common/barriers.hpp"
 #include "common/check.hpp"
 
@@ -40,6 +43,19 @@ std::vector<const Image*> colorAttachments(const GBuffer& gbuffer) {
     for (const Image* image : {&gbuffer.position, &gbuffer.albedo, &gbuffer.normal, &gbuffer.pbr})
         if (image->handle != VK_NULL_HANDLE) result.push_back(image);
     return result;
+}
+
+void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax) {
+    if (formats.position != VK_FORMAT_R16G16B16A16_SFLOAT) return;
+    float reach = glm::max(glm::max(glm::abs(boundsMin.x), glm::abs(boundsMin.y)), glm::abs(boundsMin.z));
+    reach = glm::max(reach, glm::max(glm::max(glm::abs(boundsMax.x), glm::abs(boundsMax.y)), glm::abs(boundsMax.z)));
+    if (!(reach <= kMaxHalfFloat)) {
+        char text[64];
+        std::snprintf(text, sizeof(text), "%g", double(reach));
+        throw InputError(std::string("the scene reaches ") + text +
+                         " on an axis; the G-buffer keeps world positions in 16-bit floats (the book's "
+                         "R16G16B16A16_SFLOAT), which end at 65504: a scene is drawn within -65504..65504");
+    }
 }
 
 GBuffer createGBuffer(const Device& device, VkExtent2D extent, const GBufferFormats& formats) {

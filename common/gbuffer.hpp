@@ -9,6 +9,8 @@
 
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "common/device.hpp"
 #include "common/image.hpp"
 
@@ -30,6 +32,14 @@ struct GBufferFormats {
 std::vector<VkFormat> colorFormats(const GBufferFormats& formats);
 // Bytes per pixel of all attachments, depth included.
 uint32_t bytesPerPixel(const GBufferFormats& formats);
+
+// A position attachment of 16-bit floats (the book's R16G16B16A16_SFLOAT) holds world positions
+// up to 65504 on each axis; beyond, a surface's position is infinite and its shading not a
+// number. Throws InputError when the scene's bounds reach past that (other formats: no limit).
+// Within it, the positions are spaced 2^(e-10) apart for |x| in [2^e, 2^(e+1)): 1/128 at 1,
+// 8 at 10,000 (docs/accuracy.md shows what that does to the shading).
+inline constexpr float kMaxHalfFloat = 65504.0f;
+void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax);
 
 struct GBuffer {
     Image position;  // no handle when the layout has no position attachment

@@ -1058,6 +1058,259 @@ void writeBookModelHostile(const fs::path& dir) {
     fs::remove(missing / "tree.idx");
 }
 
+// ---- Work, numbers and mirrors at the extremes (tests/extremes.cmake) -------------------------
+
+// Writes a model in the book's converted format: NAME.json naming `meshes` (ranges of NAME.vtx
+// and NAME.idx), NAME_mat.json with `materials`.
+void writeBookModel(const fs::path& dir, const std::string& name, const std::vector<float>& vertices,
+                    const std::vector<uint32_t>& indices, json meshes, json materials) {
+    fs::create_directories(dir);
+    std::string vtx, idx;
+    auto put = [](std::string& out, uint32_t bits) {
+        for (int shift : {24, 16, 8, 0}) out.push_back(char(uint8_t(bits >> shift)));
+    };
+    for (float f : vertices) {
+        uint32_t bits;
+        std::memcpy(&bits, &f, sizeof(bits));
+        put(vtx, bits);
+    }
+    for (uint32_t i : indices) put(idx, i);
+    writeText(dir / (name + ".vtx"), vtx);
+    writeText(dir / (name + ".idx"), idx);
+    writeText(dir / (name + ".json"),
+              json({{"meshes", meshes}, {"vtx_path", name + ".vtx"}, {"idx_path", name + ".idx"}}).dump());
+    writeText(dir / (name + "_mat.json"), materials.dump());
+}
+
+json bookMaterial(const std::string& id, const std::string& texture = "") {
+    return json{{"id", id},
+                {"texture_path", texture},
+                {"normal_map_path", ""},
+                {"metal_rough_map", ""},
+                {"diffuse_color", {{"x", 0.8}, {"y", 0.8}, {"z", 0.8}, {"w", 1.0}}},
+                {"roughness_factor", 1.0},
+                {"metallic_factor", 0.0}};
+}
+
+// `count` squares of side 2 x `half`, facing up, at heights 0, 1 mm, 2 mm, ...: each covers the
+// view and every shadow cascade, so a frame rasterises `count` layers of fragments in every pass.
+BookMesh stackedQuads(int count, float half) {
+    BookMesh mesh;
+    for (int i = 0; i < count; ++i)
+        bookQuad(mesh, {-half, 0.001f * float(i), half}, {2 * half, 0, 0}, {0, 0, -2 * half}, {1, 1});
+    return mesh;
+}
+
+void writeStackedGltf(const fs::path& path, int count, float half, int nodes) {
+    BookMesh quads = stackedQuads(count, half);
+    gltf::File file;
+    std::vector<vec3> p, n;
+    for (size_t v = 0; v < quads.vertices.size(); v += 14) {
+        p.push_back({quads.vertices[v], quads.vertices[v + 1], quads.vertices[v + 2]});
+        n.push_back({quads.vertices[v + 3], quads.vertices[v + 4], quads.vertices[v + 5]});
+    }
+    int grey = file.material({{"pbrMetallicRoughness", color(0.8f, 0.8f, 0.8f)}});
+    int mesh = file.mesh(json::array(
+        {{{"attributes", {{"POSITION", file.positions(p)}, {"NORMAL", file.values(n, gltf::kFloat, "VEC3")}}},
+          {"indices", file.values(quads.indices, gltf::kUnsignedInt, "SCALAR")},
+          {"material", grey}}}));
+    std::vector<int> roots;
+    for (int i = 0; i < nodes; ++i) roots.push_back(file.node({{"mesh", mesh}}));
+    file.scene(roots);
+    file.writeGltf(path);
+}
+
+// The same in the book's format: one range of `count` quads named by `names` meshes.
+void writeStackedBook(const fs::path& dir, const std::string& name, int count, float half, int names) {
+    BookMesh quads = stackedQuads(count, half);
+    json meshes = json::array();
+    for (int i = 0; i < names; ++i)
+        meshes.push_back({{"material_id", "grey"},
+                          {"offset_vtx", 0},
+                          {"vtx_size", quads.vertices.size() * 4},
+                          {"offset_idx", 0},
+                          {"idx_size", quads.indices.size() * 4}});
+    writeBookModel(dir, name, quads.vertices, quads.indices, meshes, json::array({bookMaterial("grey")}));
+}
+
+// An asymmetric solid on a floor (an L of two boxes of different colours at +x, a slab at -z), and
+// scenes that show it plain and mirrored in x: by a scene file's scale, by a glTF node's, and the
+// book's format by a scene file's. Camera and sun lie in the plane x = 0, so the mirrored scene's
+// picture is the plain one's mirror image.
+void writeMirrors(const fs::path& dir) {
+    fs::create_directories(dir);
+    auto build = [](gltf::File& file) {
+        int floorGrey = file.material({{"pbrMetallicRoughness", color(0.7f, 0.7f, 0.7f)}});
+        int red = file.material({{"pbrMetallicRoughness", color(0.8f, 0.15f, 0.1f)}});
+        int blue = file.material({{"pbrMetallicRoughness", color(0.1f, 0.2f, 0.8f)}});
+        json primitives = json::array({boxPrimitive(file, floorGrey, {-6, -0.1f, -6}, {6, 0, 6}),
+                                       boxPrimitive(file, red, {0.5f, 0, -1}, {2.5f, 0.8f, 0}),
+                                       boxPrimitive(file, blue, {1.7f, 0.8f, -1}, {2.5f, 2.4f, 0}),
+                                       boxPrimitive(file, red, {-3, 0, -3}, {-0.5f, 1.2f, -2.6f})});
+        return file.mesh(primitives);
+    };
+    {
+        gltf::File plain;
+        int mesh = build(plain);
+        plain.scene({plain.node({{"mesh", mesh}})});
+        plain.writeGltf(dir / "lblock.gltf");
+    }
+    {
+        gltf::File mirrored;
+        int mesh = build(mirrored);
+        int child = mirrored.node({{"mesh", mesh}});
+        mirrored.scene({mirrored.node({{"children", {child}}, {"scale", {-1, 1, 1}}})});
+        mirrored.writeGltf(dir / "lblock_mirrored_node.gltf");
+    }
+    auto sceneFile = [&](const char* name, json models) {
+        json root = {{"models", models},
+                     {"camera", {{"position", {0, 5, 7}}, {"yaw", 0}, {"pitch", -35}, {"fov", 60}, {"near", 0.1}, {"far", 40}}},
+                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.15}}},
+                     {"lights", json::array({{{"type", "directional"}, {"direction", {0, -1, -0.6}}, {"intensity", 2.0}}})}};
+        writeText(dir / name, root.dump(2));
+    };
+    sceneFile("mirror_plain.json", json::array({{{"file", "lblock.gltf"}}}));
+    sceneFile("mirror_scene.json", json::array({{{"file", "lblock.gltf"}, {"scale", {-1, 1, 1}}}}));
+    sceneFile("mirror_node.json", json::array({{{"file", "lblock_mirrored_node.gltf"}}}));
+    // Mirrored twice (x and z, determinant positive) is a half turn: drawn as it is, no winding
+    // turned (the same picture as a rotation of 180 degrees about y).
+    sceneFile("mirror_twice.json", json::array({{{"file", "lblock.gltf"}, {"scale", {-1, 1, -1}}}}));
+    sceneFile("mirror_turned.json", json::array({{{"file", "lblock.gltf"}, {"rotation", {0, 180, 0}}}}));
+    // The book's format: an open box (its four sides only, like the book's tree trunk) standing at
+    // +x on a floor, seen from outside: with the winding wrong, the near sides are culled and the
+    // far sides' insides show.
+    BookMesh box{.material = "grey"};
+    const float h = 0.6f;
+    vec3 c(1.5f, 0, -1);
+    bookQuad(box, c + vec3(-h, 0, h), {2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});    // +z face
+    bookQuad(box, c + vec3(h, 0, -h), {-2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});   // -z
+    bookQuad(box, c + vec3(h, 0, h), {0, 0, -2 * h}, {0, 1.5f, 0}, {1, 1});    // +x
+    bookQuad(box, c + vec3(-h, 0, -h), {0, 0, 2 * h}, {0, 1.5f, 0}, {1, 1});   // -x
+    bookQuad(box, c + vec3(-h, 0.4f, h), {h, 0, 0}, {0, 0, -2 * h}, {1, 1});   // a ledge inside, facing up
+    json boxMeshes = json::array({{{"material_id", "grey"},
+                                   {"offset_vtx", 0},
+                                   {"vtx_size", box.vertices.size() * 4},
+                                   {"offset_idx", 0},
+                                   {"idx_size", box.indices.size() * 4}}});
+    writeBookModel(dir, "openbox", box.vertices, box.indices, boxMeshes, json::array({bookMaterial("grey")}));
+    sceneFile("mirror_book_plain.json", json::array({{{"file", "openbox.json"}}}));
+    sceneFile("mirror_book_scene.json", json::array({{{"file", "openbox.json"}, {"scale", {-1, 1, 1}}}}));
+}
+
+void writeExtremes(const fs::path& dir) {
+    fs::create_directories(dir);
+    // Overdraw: 2,000 quads of 40 x 40 m stacked 1 mm apart (4,000 triangles, one mesh); the
+    // same drawn by 20 nodes; quads of 2 km; 200 (drawn: within the bound at the defaults).
+    writeStackedGltf(dir / "stacked_2000.gltf", 2000, 20.0f, 1);
+    writeStackedGltf(dir / "stacked_2000_x20.gltf", 2000, 20.0f, 20);
+    writeStackedGltf(dir / "stacked_2000_2km.gltf", 2000, 1000.0f, 1);
+    writeStackedGltf(dir / "stacked_200.gltf", 200, 20.0f, 1);
+    // The book's format: one range of 2,000 quads named by 20 meshes, and by one.
+    writeStackedBook(dir / "book", "stacked_x20", 2000, 20.0f, 20);
+    writeStackedBook(dir / "book", "stacked_200", 200, 20.0f, 1);
+    // The book's clone whose tree is 2,000 stacked quads named 20 times (its units: the book
+    // scales the tree by 0.005).
+    writeBookClone(dir / "clone");
+    writeStackedBook(dir / "clone" / "booksamples" / "chapter-16" / "resources" / "models" / "tree", "tree",
+                     2000, 2000.0f, 20);
+    // Memory: one range of 4,096 vertices (229 KB) named by 4,096 meshes (2^24 vertices named,
+    // decoded once), and 4,096 ranges sliding by one vertex over 8,191 (2^24 vertices, all distinct:
+    // the largest the vertex budget admits from a 459 KB file).
+    {
+        std::vector<float> vertices;
+        for (int v = 0; v < 8191; ++v)
+            for (float f : {float(v % 64) * 0.01f, 0.0f, float(v / 64) * 0.01f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f, 0.0f,
+                            0.0f, 0.0f, 1.0f, 0.0f, 0.0f})
+                vertices.push_back(f);
+        std::vector<uint32_t> indices{0, 64, 1};
+        json shared = json::array(), sliding = json::array();
+        for (int i = 0; i < 4096; ++i) {
+            json mesh = {{"material_id", "grey"}, {"offset_vtx", 0}, {"vtx_size", 4096 * 56}, {"offset_idx", 0}, {"idx_size", 12}};
+            shared.push_back(mesh);
+            mesh["offset_vtx"] = i * 56;
+            sliding.push_back(mesh);
+        }
+        writeBookModel(dir / "memory", "shared_range", vertices, indices, shared, json::array({bookMaterial("grey")}));
+        writeBookModel(dir / "memory", "sliding_ranges", vertices, indices, sliding, json::array({bookMaterial("grey")}));
+    }
+    // Warnings: 5,000 materials no mesh uses, naming 15,000 textures that do not exist.
+    {
+        BookMesh quad{.material = "used"};
+        bookQuad(quad, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, {1, 1});
+        json materials = json::array({bookMaterial("used")});
+        for (int i = 0; i < 5000; ++i) {
+            json m = bookMaterial("unused" + std::to_string(i), "missing_" + std::to_string(i) + ".png");
+            m["normal_map_path"] = "missing_normal_" + std::to_string(i) + ".png";
+            m["metal_rough_map"] = "missing_rough_" + std::to_string(i) + ".png";
+            materials.push_back(m);
+        }
+        json meshes = json::array({{{"material_id", "used"},
+                                    {"offset_vtx", 0},
+                                    {"vtx_size", quad.vertices.size() * 4},
+                                    {"offset_idx", 0},
+                                    {"idx_size", quad.indices.size() * 4}}});
+        writeBookModel(dir / "warnings", "many_missing", quad.vertices, quad.indices, meshes, materials);
+    }
+    // Paths with control characters: a NUL in the book format's binary path ("m.vtx\0.other" would
+    // be read as m.vtx), a line break in a texture's; NEL (U+0085) in a scene file's model path.
+    {
+        BookMesh quad{.material = "grey"};
+        bookQuad(quad, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, {1, 1});
+        json meshes = json::array({{{"material_id", "grey"},
+                                    {"offset_vtx", 0},
+                                    {"vtx_size", quad.vertices.size() * 4},
+                                    {"offset_idx", 0},
+                                    {"idx_size", quad.indices.size() * 4}}});
+        writeBookModel(dir / "paths", "nul", quad.vertices, quad.indices, meshes, json::array({bookMaterial("grey")}));
+        json model = json::parse(std::ifstream(dir / "paths" / "nul.json"));
+        model["vtx_path"] = std::string("nul.vtx\0.other", 14);
+        writeText(dir / "paths" / "nul.json", model.dump());
+        writeBookModel(dir / "paths", "newline_texture", quad.vertices, quad.indices, meshes,
+                       json::array({bookMaterial("grey", "leaf\npng.png")}));
+        writeText(dir / "paths" / "nel_scene.json",
+                  json({{"models", json::array({{{"file", "model\xc2\x85.gltf"}}})}}).dump());
+    }
+    // Numbers at the edge of float: suns whose length no float holds, a model whose bounds
+    // overflow once placed, a far plane 1e6 times the near one, the 16-bit G-buffer's limit.
+    {
+        auto sceneWith = [&](const char* name, json sunDirection, json model, json camera = json::object()) {
+            json cam = {{"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+            cam.update(camera);
+            writeText(dir / "numbers" / name,
+                      json({{"models", json::array({model})},
+                            {"camera", cam},
+                            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+                            {"lights", json::array({{{"type", "directional"}, {"direction", sunDirection}, {"intensity", 2.0}}})}})
+                          .dump(2));
+        };
+        fs::create_directories(dir / "numbers");
+        fs::copy_file(dir / ".." / "shadows" / "box_on_plane.gltf", dir / "numbers" / "box_on_plane.gltf",
+                      fs::copy_options::overwrite_existing);
+        fs::copy_file(dir / ".." / "shadows" / "box_on_plane.bin", dir / "numbers" / "box_on_plane.bin",
+                      fs::copy_options::overwrite_existing);
+        json box = {{"file", "box_on_plane.gltf"}};
+        sceneWith("sun_unit.json", {0, -1, 0}, box);
+        sceneWith("sun_1e30.json", {0, -1e30, 0}, box);
+        sceneWith("sun_diagonal_unit.json", {1, -1, 1}, box);
+        sceneWith("sun_diagonal_1e20.json", {1e20, -1e20, 1e20}, box);
+        sceneWith("sun_tiny.json", {0, -1e-7, 0}, box);
+        sceneWith("bounds_overflow.json", {0, -1, 0},
+                  {{"file", "box_on_plane.gltf"}, {"position", {1e15, 0, 0}}, {"scale", 1e30}, {"rotation", {0, 45, 0}}});
+        sceneWith("far_1e30.json", {0, -1, 0}, box, {{"far", 1e30}});
+        sceneWith("far_over_near_1e6.json", {0, -1, 0}, box, {{"near", 0.01}, {"far", 10000}});
+        // The box scene moved 60,000 and 70,000 along x: within and past what 16-bit floats hold.
+        sceneWith("at_60000.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {60000, 0, 0}}},
+                  {{"position", {60000, 10, 0}}});
+        sceneWith("at_70000.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {70000, 0, 0}}},
+                  {{"position", {70000, 10, 0}}});
+        // ... and, for the chapters whose G-buffer holds no position (10, 14), at 1e7.
+        sceneWith("at_1e7.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {1e7, 0, 0}}},
+                  {{"position", {1e7, 10, 0}}});
+        sceneWith("at_origin.json", {1, -1, 0.5}, box);
+    }
+    writeMirrors(dir / "mirrors");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1076,6 +1329,7 @@ int main(int argc, char** argv) {
         writeBookClone(dir / "book");
         writeBookClone(dir / "book-without-tree", false);
         writeBookModelHostile(dir / "book-hostile");
+        writeExtremes(dir / "extremes");
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "gltf_cases: %s\n", error.what());

@@ -5,7 +5,7 @@
 //   image_compare IMAGE [--size W H] [--pixel-linear X Y R G B]... [--pixel X Y R G B]...
 //                       [--pixel-tolerance N] [--golden FILE --max-diff N --max-fraction F]
 //                       [--expect-scaled REFERENCE FACTOR --max-diff N --max-fraction F]
-//                       [--overlay-like BASE OTHER OTHER_BASE]
+//                       [--overlay-like BASE OTHER OTHER_BASE] [--mirrored]
 //
 // --pixel-linear takes a linear colour (what a shader writes or a clear colour holds) and
 // expects its sRGB encoding in the PNG; --pixel takes 8-bit values as stored. --expect-scaled
@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
     const char* overlayBase = nullptr;
     const char* overlayOther = nullptr;
     const char* overlayOtherBase = nullptr;
+    bool mirrored = false;  // --mirrored: the golden is compared with its mirror image (left <-> right)
     for (int i = 2; i < argc; ++i) {
         std::string_view arg = argv[i];
         auto need = [&](int n) {
@@ -132,6 +133,8 @@ int main(int argc, char** argv) {
             overlayBase = argv[++i];
             overlayOther = argv[++i];
             overlayOtherBase = argv[++i];
+        } else if (arg == "--mirrored") {
+            mirrored = true;
         } else if (arg == "--max-diff") {
             need(1);
             maxDiff = std::atoi(argv[++i]);
@@ -173,6 +176,13 @@ int main(int argc, char** argv) {
                         image.width, image.height);
             return 1;
         }
+        if (mirrored)
+            for (int y = 0; y < reference.height; ++y)
+                for (int x = 0; x < reference.width / 2; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        std::swap(reference.rgb[(size_t(y) * reference.width + size_t(x)) * 3 + size_t(c)],
+                                  reference.rgb[(size_t(y) * reference.width + size_t(reference.width - 1 - x)) * 3 +
+                                                size_t(c)]);
         size_t count = size_t(image.width) * image.height, over = 0;
         int worst = 0;
         double sumSquares = 0;
