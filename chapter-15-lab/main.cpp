@@ -24,6 +24,7 @@
 #include "common/commands.hpp"
 #include "common/debug_names.hpp"
 #include "common/device.hpp"
+#include "common/files.hpp"
 #include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
@@ -292,7 +293,8 @@ void run(const common::Options& options) {
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     models.clear();
     // The book's layout (which the overlay may switch to) keeps world positions in 16-bit floats.
-    common::checkPositionRange(kBookGBuffer.formats, gpuScene.boundsMin, gpuScene.boundsMax);
+    common::checkPositionRange(kBookGBuffer.formats, gpuScene.boundsMin, gpuScene.boundsMax,
+                               common::utf8(options.scene.empty() ? options.model : options.scene));
     std::printf("chapter-15-lab: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
                 gpuScene.draws.size(), static_cast<unsigned long long>(gpuScene.triangles),
                 gpuScene.textures.size(), gpuScene.materials.size(), scene.lights.size());

@@ -24,6 +24,7 @@
 #include "common/cli.hpp"
 #include "common/commands.hpp"
 #include "common/device.hpp"
+#include "common/files.hpp"
 #include "common/frame_cost.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/gui.hpp"
@@ -246,7 +247,8 @@ void setUp(Chapter& c, const common::Options& options) {
     c.gpuScene = common::loadGpuScene(c.device, c.scene, models,
                                       {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
     // The book's G-buffer keeps world positions in 16-bit floats: a scene within +-65504.
-    common::checkPositionRange(kBookGBuffer.formats, c.gpuScene.boundsMin, c.gpuScene.boundsMax);
+    common::checkPositionRange(kBookGBuffer.formats, c.gpuScene.boundsMin, c.gpuScene.boundsMax,
+                               common::utf8(options.scene.empty() ? options.model : options.scene));
     std::printf("chapter-15: %zu draws, %llu triangles, %zu textures, %zu materials, %zu lights\n",
                 c.gpuScene.draws.size(), static_cast<unsigned long long>(c.gpuScene.triangles),
                 c.gpuScene.textures.size(), c.gpuScene.materials.size(), c.scene.lights.size());

@@ -17,7 +17,11 @@ glm::vec3 cameraForward(const Camera& camera) {
 }
 
 glm::mat4 viewMatrix(const Camera& camera) {
-    return glm::lookAt(camera.position, camera.position + cameraForward(camera), glm::vec3(0.0f, 1.0f, 0.0f));
+    // The rotation from the forward direction alone, then the translation: lookAt(position,
+    // position + forward) loses the direction once position is large (at 1e15 a float is 2^27
+    // apart, and position + forward is position again).
+    glm::mat4 rotation = glm::lookAt(glm::vec3(0.0f), cameraForward(camera), glm::vec3(0.0f, 1.0f, 0.0f));
+    return glm::translate(rotation, -camera.position);
 }
 
 glm::mat4 projectionMatrix(float fovDegrees, VkExtent2D extent, float near, float far) {

@@ -53,7 +53,8 @@ double trianglePixels(const glm::dvec4 (&corner)[3], double width, double height
     double boxWidth = std::min(high.x, width) - std::max(low.x, 0.0);
     double boxHeight = std::min(high.y, height) - std::max(low.y, 0.0);
     if (!(boxWidth >= 0.0 && boxHeight >= 0.0)) return 0.0;  // off the target (or not a number)
-    double box = (std::ceil(boxWidth) + 1.0) * (std::ceil(boxHeight) + 1.0);
+    // Pixel centres in the box: a closed interval of length w holds at most floor(w) + 1 of them.
+    double box = (std::floor(boxWidth) + 1.0) * (std::floor(boxHeight) + 1.0);
     double area = 0.0, perimeter = 0.0;
     for (int i = 0; i < count; ++i) {
         const glm::dvec2 &a = p[i], &b = p[(i + 1) % count];
@@ -118,7 +119,7 @@ RasterView sceneRasterView(const Scene& scene, uint32_t width, uint32_t height) 
                       .viewProjection = projection * view,
                       .width = width,
                       .height = height,
-                      .budget = kMaxViewFragmentsPerPixel * width * height};
+                      .budget = std::max(kMaxViewFragmentsPerPixel * width * height, kMinViewFragments)};
 }
 
 FrameCost checkFrameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views) {

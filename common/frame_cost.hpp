@@ -36,7 +36,10 @@ struct RasterView {
 // scene bounds at a few a pixel -- chapter-15's default scene at 2.2). The shadow cascades: 2^31
 // fragments together, whatever their number and size (chapter-16's shadow pass rasterises some
 // 0.8e9 a second on lavapipe: under 3 s). docs/reliability.md has the measurements.
+// Small targets get at least 2^24 (a triangle that covers no pixel centre still counts one in
+// the bound, and 16 million fragments are under half a second of lavapipe).
 inline constexpr uint64_t kMaxViewFragmentsPerPixel = 64;
+inline constexpr uint64_t kMinViewFragments = uint64_t{1} << 24;
 inline constexpr uint64_t kMaxShadowFragments = uint64_t{1} << 31;
 
 struct FrameCost {

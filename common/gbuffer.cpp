@@ -45,14 +45,15 @@ std::vector<const Image*> colorAttachments(const GBuffer& gbuffer) {
     return result;
 }
 
-void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax) {
+void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax,
+                        const std::string& origin) {
     if (formats.position != VK_FORMAT_R16G16B16A16_SFLOAT) return;
     float reach = glm::max(glm::max(glm::abs(boundsMin.x), glm::abs(boundsMin.y)), glm::abs(boundsMin.z));
     reach = glm::max(reach, glm::max(glm::max(glm::abs(boundsMax.x), glm::abs(boundsMax.y)), glm::abs(boundsMax.z)));
     if (!(reach <= kMaxHalfFloat)) {
         char text[64];
         std::snprintf(text, sizeof(text), "%g", double(reach));
-        throw InputError(std::string("the scene reaches ") + text +
+        throw InputError(origin + ": the scene reaches " + text +
                          " on an axis; the G-buffer keeps world positions in 16-bit floats (the book's "
                          "R16G16B16A16_SFLOAT), which end at 65504: a scene is drawn within -65504..65504");
     }

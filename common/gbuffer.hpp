@@ -7,6 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,7 +40,9 @@ uint32_t bytesPerPixel(const GBufferFormats& formats);
 // Within it, the positions are spaced 2^(e-10) apart for |x| in [2^e, 2^(e+1)): 1/128 at 1,
 // 8 at 10,000 (docs/accuracy.md shows what that does to the shading).
 inline constexpr float kMaxHalfFloat = 65504.0f;
-void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax);
+// `origin` names the scene in the message (its file).
+void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm::vec3 boundsMax,
+                        const std::string& origin);
 
 struct GBuffer {
     Image position;  // no handle when the layout has no position attachment

@@ -124,14 +124,16 @@ struct ModelData {
 // Primitives drawn, each once per node that draws its mesh: 20,000. Each becomes a mesh of its
 // own, with two buffers and a draw (about 20 KB of host memory each on lavapipe).
 inline constexpr uint64_t kMaxModelPrimitives = 20000;
-// Vertices after baking (flat normals, strips and fans unrolled, every node instance): 16 Mi,
-// 56 bytes each, 896 MiB.
-inline constexpr uint64_t kMaxModelVertices = uint64_t{1} << 24;
+// Vertices after baking (flat normals, strips and fans unrolled, every node instance): 8 Mi,
+// 56 bytes each, 448 MiB -- held three times while a model is uploaded (the CPU copy, the staging
+// copy, the device's, which lavapipe keeps in host memory): the largest model admitted peaks
+// under 2 GB (docs/reliability.md).
+inline constexpr uint64_t kMaxModelVertices = uint64_t{1} << 23;
 // Indices after baking: 32 Mi (11 M triangles), 128 MiB.
 inline constexpr uint64_t kMaxModelIndices = uint64_t{1} << 25;
 // Values decoded from glTF accessors (each accessor once) and the corner lists of the distinct
-// primitives (a slot per vertex and per corner): 256 Mi, about 1 GiB of floats.
-inline constexpr uint64_t kMaxModelValuesRead = uint64_t{1} << 28;
+// primitives (a slot per vertex and per corner): 128 Mi, 512 MiB of floats.
+inline constexpr uint64_t kMaxModelValuesRead = uint64_t{1} << 27;
 
 // The largest distance from the origin along any axis that a vertex may have after baking: its
 // square, and sums of such squares, stay finite in 32-bit floats (loadModel refuses the rest).

@@ -235,12 +235,16 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
             if (type == "directional") {
                 light.type = Light::Type::Directional;
                 if (!l.contains("direction")) r.fail(where, "a directional light needs 'direction'");
-                // Normalised here, in double: [0, -1e30, 0] is a direction, but its length in
-                // 32-bit floats is infinite (and so every later normalisation would make it zero).
+                // [0, -1e30, 0] is a direction, but its length in 32-bit floats is infinite (and
+                // every later normalisation would make it zero): one whose largest component
+                // passes 1e15 is scaled, in double, to a largest component of 1 (the same
+                // direction; smaller ones are kept as written, so a scene file reads back the same).
                 glm::dvec3 direction(r.vector<3>(l["direction"], where + ".direction", -kHuge, kHuge));
-                double length = glm::length(direction);
-                if (!(length >= 1e-6)) r.fail(where + ".direction", "must not be zero (its length is below 1e-6)");
-                light.direction = glm::vec3(direction / length);
+                double largest = glm::max(glm::max(std::abs(direction.x), std::abs(direction.y)), std::abs(direction.z));
+                if (largest > 1e15) direction /= largest;
+                if (!(glm::length(direction) >= 1e-6))
+                    r.fail(where + ".direction", "must not be zero (its length is below 1e-6)");
+                light.direction = glm::vec3(direction);
                 if (l.contains("position"))
                     r.fail(where + ".position", "a directional light has no position");
             } else if (type == "point") {

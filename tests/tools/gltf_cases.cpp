@@ -675,13 +675,13 @@ void writeHostile(const fs::path& dir) {
          [](gltf::File& f) { f.root["meshes"][0]["primitives"][0]["attributes"]["a\nb"] = 4294967296ull; });
     // Work from a small file: 10,000 nodes share one mesh whose POSITION is 2^25 zeros and one
     // sparse value (no buffer view), drawn without indices: 2^25 vertices per node.
-    auto sharedSparse = [](gltf::File& f, int nodes, bool fewIndices) {
+    auto sharedSparse = [](gltf::File& f, int nodes, bool fewIndices, uint64_t count = 33554432) {
         std::vector<uint32_t> index{1};
         std::vector<float> value{1, 0, 0};
         int indices = f.view(index.data(), 4), values = f.view(value.data(), 12);
         int positions = f.add(
             "accessors", {{"componentType", gltf::kFloat},
-                          {"count", 33554432},
+                          {"count", count},
                           {"type", "VEC3"},
                           {"sparse",
                            {{"count", 1},
@@ -696,9 +696,9 @@ void writeHostile(const fs::path& dir) {
         f.root["scenes"][0]["nodes"] = roots;
     };
     make("shared_sparse.gltf", [&](gltf::File& f) { sharedSparse(f, 10000, false); });
-    // The same accessor under 1,000 nodes, drawn by 3 indices: legal and within the budget, it is
-    // decoded once (not 1,000 times) and draws 1,000 triangles.
-    make("shared_sparse_indexed.gltf", [&](gltf::File& f) { sharedSparse(f, 1000, true); });
+    // The same accessor (of 2^24 vertices) under 1,000 nodes, drawn by 3 indices: legal and within
+    // the budget, it is decoded once (not 1,000 times) and draws 1,000 triangles.
+    make("shared_sparse_indexed.gltf", [&](gltf::File& f) { sharedSparse(f, 1000, true, 16777216); });
     // A strip of 2^25 vertices (zeros and one sparse value: no bytes) without normals: flat
     // shading would bake 3 vertices for each of its 2^25 - 2 triangles, 100 M vertices.
     auto sparsePositions = [](gltf::File& f, uint64_t count, int mode) {
@@ -719,7 +719,7 @@ void writeHostile(const fs::path& dir) {
     };
     make("strip_flat.gltf", [&](gltf::File& f) { sparsePositions(f, 33554432, gltf::kTriangleStrip); });
     // One triangle more than the vertex budget: 5,592,406 flat triangles bake 16,777,218 vertices.
-    make("budget_plus_one.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 5592406, gltf::kTriangles); });
+    make("budget_plus_one.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 2796203, gltf::kTriangles); });
     // Accessor counts at the limit and one past it (an accessor no mesh uses is checked too).
     for (uint64_t count : {33554432ull, 33554433ull})
         make("count_" + std::to_string(count) + ".gltf", [&](gltf::File& f) {
@@ -1213,18 +1213,18 @@ void writeExtremes(const fs::path& dir) {
     writeBookClone(dir / "clone");
     writeStackedBook(dir / "clone" / "booksamples" / "chapter-16" / "resources" / "models" / "tree", "tree",
                      2000, 2000.0f, 20);
-    // Memory: one range of 4,096 vertices (229 KB) named by 4,096 meshes (2^24 vertices named,
-    // decoded once), and 4,096 ranges sliding by one vertex over 8,191 (2^24 vertices, all distinct:
-    // the largest the vertex budget admits from a 459 KB file).
+    // Memory: one range of 4,096 vertices (229 KB) named by 2,048 meshes (2^23 vertices named,
+    // decoded once), and 2,048 ranges sliding by one vertex over 6,143 (2^23 vertices, all
+    // distinct: the largest the vertex budget admits, from a 344 KB file).
     {
         std::vector<float> vertices;
-        for (int v = 0; v < 8191; ++v)
+        for (int v = 0; v < 6143; ++v)
             for (float f : {float(v % 64) * 0.01f, 0.0f, float(v / 64) * 0.01f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f, 0.0f,
                             0.0f, 0.0f, 1.0f, 0.0f, 0.0f})
                 vertices.push_back(f);
         std::vector<uint32_t> indices{0, 64, 1};
         json shared = json::array(), sliding = json::array();
-        for (int i = 0; i < 4096; ++i) {
+        for (int i = 0; i < 2048; ++i) {
             json mesh = {{"material_id", "grey"}, {"offset_vtx", 0}, {"vtx_size", 4096 * 56}, {"offset_idx", 0}, {"idx_size", 12}};
             shared.push_back(mesh);
             mesh["offset_vtx"] = i * 56;
@@ -1295,7 +1295,7 @@ void writeExtremes(const fs::path& dir) {
         sceneWith("sun_diagonal_1e20.json", {1e20, -1e20, 1e20}, box);
         sceneWith("sun_tiny.json", {0, -1e-7, 0}, box);
         sceneWith("bounds_overflow.json", {0, -1, 0},
-                  {{"file", "box_on_plane.gltf"}, {"position", {1e15, 0, 0}}, {"scale", 1e30}, {"rotation", {0, 45, 0}}});
+                  {{"file", "box_on_plane.gltf"}, {"position", {9e14, 0, 0}}, {"scale", 1e30}, {"rotation", {0, 45, 0}}});
         sceneWith("far_1e30.json", {0, -1, 0}, box, {{"far", 1e30}});
         sceneWith("far_over_near_1e6.json", {0, -1, 0}, box, {{"near", 0.01}, {"far", 10000}});
         // The box scene moved 60,000 and 70,000 along x: within and past what 16-bit floats hold.
@@ -1303,9 +1303,13 @@ void writeExtremes(const fs::path& dir) {
                   {{"position", {60000, 10, 0}}});
         sceneWith("at_70000.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {70000, 0, 0}}},
                   {{"position", {70000, 10, 0}}});
-        // ... and, for the chapters whose G-buffer holds no position (10, 14), at 1e7.
-        sceneWith("at_1e7.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {1e7, 0, 0}}},
-                  {{"position", {1e7, 10, 0}}});
+        // ... and, for the chapters whose G-buffer holds no position (10, 14), at 1e6 (32-bit
+        // floats 1/16 apart) and at 1e15 (the coordinates' limit: 2^27 apart, the box a point).
+        sceneWith("at_1e6.json", {1, -1, 0.5}, {{"file", "box_on_plane.gltf"}, {"position", {1e6, 0, 0}}},
+                  {{"position", {1e6, 10, 0}}});
+        sceneWith("at_9e14.json", {1, -1, 0.5},
+                  {{"file", "box_on_plane.gltf"}, {"position", {9e14, 0, 0}}, {"scale", 1e9}},
+                  {{"position", {9e14, 1e10, 0}}, {"near", 1e8}, {"far", 5e10}});
         sceneWith("at_origin.json", {1, -1, 0.5}, box);
     }
     writeMirrors(dir / "mirrors");
