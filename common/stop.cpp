@@ -26,13 +26,14 @@ extern "C" void interrupt(int signal) {
 }
 
 void watchdog(std::string name) {
-    while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();
     std::fprintf(stderr, "%s: %s in the middle of a frame or a load; stopped\n", name.c_str(),
                  signal > 0 ? "interrupted" : "closed");
     std::fflush(stderr);
+    std::fflush(stdout);  // what the run printed so far (stdio locks each stream: safe from here)
     std::_Exit(signal > 0 ? 128 + signal : 0);  // a closed window: the run's normal end
 }
 

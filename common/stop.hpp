@@ -10,7 +10,7 @@ namespace common {
 // so, and the process exits at once with 128 + the signal (130 for Ctrl+C, 143 for SIGTERM), as
 // a shell reports a process a signal ended. Nothing else is left: the device and its memory
 // belong to the process.
-inline constexpr int kStopGraceMs = 500;
+inline constexpr int kStopGraceMs = 400;
 void watchForStop(const char* chapterName);
 // Whether a stop was asked for (the signal, or requestStop).
 bool stopRequested();

@@ -1205,6 +1205,8 @@ void writeExtremes(const fs::path& dir) {
     writeStackedGltf(dir / "stacked_2000_x20.gltf", 2000, 20.0f, 20);
     writeStackedGltf(dir / "stacked_2000_2km.gltf", 2000, 1000.0f, 1);
     writeStackedGltf(dir / "stacked_200.gltf", 200, 20.0f, 1);
+    // 450: within the bound, and more than a second a frame on lavapipe (the stop tests' long frame).
+    writeStackedGltf(dir / "stacked_450.gltf", 450, 20.0f, 1);
     // The book's format: one range of 2,000 quads named by 20 meshes, and by one.
     writeStackedBook(dir / "book", "stacked_x20", 2000, 20.0f, 20);
     writeStackedBook(dir / "book", "stacked_200", 200, 20.0f, 1);
