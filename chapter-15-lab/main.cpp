@@ -287,7 +287,8 @@ void run(const common::Options& options) {
 
     // What the first frame's view may cost to rasterise, refused beyond a budget
     // (common/frame_cost.hpp; chapter-16 adds its cascades).
-    const common::RasterView firstView = common::sceneRasterView(scene, target.extent.width, target.extent.height);
+    const common::RasterView firstView =
+        common::sceneRasterView(scene, target.extent.width, target.extent.height);
     common::checkFrameCost(scene, models, {&firstView, 1});
     common::GpuScene gpuScene = common::loadGpuScene(
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});

@@ -242,7 +242,8 @@ void setUp(Chapter& c, const common::Options& options) {
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
     // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
-    const common::RasterView firstView = common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
+    const common::RasterView firstView =
+        common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
     common::checkFrameCost(c.scene, models, {&firstView, 1});
     c.gpuScene = common::loadGpuScene(c.device, c.scene, models,
                                       {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});

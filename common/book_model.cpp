@@ -60,7 +60,8 @@ json parse(const std::filesystem::path& path) {
 // Windows' backslashes or not): the file of that name beside the model's JSON.
 std::filesystem::path besideJson(const std::filesystem::path& directory, std::string path, const Reader& r,
                                  const std::string& what) {
-    if (hasControlCharacter(path)) r.fail(what + " '" + oneLine(path) + "' has a control character (NUL, a line break, ...)");
+    if (hasControlCharacter(path))
+        r.fail(what + " '" + oneLine(path) + "' has a control character (NUL, a line break, ...)");
     for (char& c : path)
         if (c == '\\') c = '/';
     std::filesystem::path name = pathFromUtf8(path).filename();

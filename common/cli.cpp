@@ -66,7 +66,8 @@ constexpr const char* kSceneUsage =
 
 constexpr const char* kExitCodes =
     "\nan option given twice takes its last value\n"
-    "exit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages\n";
+    "exit codes: 0 success, 1 failure, 2 bad usage or input, 3 validation messages,\n"
+    "            130/143 Ctrl+C/SIGTERM cut a frame or a load short\n";
 
 uint32_t parseNumber(std::string_view flag, std::string_view text, uint32_t min, uint32_t max) {
     uint32_t value = 0;

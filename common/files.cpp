@@ -111,7 +111,8 @@ void removeStaleTemporaries(const std::filesystem::path& path) {
     if (ec) return;
     for (const auto& entry : entries) {
         std::string name = utf8(entry.path().filename());
-        if (!name.starts_with(prefix) || name.size() == prefix.size() || name.size() > prefix.size() + 10) continue;
+        if (!name.starts_with(prefix) || name.size() == prefix.size() || name.size() > prefix.size() + 10)
+            continue;
         std::string digits = name.substr(prefix.size());
         if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) continue;
         long pid = std::strtol(digits.c_str(), nullptr, 10);

@@ -123,6 +123,17 @@ RasterView sceneRasterView(const Scene& scene, uint32_t width, uint32_t height) 
 }
 
 FrameCost checkFrameCost(const Scene& scene, ModelCache& models, std::span<const RasterView> views) {
+    uint64_t triangles = 0;
+    for (size_t index = 0; index < scene.models.size(); ++index) {
+        const ModelData& model = loadModelCached(models, scene.models[index].file);
+        for (const MeshData& mesh : model.meshes) triangles += mesh.indices.size() / 3;
+        for (const MeshRepeat& repeat : model.repeats)
+            triangles += model.meshes.at(repeat.mesh).indices.size() / 3;
+        if (triangles > kMaxFrameTriangles)
+            throw InputError(utf8(scene.models[index].file) + ": the scene places it as model " +
+                             std::to_string(index) + ", past " + std::to_string(kMaxFrameTriangles) +
+                             " triangles drawn a frame in all (models times their triangles)");
+    }
     FrameCost cost = frameCost(scene, models, views);
     if (!cost.over) return cost;
     const RasterView& view = views[cost.overView];

@@ -22,7 +22,7 @@ namespace common {
 
 // One pass that rasterises the scene's triangles: the view, or a shadow cascade.
 struct RasterView {
-    std::string name;            // for the message: "view", "cascade 0"
+    std::string name;                // for the message: "view", "cascade 0"
     glm::mat4 viewProjection{1.0f};  // world -> clip (Vulkan's: depth 0..1)
     uint32_t width = 0, height = 0;  // its target, pixels or texels
     // A perspective view clips triangles at its near plane and drops those wholly beyond its far
@@ -41,12 +41,16 @@ struct RasterView {
 inline constexpr uint64_t kMaxViewFragmentsPerPixel = 64;
 inline constexpr uint64_t kMinViewFragments = uint64_t{1} << 24;
 inline constexpr uint64_t kMaxShadowFragments = uint64_t{1} << 31;
+// Triangles drawn a frame, every placed model times its triangles (repeats included): 2^25, the
+// most one model may have. Checked first, from the counts alone, so that the bound's own work
+// (each triangle in each view) is bounded too.
+inline constexpr uint64_t kMaxFrameTriangles = uint64_t{1} << 25;
 
 struct FrameCost {
     std::vector<uint64_t> fragments;  // per view, an upper bound (saturating)
-    bool over = false;     // some view's bound passed its budget: the count stopped there
-    size_t overView = 0;   // which
-    size_t lastModel = 0;  // the scene's model being counted when it stopped
+    bool over = false;                // some view's bound passed its budget: the count stopped there
+    size_t overView = 0;              // which
+    size_t lastModel = 0;             // the scene's model being counted when it stopped
 };
 
 // The bound for `scene` (its models from `models`, every placed mesh and repeat, as loadGpuScene

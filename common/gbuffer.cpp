@@ -49,7 +49,8 @@ void checkPositionRange(const GBufferFormats& formats, glm::vec3 boundsMin, glm:
                         const std::string& origin) {
     if (formats.position != VK_FORMAT_R16G16B16A16_SFLOAT) return;
     float reach = glm::max(glm::max(glm::abs(boundsMin.x), glm::abs(boundsMin.y)), glm::abs(boundsMin.z));
-    reach = glm::max(reach, glm::max(glm::max(glm::abs(boundsMax.x), glm::abs(boundsMax.y)), glm::abs(boundsMax.z)));
+    reach = glm::max(reach,
+                     glm::max(glm::max(glm::abs(boundsMax.x), glm::abs(boundsMax.y)), glm::abs(boundsMax.z)));
     if (!(reach <= kMaxHalfFloat)) {
         char text[64];
         std::snprintf(text, sizeof(text), "%g", double(reach));

@@ -201,8 +201,8 @@ private:
         const uint32_t maxDimension = device_.properties.limits.maxImageDimension2D;
         uint64_t meshBytes = 0, texelBytes = 0;
         for (const GpuMesh& mesh : scene.meshes)
-            meshBytes = saturatingAdd(meshBytes, saturatingAdd(mesh.ownsVertices ? mesh.vertices.size : 0,
-                                                               mesh.indices.size));
+            meshBytes = saturatingAdd(
+                meshBytes, saturatingAdd(mesh.ownsVertices ? mesh.vertices.size : 0, mesh.indices.size));
         for (const TextureRequest& request : requests_) {
             std::optional<ImageExtent> extent;
             for (const ImageSource* source : {&request.first, &request.second}) {
@@ -341,8 +341,9 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
     sampler(SamplerDesc{});  // [0]: the default
     TextureBuilder textures(device);
     std::vector<PendingMaterial> pending;
-    std::map<std::filesystem::path, uint32_t> firstMesh;       // per model: its meshes' index in gpu.meshes
-    std::map<std::filesystem::path, uint32_t> firstMirroredMesh;  // the same, turned round (mirrored transforms)
+    std::map<std::filesystem::path, uint32_t> firstMesh;  // per model: its meshes' index in gpu.meshes
+    std::map<std::filesystem::path, uint32_t>
+        firstMirroredMesh;                                     // the same, turned round (mirrored transforms)
     std::map<std::filesystem::path, uint32_t> plainMaterials;  // per model without overrides: its materials
     bool firstBounds = true;
     uint64_t meshBytes = 0;  // of the meshes uploaded so far
@@ -364,7 +365,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 // Unmirrored first (never drawn unless another instance is), then the mirror.
                 firstMesh[key] = uint32_t(gpu.meshes.size());
             }
-            const uint32_t base = uint32_t(gpu.meshes.size()) + (mirrored && !copy ? uint32_t(model.meshes.size()) : 0);
+            const uint32_t base =
+                uint32_t(gpu.meshes.size()) + (mirrored && !copy ? uint32_t(model.meshes.size()) : 0);
             uploaded[key] = base;
             const uint64_t newMeshes = (mirrored && !copy ? 2 : 1) * model.meshes.size();
             checkAllocationCount(device, 2 * (gpu.meshes.size() + newMeshes), instance.file);
@@ -373,7 +375,9 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
             for (const MeshData& mesh : model.meshes) {
                 uint64_t indexBytes = saturatingMul(mesh.indices.size(), sizeof(uint32_t));
                 if (!copy)
-                    meshBytes = saturatingAdd(meshBytes, saturatingAdd(saturatingMul(mesh.vertices.size(), sizeof(Vertex)), indexBytes));
+                    meshBytes = saturatingAdd(
+                        meshBytes,
+                        saturatingAdd(saturatingMul(mesh.vertices.size(), sizeof(Vertex)), indexBytes));
                 if (mirrored) meshBytes = saturatingAdd(meshBytes, indexBytes);
             }
             if (const MemoryBudget memory = memoryBudget(device); meshBytes > memory.scene)
@@ -386,12 +390,13 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 for (const MeshData& mesh : model.meshes) {
                     GpuMesh out;
                     out.vertices =
-                        uploadStaged(device, batch, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex),
-                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        uploadStaged(device, batch, mesh.vertices.data(),
+                                     mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                                      meshName(instance.file, gpu.meshes.size(), "vertices"));
-                    out.indices = uploadStaged(
-                        device, batch, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
-                        VK_BUFFER_USAGE_INDEX_BUFFER_BIT, meshName(instance.file, gpu.meshes.size(), "indices"));
+                    out.indices =
+                        uploadStaged(device, batch, mesh.indices.data(),
+                                     mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                     meshName(instance.file, gpu.meshes.size(), "indices"));
                     out.indexCount = uint32_t(mesh.indices.size());
                     out.boundsMin = out.boundsMax = mesh.vertices.front().position;
                     for (const Vertex& v : mesh.vertices) {
@@ -406,9 +411,10 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     out.ownsVertices = false;
                     std::vector<uint32_t> turned = model.meshes[i].indices;
                     for (size_t k = 0; k + 2 < turned.size(); k += 3) std::swap(turned[k + 1], turned[k + 2]);
-                    out.indices = uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
-                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                               meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
+                    out.indices =
+                        uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
+                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                     meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
                     gpu.meshes.push_back(out);
                 }
         }
@@ -477,7 +483,8 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                 ", past " + std::to_string(kMaxSceneDraws) +
                 " draws (or materials) in all, models times their meshes; at most that many are drawn");
         auto addDraw = [&](uint32_t mesh, uint32_t material) {
-            gpu.draws.push_back(Draw{.mesh = uploaded[key] + mesh, .material = materialBase + material,
+            gpu.draws.push_back(Draw{.mesh = uploaded[key] + mesh,
+                                     .material = materialBase + material,
                                      .instance = instanceIndex});
             setDrawModel(gpu, gpu.draws.back(), matrix);
             gpu.triangles += model.meshes[mesh].indices.size() / 3;

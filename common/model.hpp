@@ -109,7 +109,7 @@ struct MeshRepeat {
 
 struct ModelData {
     std::vector<MeshData> meshes;
-    std::vector<MeshRepeat> repeats;  // drawn after the meshes, in this order
+    std::vector<MeshRepeat> repeats;      // drawn after the meshes, in this order
     std::vector<MaterialData> materials;  // at least one: a default white material
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };

@@ -16,11 +16,14 @@ uint64_t gPrinted = 0, gNotShown = 0;
 // The length of the UTF-8 sequence that starts at `at` when it is a character that breaks a line
 // or is a control (C1, U+2028, U+2029); 0 otherwise.
 size_t breakingSequence(const std::string& text, size_t at) {
-    auto byte = [&](size_t i) -> unsigned { return i < text.size() ? static_cast<unsigned char>(text[i]) : 0u; };
+    auto byte = [&](size_t i) -> unsigned {
+        return i < text.size() ? static_cast<unsigned char>(text[i]) : 0u;
+    };
     unsigned c = byte(at);
     if (c < 0x20 || c == 0x7f) return 1;
-    if (c == 0xc2 && byte(at + 1) >= 0x80 && byte(at + 1) <= 0x9f) return 2;                       // C1
-    if (c == 0xe2 && byte(at + 1) == 0x80 && (byte(at + 2) == 0xa8 || byte(at + 2) == 0xa9)) return 3;  // LS, PS
+    if (c == 0xc2 && byte(at + 1) >= 0x80 && byte(at + 1) <= 0x9f) return 2;  // C1
+    if (c == 0xe2 && byte(at + 1) == 0x80 && (byte(at + 2) == 0xa8 || byte(at + 2) == 0xa9))
+        return 3;  // LS, PS
     return 0;
 }
 
@@ -66,7 +69,8 @@ void warn(const std::string& message) {
         std::fprintf(stderr, "warning: %s\n", line.c_str());
         ++gPrinted;
         if (gPrinted == kMaxWarnings)
-            std::fprintf(stderr, "warning: %u warnings shown; further warnings are not shown\n", kMaxWarnings);
+            std::fprintf(stderr, "warning: %u warnings shown; further warnings are not shown\n",
+                         kMaxWarnings);
         return;
     }
     ++gNotShown;  // repeats counted too: keeping every distinct line would grow with the input

@@ -69,7 +69,8 @@ public:
             fail(where, "expected a non-empty string");
         const std::string& text = value.get_ref<const std::string&>();
         // File names and types: a line break in one would break the one-line messages that name it.
-        if (hasControlCharacter(text)) fail(where, "must not contain control characters (NUL, a line break, ...)");
+        if (hasControlCharacter(text))
+            fail(where, "must not contain control characters (NUL, a line break, ...)");
         return text;
     }
 
@@ -193,8 +194,7 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         const json& c = root["camera"];
         r.onlyKeys(c, "camera", {"position", "yaw", "pitch", "fov", "near", "far"});
         CameraDesc& cam = scene.camera;
-        if (c.contains("position"))
-            cam.position = r.vector<3>(c["position"], "camera.position", -kFar, kFar);
+        if (c.contains("position")) cam.position = r.vector<3>(c["position"], "camera.position", -kFar, kFar);
         if (c.contains("yaw")) cam.yaw = r.number(c["yaw"], "camera.yaw", -360.0f, 360.0f);
         if (c.contains("pitch")) cam.pitch = r.number(c["pitch"], "camera.pitch", -89.0f, 89.0f);
         if (c.contains("fov")) cam.fov = r.number(c["fov"], "camera.fov", 1.0f, 179.0f);
@@ -207,8 +207,9 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
         if (double(cam.far) > kMaxFarOverNear * double(cam.near) * (1.0 + 1e-6)) {  // 1e5 as floats round it
             char ratio[64];
             std::snprintf(ratio, sizeof(ratio), "%g", double(cam.far) / double(cam.near));
-            r.fail("camera.far", std::string("far / near is ") + ratio +
-                                     ", more than 1e5: the depth buffer cannot tell distances that far apart");
+            r.fail("camera.far",
+                   std::string("far / near is ") + ratio +
+                       ", more than 1e5: the depth buffer cannot tell distances that far apart");
         }
     }
 
@@ -240,7 +241,8 @@ Scene parseScene(const std::string& text, const std::string& origin, const std::
                 // passes 1e15 is scaled, in double, to a largest component of 1 (the same
                 // direction; smaller ones are kept as written, so a scene file reads back the same).
                 glm::dvec3 direction(r.vector<3>(l["direction"], where + ".direction", -kHuge, kHuge));
-                double largest = glm::max(glm::max(std::abs(direction.x), std::abs(direction.y)), std::abs(direction.z));
+                double largest =
+                    glm::max(glm::max(std::abs(direction.x), std::abs(direction.y)), std::abs(direction.z));
                 if (largest > 1e15) direction /= largest;
                 if (!(glm::length(direction) >= 1e-6))
                     r.fail(where + ".direction", "must not be zero (its length is below 1e-6)");

@@ -9,6 +9,10 @@
 #include <string>
 #include <thread>
 
+#if !defined(_WIN32)
+#include <unistd.h>
+#endif
+
 #include "common/files.hpp"
 
 namespace common {
@@ -30,9 +34,14 @@ void watchdog(std::string name) {
     std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();
-    std::fprintf(stderr, "%s: %s in the middle of a frame or a load; stopped\n", name.c_str(),
-                 signal > 0 ? "interrupted" : "closed");
-    std::fflush(stderr);
+    // write(), not stdio: the main thread may hold stderr's lock, stuck on a full pipe.
+    std::string line =
+        name + (signal > 0 ? ": interrupted" : ": closed") + " in the middle of a frame or a load; stopped\n";
+#if defined(_WIN32)
+    std::fputs(line.c_str(), stderr);
+#else
+    [[maybe_unused]] ssize_t written = ::write(2, line.data(), line.size());
+#endif
     std::fflush(stdout);  // what the run printed so far (stdio locks each stream: safe from here)
     std::_Exit(signal > 0 ? 128 + signal : 0);  // a closed window: the run's normal end
 }

@@ -720,6 +720,9 @@ void writeHostile(const fs::path& dir) {
     make("strip_flat.gltf", [&](gltf::File& f) { sparsePositions(f, 33554432, gltf::kTriangleStrip); });
     // One triangle more than the vertex budget: 5,592,406 flat triangles bake 16,777,218 vertices.
     make("budget_plus_one.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 2796203, gltf::kTriangles); });
+    // One triangle less: the largest flat-shaded model the budget admits (its peak memory is
+    // tests/extremes.cmake's).
+    make("budget_inside.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 2796202, gltf::kTriangles); });
     // Accessor counts at the limit and one past it (an accessor no mesh uses is checked too).
     for (uint64_t count : {33554432ull, 33554433ull})
         make("count_" + std::to_string(count) + ".gltf", [&](gltf::File& f) {
@@ -1163,10 +1166,13 @@ void writeMirrors(const fs::path& dir) {
         mirrored.writeGltf(dir / "lblock_mirrored_node.gltf");
     }
     auto sceneFile = [&](const char* name, json models) {
-        json root = {{"models", models},
-                     {"camera", {{"position", {0, 5, 7}}, {"yaw", 0}, {"pitch", -35}, {"fov", 60}, {"near", 0.1}, {"far", 40}}},
-                     {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.15}}},
-                     {"lights", json::array({{{"type", "directional"}, {"direction", {0, -1, -0.6}}, {"intensity", 2.0}}})}};
+        json root = {
+            {"models", models},
+            {"camera",
+             {{"position", {0, 5, 7}}, {"yaw", 0}, {"pitch", -35}, {"fov", 60}, {"near", 0.1}, {"far", 40}}},
+            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.15}}},
+            {"lights",
+             json::array({{{"type", "directional"}, {"direction", {0, -1, -0.6}}, {"intensity", 2.0}}})}};
         writeText(dir / name, root.dump(2));
     };
     sceneFile("mirror_plain.json", json::array({{{"file", "lblock.gltf"}}}));
@@ -1182,11 +1188,11 @@ void writeMirrors(const fs::path& dir) {
     BookMesh box{.material = "grey"};
     const float h = 0.6f;
     vec3 c(1.5f, 0, -1);
-    bookQuad(box, c + vec3(-h, 0, h), {2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});    // +z face
-    bookQuad(box, c + vec3(h, 0, -h), {-2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});   // -z
-    bookQuad(box, c + vec3(h, 0, h), {0, 0, -2 * h}, {0, 1.5f, 0}, {1, 1});    // +x
-    bookQuad(box, c + vec3(-h, 0, -h), {0, 0, 2 * h}, {0, 1.5f, 0}, {1, 1});   // -x
-    bookQuad(box, c + vec3(-h, 0.4f, h), {h, 0, 0}, {0, 0, -2 * h}, {1, 1});   // a ledge inside, facing up
+    bookQuad(box, c + vec3(-h, 0, h), {2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});   // +z face
+    bookQuad(box, c + vec3(h, 0, -h), {-2 * h, 0, 0}, {0, 1.5f, 0}, {1, 1});  // -z
+    bookQuad(box, c + vec3(h, 0, h), {0, 0, -2 * h}, {0, 1.5f, 0}, {1, 1});   // +x
+    bookQuad(box, c + vec3(-h, 0, -h), {0, 0, 2 * h}, {0, 1.5f, 0}, {1, 1});  // -x
+    bookQuad(box, c + vec3(-h, 0.4f, h), {h, 0, 0}, {0, 0, -2 * h}, {1, 1});  // a ledge inside, facing up
     json boxMeshes = json::array({{{"material_id", "grey"},
                                    {"offset_vtx", 0},
                                    {"vtx_size", box.vertices.size() * 4},
@@ -1221,19 +1227,25 @@ void writeExtremes(const fs::path& dir) {
     {
         std::vector<float> vertices;
         for (int v = 0; v < 6143; ++v)
-            for (float f : {float(v % 64) * 0.01f, 0.0f, float(v / 64) * 0.01f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f, 0.0f,
-                            0.0f, 0.0f, 1.0f, 0.0f, 0.0f})
+            for (float f : {float(v % 64) * 0.01f, 0.0f, float(v / 64) * 0.01f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f,
+                            0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f})
                 vertices.push_back(f);
         std::vector<uint32_t> indices{0, 64, 1};
         json shared = json::array(), sliding = json::array();
         for (int i = 0; i < 2048; ++i) {
-            json mesh = {{"material_id", "grey"}, {"offset_vtx", 0}, {"vtx_size", 4096 * 56}, {"offset_idx", 0}, {"idx_size", 12}};
+            json mesh = {{"material_id", "grey"},
+                         {"offset_vtx", 0},
+                         {"vtx_size", 4096 * 56},
+                         {"offset_idx", 0},
+                         {"idx_size", 12}};
             shared.push_back(mesh);
             mesh["offset_vtx"] = i * 56;
             sliding.push_back(mesh);
         }
-        writeBookModel(dir / "memory", "shared_range", vertices, indices, shared, json::array({bookMaterial("grey")}));
-        writeBookModel(dir / "memory", "sliding_ranges", vertices, indices, sliding, json::array({bookMaterial("grey")}));
+        writeBookModel(dir / "memory", "shared_range", vertices, indices, shared,
+                       json::array({bookMaterial("grey")}));
+        writeBookModel(dir / "memory", "sliding_ranges", vertices, indices, sliding,
+                       json::array({bookMaterial("grey")}));
     }
     // Warnings: 5,000 materials no mesh uses, naming 15,000 textures that do not exist.
     {
@@ -1263,7 +1275,8 @@ void writeExtremes(const fs::path& dir) {
                                     {"vtx_size", quad.vertices.size() * 4},
                                     {"offset_idx", 0},
                                     {"idx_size", quad.indices.size() * 4}}});
-        writeBookModel(dir / "paths", "nul", quad.vertices, quad.indices, meshes, json::array({bookMaterial("grey")}));
+        writeBookModel(dir / "paths", "nul", quad.vertices, quad.indices, meshes,
+                       json::array({bookMaterial("grey")}));
         json model = json::parse(std::ifstream(dir / "paths" / "nul.json"));
         model["vtx_path"] = std::string("nul.vtx\0.other", 14);
         writeText(dir / "paths" / "nul.json", model.dump());
@@ -1276,14 +1289,20 @@ void writeExtremes(const fs::path& dir) {
     // overflow once placed, a far plane 1e6 times the near one, the 16-bit G-buffer's limit.
     {
         auto sceneWith = [&](const char* name, json sunDirection, json model, json camera = json::object()) {
-            json cam = {{"position", {0, 10, 0}}, {"yaw", -90}, {"pitch", -89}, {"fov", 60}, {"near", 0.5}, {"far", 50}};
+            json cam = {{"position", {0, 10, 0}},
+                        {"yaw", -90},
+                        {"pitch", -89},
+                        {"fov", 60},
+                        {"near", 0.5},
+                        {"far", 50}};
             cam.update(camera);
-            writeText(dir / "numbers" / name,
-                      json({{"models", json::array({model})},
-                            {"camera", cam},
-                            {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
-                            {"lights", json::array({{{"type", "directional"}, {"direction", sunDirection}, {"intensity", 2.0}}})}})
-                          .dump(2));
+            writeText(dir / "numbers" / name, json({{"models", json::array({model})},
+                                                    {"camera", cam},
+                                                    {"ambient", {{"color", {1, 1, 1}}, {"intensity", 0.0}}},
+                                                    {"lights", json::array({{{"type", "directional"},
+                                                                             {"direction", sunDirection},
+                                                                             {"intensity", 2.0}}})}})
+                                                  .dump(2));
         };
         fs::create_directories(dir / "numbers");
         fs::copy_file(dir / ".." / "shadows" / "box_on_plane.gltf", dir / "numbers" / "box_on_plane.gltf",
@@ -1297,7 +1316,10 @@ void writeExtremes(const fs::path& dir) {
         sceneWith("sun_diagonal_1e20.json", {1e20, -1e20, 1e20}, box);
         sceneWith("sun_tiny.json", {0, -1e-7, 0}, box);
         sceneWith("bounds_overflow.json", {0, -1, 0},
-                  {{"file", "box_on_plane.gltf"}, {"position", {9e14, 0, 0}}, {"scale", 1e30}, {"rotation", {0, 45, 0}}});
+                  {{"file", "box_on_plane.gltf"},
+                   {"position", {9e14, 0, 0}},
+                   {"scale", 1e30},
+                   {"rotation", {0, 45, 0}}});
         sceneWith("far_1e30.json", {0, -1, 0}, box, {{"far", 1e30}});
         sceneWith("far_over_near_1e6.json", {0, -1, 0}, box, {{"near", 0.01}, {"far", 10000}});
         // The box scene moved 60,000 and 70,000 along x: within and past what 16-bit floats hold.

@@ -180,9 +180,11 @@ int main(int argc, char** argv) {
             for (int y = 0; y < reference.height; ++y)
                 for (int x = 0; x < reference.width / 2; ++x)
                     for (int c = 0; c < 3; ++c)
-                        std::swap(reference.rgb[(size_t(y) * reference.width + size_t(x)) * 3 + size_t(c)],
-                                  reference.rgb[(size_t(y) * reference.width + size_t(reference.width - 1 - x)) * 3 +
-                                                size_t(c)]);
+                        std::swap(
+                            reference.rgb[(size_t(y) * reference.width + size_t(x)) * 3 + size_t(c)],
+                            reference
+                                .rgb[(size_t(y) * reference.width + size_t(reference.width - 1 - x)) * 3 +
+                                     size_t(c)]);
         size_t count = size_t(image.width) * image.height, over = 0;
         int worst = 0;
         double sumSquares = 0;
