@@ -246,6 +246,25 @@ void destroyLightPasses(const common::Device& device, LightPasses& passes) {
     destroyLightPass(device, passes.pass);
 }
 
+// chapter-16's cascades for a frame's camera and sun, as the shadow study draws them (none
+// without a sun).
+std::vector<Cascade> studyCascades(const ShadowStudyOptions& study, const common::Scene& scene,
+                                   const common::GpuScene& gpuScene, const common::Device& device,
+                                   VkExtent2D extent, const glm::mat4& view, int sun) {
+    if (sun < 0) return {};
+    CascadeCamera cascadeCamera{
+        .view = view,
+        .fovY = glm::radians(scene.camera.fov),
+        .aspect = float(extent.width) / float(extent.height),
+        .near = scene.camera.near,
+        .far = fittedFar(view, gpuScene.boundsMin, gpuScene.boundsMax, scene.camera.near, scene.camera.far)};
+    CascadeSettings settings = study.cascades;
+    settings.reachCasters = !device.depthClamp;
+    settings.castersMin = gpuScene.boundsMin;
+    settings.castersMax = gpuScene.boundsMax;
+    return computeCascades(cascadeCamera, scene.lights[size_t(sun)].direction, settings);
+}
+
 void run(const common::Options& options) {
     //> setup
     common::ModelCache models;
@@ -286,12 +305,20 @@ void run(const common::Options& options) {
     }
 
     // What the first frame's view may cost to rasterise, refused beyond a budget
-    // (common/frame_cost.hpp; chapter-16 adds its cascades).
+    // (common/frame_cost.hpp).
     const common::RasterView firstView =
         common::sceneRasterView(scene, target.extent.width, target.extent.height);
     common::checkFrameCost(scene, models, {&firstView, 1});
     common::GpuScene gpuScene = common::loadGpuScene(
         device, scene, models, {.normalMaps = true, .metalRoughMaps = true, .occlusionMaps = true});
+    if (study.enabled)  // and the study's cascades, which need the scene's bounds
+        common::checkFrameCost(
+            scene, models,
+            cascadeRasterViews(studyCascades(study, scene, gpuScene, device, target.extent,
+                                             common::viewMatrix({scene.camera.position, scene.camera.yaw,
+                                                                 scene.camera.pitch}),
+                                             findControlledLights(scene).sun),
+                               study.cascades.mapSize));
     models.clear();
     // The book's layout (which the overlay may switch to) keeps world positions in 16-bit floats.
     common::checkPositionRange(kBookGBuffer.formats, gpuScene.boundsMin, gpuScene.boundsMax,
@@ -505,25 +532,10 @@ void run(const common::Options& options) {
         if (tiled)
             updateLightCulling(culling, slot, glm::mat4(glm::mat3(view)), projection.matrix, projection.near,
                                unbounded);
-        if (study.enabled) {  // chapter-16's cascades for this frame's camera and sun (none without a sun)
-            std::vector<Cascade> cascades;
-            if (lightControls.sun >= 0) {
-                CascadeCamera cascadeCamera{
-                    .view = view,
-                    .fovY = glm::radians(scene.camera.fov),
-                    .aspect = float(target.extent.width) / float(target.extent.height),
-                    .near = scene.camera.near,
-                    .far = fittedFar(view, gpuScene.boundsMin, gpuScene.boundsMax, scene.camera.near,
-                                     scene.camera.far)};
-                CascadeSettings settings = study.cascades;
-                settings.reachCasters = !device.depthClamp;
-                settings.castersMin = gpuScene.boundsMin;
-                settings.castersMax = gpuScene.boundsMax;
-                cascades = computeCascades(cascadeCamera, scene.lights[size_t(lightControls.sun)].direction,
-                                           settings);
-            }
-            updateShadowStudy(shadowStudy, slot, cascades, view);
-        }
+        if (study.enabled)  // chapter-16's cascades for this frame's camera and sun (none without a sun)
+            updateShadowStudy(
+                shadowStudy, slot,
+                studyCascades(study, scene, gpuScene, device, target.extent, view, lightControls.sun), view);
 
         VK_CHECK(vkResetCommandPool(device.handle, sync.commandPool, 0));
         VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,

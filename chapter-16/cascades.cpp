@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -118,3 +119,15 @@ float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax,
     return float(std::min(double(far), double(near) * std::exp2(steps / 8.0)));
 }
 //< fitted-far
+
+std::vector<common::RasterView> cascadeRasterViews(const std::vector<Cascade>& cascades, uint32_t mapSize) {
+    std::vector<common::RasterView> views;
+    for (size_t i = 0; i < cascades.size(); ++i)
+        views.push_back({.name = "shadow cascade " + std::to_string(i),
+                         .viewProjection = cascades[i].viewProjection,
+                         .width = mapSize,
+                         .height = mapSize,
+                         .clipDepth = false,
+                         .budget = common::kMaxShadowFragments / cascades.size()});
+    return views;
+}

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "common/frame_cost.hpp"
+
 // The camera whose view the cascades cover.
 struct CascadeCamera {
     glm::mat4 view{1.0f};  // world -> view (right-handed, looking down -z)
@@ -68,3 +70,7 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
 // in steps, not with every move of the camera), and at most `far`. A scene that ends before the
 // projection's far plane needs no cascades beyond it. `far` itself unless 0 < near < far.
 float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax, float near, float far);
+
+// The cascades as passes that rasterise the scene, for common::checkFrameCost: each a mapSize
+// square, depth-clamped (nothing clipped in depth), sharing common::kMaxShadowFragments.
+std::vector<common::RasterView> cascadeRasterViews(const std::vector<Cascade>& cascades, uint32_t mapSize);

@@ -417,14 +417,9 @@ void setUp(Chapter& c, const common::Options& options) {
     // drawn into each layer -- refused beyond a budget (common/frame_cost.hpp).
     std::vector<common::RasterView> views{
         common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height)};
-    std::vector<Cascade> first = frameCascades(c, common::viewMatrix(c.camera));
-    for (size_t i = 0; i < first.size(); ++i)
-        views.push_back({.name = "shadow cascade " + std::to_string(i),
-                         .viewProjection = first[i].viewProjection,
-                         .width = c.cascadeSettings.mapSize,
-                         .height = c.cascadeSettings.mapSize,
-                         .clipDepth = false,  // depth-clamped: nothing is clipped in depth
-                         .budget = common::kMaxShadowFragments / first.size()});
+    for (const common::RasterView& cascade :
+         cascadeRasterViews(frameCascades(c, common::viewMatrix(c.camera)), c.cascadeSettings.mapSize))
+        views.push_back(cascade);
     c.firstFrameCost = common::checkFrameCost(c.scene, models, views).fragments;
 }
 //< setup

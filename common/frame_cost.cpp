@@ -15,10 +15,9 @@ namespace common {
 namespace {
 
 // Pixels a triangle (clip-space corners) may cover on a width x height target: its area plus its
-// perimeter plus one, in pixels, after clipping at the near plane, and at most its bounding box
-// within the target. A pixel counts when its centre is inside; the unit squares around those
-// centres lie in the triangle grown by half a pixel, whose area is at most area + 0.71 x
-// perimeter + 1.
+// perimeter plus one, in pixels, after clipping at the near plane, and at most the pixel centres
+// of its bounding box within the target. A pixel counts when its centre is inside; the unit squares around
+// those centres lie in the triangle grown by half a pixel, whose area is at most area + 0.71 x perimeter + 1.
 double trianglePixels(const glm::dvec4 (&corner)[3], double width, double height, bool clipDepth) {
     glm::dvec4 polygon[4];
     int count = 0;
@@ -50,11 +49,17 @@ double trianglePixels(const glm::dvec4 (&corner)[3], double width, double height
         low = glm::min(low, p[i]);
         high = glm::max(high, p[i]);
     }
-    double boxWidth = std::min(high.x, width) - std::max(low.x, 0.0);
-    double boxHeight = std::min(high.y, height) - std::max(low.y, 0.0);
-    if (!(boxWidth >= 0.0 && boxHeight >= 0.0)) return 0.0;  // off the target (or not a number)
-    // Pixel centres in the box: a closed interval of length w holds at most floor(w) + 1 of them.
-    double box = (std::floor(boxWidth) + 1.0) * (std::floor(boxHeight) + 1.0);
+    // The pixel centres (k + 0.5) of the target in the bounding box, the box grown by 1/16 of a
+    // pixel (the coarsest sub-pixel precision Vulkan allows: where a vertex may snap to). None: the
+    // triangle covers no pixel (off the target, between two centres, or not a number).
+    auto centres = [](double lo, double hi, double size) {
+        constexpr double kSnap = 1.0 / 16.0;
+        double first = std::max(0.0, std::ceil(lo - 0.5 - kSnap));
+        double last = std::min(size - 1.0, std::floor(hi - 0.5 + kSnap));
+        return last >= first ? last - first + 1.0 : 0.0;
+    };
+    double box = centres(low.x, high.x, width) * centres(low.y, high.y, height);
+    if (!(box > 0.0)) return 0.0;
     double area = 0.0, perimeter = 0.0;
     for (int i = 0; i < count; ++i) {
         const glm::dvec2 &a = p[i], &b = p[(i + 1) % count];

@@ -10,8 +10,8 @@ namespace common {
 namespace {
 
 std::mutex gMutex;
-std::set<std::string> gSaid;  // distinct warnings printed or counted, at most kMaxWarnings + what was counted
-uint64_t gPrinted = 0, gNotShown = 0;
+std::set<std::string> gSaid;  // the warnings printed: at most kMaxWarnings
+uint64_t gPrinted = 0;
 
 // The length of the UTF-8 sequence that starts at `at` when it is a character that breaks a line
 // or is a control (C1, U+2028, U+2029); 0 otherwise.
@@ -73,12 +73,7 @@ void warn(const std::string& message) {
                          kMaxWarnings);
         return;
     }
-    ++gNotShown;  // repeats counted too: keeping every distinct line would grow with the input
-}
-
-uint64_t warningsNotShown() {
-    std::lock_guard lock(gMutex);
-    return gNotShown;
+    // Past the cap nothing is kept: a set of every distinct line would grow with the input.
 }
 
 }  // namespace common

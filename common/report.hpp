@@ -26,7 +26,4 @@ bool hasControlCharacter(const std::string& text);
 // only counted. Safe to call from several threads.
 void warn(const std::string& message);
 
-// Warnings not printed because of the cap, repeats among them.
-uint64_t warningsNotShown();
-
 }  // namespace common

@@ -42,6 +42,9 @@ foreach(chapter 10 14 15 15-lab)
         --model ${EXT}/stacked_2000_x20.gltf)
     extreme_drawn(stacked-200-${chapter} ${chapter} "1 draws, 400 triangles" --model ${EXT}/stacked_200.gltf)
 endforeach()
+# The lab's shadow study counts its cascades as chapter-16 does.
+extreme_refused(stacked-200-lab-shadows 15-lab "${EXT}/stacked_200.gltf: ${CASCADE_OVER} 536870912 fragments there"
+    --model ${EXT}/stacked_200.gltf --shadows vsm --cascades 4 --shadow-map-size 4096)
 # At 1280x720 the view's budget is 64 a pixel: 2,000 layers refused even as one mesh.
 extreme_refused(stacked-2000-15-720p 15 "${EXT}/stacked_2000.gltf: ${VIEW_OVER} 58982400 fragments there, the budget of a 1280x720 target"
     --model ${EXT}/stacked_2000.gltf --width 1280 --height 720)
@@ -62,7 +65,13 @@ set_tests_properties(extremes.stop-mid-frame extremes.stop-mid-load extremes.sta
     PROPERTIES FIXTURES_REQUIRED gltf-cases ENVIRONMENT "${TEST_ENV}" TIMEOUT 120 RUN_SERIAL TRUE)
 
 # --- Memory: a range named by many meshes decoded once; the largest admitted model under 2 GB --
-extreme_drawn(memory-shared-range 16 "chapter-16: 2048 draws, 2048 triangles" --model ${EXT}/memory/shared_range.json --frames 1)
+# 2,048 names of one 229 KB range: decoded and uploaded once, under 600 MB (measured 0.30 GB;
+# decoded once per name, as before, it would cost what 2,048 distinct ranges do: 1.49 GB).
+add_test(NAME extremes.memory-shared-range
+    COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/peak_memory.py 600 $<TARGET_FILE:chapter-16> ${EXT_RUN}
+            --model ${EXT}/memory/shared_range.json --frames 1)
+set_tests_properties(extremes.memory-shared-range PROPERTIES FIXTURES_REQUIRED gltf-cases
+    ENVIRONMENT "${TEST_ENV}" TIMEOUT 120)
 add_test(NAME extremes.memory-largest-book-model
     COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/peak_memory.py 2000 $<TARGET_FILE:chapter-16> ${EXT_RUN}
             --model ${EXT}/memory/sliding_ranges.json --frames 1)
