@@ -626,7 +626,7 @@ void run(const common::Options& options) {
         VK_CHECK(common::vk13.QueueSubmit2(device.queue, 1, &submit, sync.inFlight));
 
         if (lastFrame) common::screenshotLastFrame(run, device, target, imageIndex);
-        bool current = common::presentTargetImage(target, device, imageIndex);
+        bool current = common::presentTargetImage(target, device, imageIndex, sync.inFlight);
         common::endFrame(run, frame);
         if (lastFrame) break;
         if (!current && !recreateTarget()) break;

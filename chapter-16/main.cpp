@@ -554,7 +554,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         VK_CHECK(common::vk13.QueueSubmit2(c.device.queue, 1, &submit, sync.inFlight));
 
         if (lastFrame) common::screenshotLastFrame(c.run, c.device, c.target, imageIndex);
-        bool current = common::presentTargetImage(c.target, c.device, imageIndex);
+        bool current = common::presentTargetImage(c.target, c.device, imageIndex, sync.inFlight);
         common::endFrame(c.run, frame);
         if (lastFrame) break;
         if (!current && !recreateTarget(c)) break;

@@ -17,10 +17,14 @@ glm::vec3 cameraForward(const Camera& camera) {
 }
 
 glm::mat4 viewMatrix(const Camera& camera) {
-    // The rotation from the forward direction alone, then the translation: lookAt(position,
-    // position + forward) loses the direction once position is large (at 1e15 a float is 2^27
-    // apart, and position + forward is position again).
-    glm::mat4 rotation = glm::lookAt(glm::vec3(0.0f), cameraForward(camera), glm::vec3(0.0f, 1.0f, 0.0f));
+    glm::vec3 forward = cameraForward(camera);
+    // The book's lookAt(position, position + forward) -- unless position is so far from the
+    // origin that position + forward loses the direction (floats are 1 apart at 1.7e7, 2^27 at
+    // 1e15): then the rotation comes from the forward direction itself, and the translation after.
+    glm::vec3 kept = (camera.position + forward) - camera.position;
+    if (glm::length(kept - forward) < 1e-3f)
+        return glm::lookAt(camera.position, camera.position + forward, glm::vec3(0.0f, 1.0f, 0.0f));
+    glm::mat4 rotation = glm::lookAt(glm::vec3(0.0f), forward, glm::vec3(0.0f, 1.0f, 0.0f));
     return glm::translate(rotation, -camera.position);
 }
 

@@ -2,6 +2,7 @@
 #include "common/target.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #if defined(_WIN32)
@@ -12,6 +13,7 @@
 #include "common/commands.hpp"
 #include "common/debug_names.hpp"
 #include "common/formats.hpp"
+#include "common/stop.hpp"
 
 namespace common {
 namespace {
@@ -422,8 +424,31 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
     return true;
 }
 
-bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex) {
+namespace {
+
+// Waits for `fence` in slices of 50 ms, reading the window's events between them: a close (the
+// window's button, Escape) asks the run to stop, which then ends within common::kStopGraceMs
+// even if the frame does not.
+void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
+    constexpr uint64_t kSlice = 50'000'000;  // ns
+    for (;;) {
+        VkResult result = vkWaitForFences(device.handle, 1, &fence, VK_TRUE, kSlice);
+        if (result == VK_SUCCESS) return;
+        if (result != VK_TIMEOUT) VK_CHECK_RESULT(result, "vkWaitForFences");
+        glfwPollEvents();
+        if (glfwWindowShouldClose(target.window)) requestStop();
+    }
+}
+
+}  // namespace
+
+bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex, VkFence frameDone) {
     if (target.window) {
+        // A present that waited more than 100 ms: frames are long, and the next one is waited for
+        // here, where the window's events can be read (a present that waits reads none).
+        const auto presentStart = std::chrono::steady_clock::now();
+        if (frameDone != VK_NULL_HANDLE && target.lastPresentMs > 100.0)
+            waitReadingEvents(target, device, frameDone);
         // VK_EXT_swapchain_maintenance1: a fence that says when this presentation is done.
         VkSwapchainPresentFenceInfoEXT fenceInfo{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT,
                                                  .swapchainCount = 1};
@@ -449,6 +474,9 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
             .pImageIndices = &imageIndex,
         };
         VkResult result = vkQueuePresentKHR(device.queue, &info);
+        target.lastPresentMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - presentStart)
+                .count();
         target.presentedSinceRetiring[imageIndex] = true;
         if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
         VK_CHECK_RESULT(result, "vkQueuePresentKHR");

@@ -26,6 +26,8 @@ namespace common {
 
 struct Target {
     GLFWwindow* window = nullptr;  // nullptr: headless
+    double lastPresentMs =
+        0.0;  // how long the last presentTargetImage waited (for its frame, then to present)
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain = VK_NULL_HANDLE;
     std::vector<Image> offscreen;  // headless: the images a swapchain would own
@@ -106,8 +108,12 @@ void requestTargetSize(Target& target, VkExtent2D size);
 bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageAvailable,
                         uint32_t* imageIndex);
 // Presents image `imageIndex` once its renderFinished semaphore is signalled. Returns false when
-// the target must be recreated (resized, out of date or suboptimal).
-bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex);
+// the target must be recreated (resized, out of date or suboptimal). `frameDone`, the fence of
+// the frame that drew the image: when the last present waited long for its frame (lavapipe
+// presents only a finished image), the frame is waited for first, reading the window's events
+// meanwhile, so that a window closed during a long frame stops the run (common/stop.hpp).
+bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex,
+                        VkFence frameDone = VK_NULL_HANDLE);
 // Waits for the device, then rebuilds images at the new size. A minimised window (zero-size
 // framebuffer) is waited out. Returns false if the window was closed while waiting.
 bool recreateTargetImages(Target& target, const Device& device);

@@ -64,6 +64,17 @@ add_test(NAME extremes.stale-temporary-removed
 set_tests_properties(extremes.stop-mid-frame extremes.stop-mid-load extremes.stale-temporary-removed
     PROPERTIES FIXTURES_REQUIRED gltf-cases ENVIRONMENT "${TEST_ENV}" TIMEOUT 120 RUN_SERIAL TRUE)
 
+# A window closed (Escape) in the middle of a long frame: the frame is waited for reading the
+# window's events, and the run ends within a second, exit 0 (tests/window_close_mid_frame.sh).
+if(XVFB_RUN)
+    add_test(NAME extremes.window-close-mid-frame
+        COMMAND ${XVFB_RUN} -a ${CMAKE_CURRENT_SOURCE_DIR}/window_close_mid_frame.sh $<TARGET_FILE:chapter-16>
+                --device llvmpipe --validation --width 320 --height 180 --model ${EXT}/stacked_450.gltf
+                --shadow-redraw always --frames 1000)
+    set_tests_properties(extremes.window-close-mid-frame PROPERTIES FIXTURES_REQUIRED gltf-cases
+        ENVIRONMENT "${TEST_ENV}" TIMEOUT 120 RUN_SERIAL TRUE)
+endif()
+
 # --- Memory: a range named by many meshes decoded once; the largest admitted model under 2 GB --
 # 2,048 names of one 229 KB range: decoded and uploaded once, under 600 MB (measured 0.30 GB;
 # decoded once per name, as before, it would cost what 2,048 distinct ranges do: 1.49 GB).

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# window_close_mid_frame.sh CHAPTER ARGS...: a chapter in a window (with a window manager, jwm),
+# drawing frames of more than a second, is closed with Escape in the middle of one: it must end
+# within a second of the key, exit 0 (a closed window is the run's normal end), and say it was
+# closed in the middle of a frame (common/stop.hpp).
+set -u
+chapter=$1
+shift
+name=$(basename "$chapter")
+work=$(mktemp -d)
+jwm > /dev/null 2>&1 &
+wm=$!
+trap 'kill "$wm" 2> /dev/null; rm -rf "$work"' EXIT
+fail() { echo "window_close_mid_frame: $*" >&2; cat "$work/stderr" >&2; kill -9 "$pid" 2> /dev/null; exit 1; }
+"$chapter" "$@" > "$work/stdout" 2> "$work/stderr" &
+pid=$!
+window=$(timeout 60 xdotool search --sync --name "^$name") || fail "no window appeared"
+window=${window%%$'\n'*}
+sleep 5  # a few long frames: the presents have been seen to wait for them
+kill -0 "$pid" 2> /dev/null || fail "the chapter ended early"
+start=$(date +%s%N)
+xdotool key --window "$window" Escape 2> /dev/null
+wait "$pid"
+status=$?
+elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+echo "window_close_mid_frame: exit $status ${elapsed_ms} ms after Escape"
+cat "$work/stderr"
+[ "$status" = 0 ] || fail "exit $status, expected 0"
+[ "$elapsed_ms" -lt 1000 ] || fail "it took $elapsed_ms ms to end, more than a second"
+grep -q "closed in the middle of a frame or a load; stopped" "$work/stderr" || fail "no line saying so"
