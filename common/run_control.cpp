@@ -31,9 +31,6 @@ bool beginFrame(RunControl& run, Target& target, uint32_t frame) {
         run.scriptedResize.reset();
     }
     bool closing = pollTarget(target) || stopRequested();
-    // A window closed between long frames: the last frame and the teardown may take as long, so
-    // the run is held to common::kStopGraceMs as after Ctrl+C (fast frames end well within it).
-    if (closing && target.lastPresentMs > 100.0) requestStop();
     return closing || (run.frameLimit != 0 && frame + 1 >= run.frameLimit);
 }
 

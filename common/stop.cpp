@@ -23,7 +23,8 @@ namespace {
 // headless run of many frames still writes its --screenshot (and a live-reload test can end one).
 // The handler only stores the signal (a lock-free atomic: async-signal-safe); a watchdog thread
 // cuts the run short if the frame or the load does not end in time.
-std::atomic<int> gInterrupted{0};
+std::atomic<int> gInterrupted{0};  // the signal; negative: a window closed (kCloseNow: cut short now)
+constexpr int kCloseNow = -2;
 static_assert(std::atomic<int>::is_always_lock_free);
 extern "C" void interrupt(int signal) {
     gInterrupted.store(signal);
@@ -31,7 +32,8 @@ extern "C" void interrupt(int signal) {
 
 void watchdog(std::string name) {
     while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
+    if (gInterrupted.load() != kCloseNow)
+        std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();
     // write(), not stdio: the main thread may hold stderr's lock, stuck on a full pipe.
@@ -62,9 +64,9 @@ bool stopRequested() {
     return gInterrupted.load() != 0;
 }
 
-void requestStop() {
+void requestStop(bool now) {
     int none = 0;
-    gInterrupted.compare_exchange_strong(none, -1);  // -1: no signal (exit 0 if cut short)
+    gInterrupted.compare_exchange_strong(none, now ? kCloseNow : -1);  // negative: no signal, exit 0
 }
 
 }  // namespace common

@@ -14,7 +14,9 @@ inline constexpr int kStopGraceMs = 400;
 void watchForStop(const char* chapterName);
 // Whether a stop was asked for (the signal, or requestStop).
 bool stopRequested();
-// The same as the signal: a window closed while a frame was still running.
-void requestStop();
+// A window closed while a frame is still running, kStopGraceMs after the close (common/target.cpp
+// waits that long for the frame): the run is cut short at once (exit 0: a closed window is the
+// run's normal end).
+void requestStop(bool now);
 
 }  // namespace common

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #if defined(_WIN32)
@@ -426,17 +427,22 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
 
 namespace {
 
-// Waits for `fence` in slices of 50 ms, reading the window's events between them: a close (the
-// window's button, Escape) asks the run to stop, which then ends within common::kStopGraceMs
-// even if the frame does not.
+// Waits for `fence` in slices of 50 ms, reading the window's events between them. A close (the
+// window's button, Escape) lets the frame finish if it does within common::kStopGraceMs (the run
+// then ends at the next frame as always); a frame still running then is cut short at once
+// (common::requestStop), so that a closed window ends the run within a second whatever the frame.
 void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
     constexpr uint64_t kSlice = 50'000'000;  // ns
+    std::optional<std::chrono::steady_clock::time_point> closed;
     for (;;) {
         VkResult result = vkWaitForFences(device.handle, 1, &fence, VK_TRUE, kSlice);
         if (result == VK_SUCCESS) return;
         if (result != VK_TIMEOUT) VK_CHECK_RESULT(result, "vkWaitForFences");
         glfwPollEvents();
-        if (glfwWindowShouldClose(target.window)) requestStop();
+        if (!glfwWindowShouldClose(target.window)) continue;
+        const auto now = std::chrono::steady_clock::now();
+        if (!closed) closed = now;
+        if (now - *closed > std::chrono::milliseconds(kStopGraceMs)) requestStop(/*now=*/true);
     }
 }
 
