@@ -14,11 +14,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/buffer.hpp"
-#include "common/check.hpp"
-#include "common/commands.hpp"
-#include "common/device.hpp"
-#include "common/instance.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
 
 int main(int argc, char** argv) {
     std::string deviceName, jsonPath;

@@ -1,8 +1,8 @@
 // chapter-06: buffers.
 #include "buffer.hpp"
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/debug_names.hpp"
 
 //> find-memory-type
 // A device offers a few memory heaps (device-local video memory, system memory the GPU can
@@ -33,7 +33,7 @@ Buffer createBuffer(const common::Device& device, VkDeviceSize size, VkBufferUsa
     };
     VK_CHECK(vkCreateBuffer(device.handle, &info, nullptr, &buffer.handle));
     // Its name, for graphics debuggers and validation messages (VK_EXT_debug_utils, where the
-    // instance has it: common/debug_names.hpp). Every object our code creates gets one.
+    // instance has it: common/vk/debug_names.hpp). Every object our code creates gets one.
     common::nameObject(device.handle, buffer.handle, name);
 
     // It has no memory yet. The driver says how much it needs (maybe more than `size`, for

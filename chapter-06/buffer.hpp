@@ -1,7 +1,7 @@
 // chapter-06: buffers -- the book's VulkanBuffer: a VkBuffer, the memory behind it (of a type
 // chosen from what the buffer allows and what we need), bound, and mapped when the CPU writes it.
 //
-// Deliberate repetition: common/buffer.cpp holds the same code for the later chapters, which
+// Deliberate repetition: common/vk/buffer.cpp holds the same code for the later chapters, which
 // use it without spelling it out again. This chapter introduces it, so here it is written out.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "common/device.hpp"
+#include "common/vk/device.hpp"
 
 // The book's VulkanBuffer.
 struct Buffer {

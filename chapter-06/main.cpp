@@ -12,17 +12,17 @@
 #include <vector>
 
 #include "buffer.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/debug_names.hpp"
-#include "common/device.hpp"
-#include "common/formats.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/run_control.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/formats.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "mesh.hpp"
 #include "pipeline.hpp"
 
@@ -228,7 +228,7 @@ bool recreateTarget(Chapter& c) {
 //< resize
 
 //> reload
-// Live reload: an edited shader compiled and checked (common/shader_watch.hpp). The new pipeline
+// Live reload: an edited shader compiled and checked (common/shaders/shader_watch.hpp). The new pipeline
 // is made from that code while the frames in flight still draw with the old one; once the GPU is
 // done with them, it takes the old one's place. If it cannot be made, the old one keeps drawing
 // and the error is shown.

@@ -3,9 +3,9 @@
 
 #include <cstring>
 
-#include "common/check.hpp"
-#include "common/commands.hpp"
-#include "common/debug_names.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/debug_names.hpp"
 
 //> describe-vertex-input
 void describeVertexInput(VertexInput& input) {
@@ -62,7 +62,7 @@ Buffer stage(const common::Device& device, VkCommandBuffer cmd, const void* data
 std::vector<Mesh> loadMeshes(const common::Device& device, const std::vector<MeshData>& meshData) {
     VkCommandBufferAllocateInfo allocInfo{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-        .commandPool = device.oneTimePool,  // a pool for short-lived command buffers (common/device.cpp)
+        .commandPool = device.oneTimePool,  // a pool for short-lived command buffers (common/vk/device.cpp)
         .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
         .commandBufferCount = 1,
     };

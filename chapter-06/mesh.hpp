@@ -1,7 +1,7 @@
 // chapter-06: meshes -- the book's VertexBufferStructure (how the pipeline reads a vertex),
 // MeshData (a mesh on the CPU) and VulkanMesh with loadMeshes (the same mesh in device-local
 // buffers, copied there through host-visible staging buffers). Deliberate repetition: later
-// chapters upload through common/buffer.cpp (beginStaging, uploadStaged, endStaging), the same
+// chapters upload through common/vk/buffer.cpp (beginStaging, uploadStaged, endStaging), the same
 // calls wrapped.
 #pragma once
 
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "buffer.hpp"
-#include "common/device.hpp"
+#include "common/vk/device.hpp"
 
 //> vertex-input
 // The book's VertexBufferStructure: one binding of tightly packed vertices, one attribute

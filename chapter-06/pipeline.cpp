@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/files.hpp"
-#include "common/formats.hpp"
-#include "common/report.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/core/report.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/formats.hpp"
 #include "shader_compiler.hpp"
 
 //> shader-module

@@ -1,7 +1,7 @@
 // chapter-06: shaders and the graphics pipeline -- the book's ShaderProgram (SPIR-V modules),
 // PipelineCache and Pipeline (every fixed-function state struct, then vkCreateGraphicsPipelines).
 //
-// Deliberate repetition: common/shader_compiler.cpp (loadShaderModule) and common/pipeline.cpp
+// Deliberate repetition: common/shaders/shader_compiler.cpp (loadShaderModule) and common/vk/pipeline.cpp
 // (loadPipelineCache, createGraphicsPipeline) hold the same calls for the later chapters, which
 // use them without spelling them out again. This chapter introduces them, so here they are.
 #pragma once
@@ -10,8 +10,8 @@
 
 #include <string_view>
 
-#include "common/device.hpp"
-#include "common/pipeline.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 #include "mesh.hpp"
 
 VkShaderModule createShaderModule(const common::Device& device, std::string_view name);

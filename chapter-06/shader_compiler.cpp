@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "common/check.hpp"
-#include "common/files.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
 
 #if defined(VKBOOK_RUNTIME_SHADERS)
 #include <shaderc/shaderc.h>

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/formats.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/formats.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 
@@ -274,7 +274,7 @@ void createPipelines(const common::Device& device, VkPipelineCache cache, Geomet
 GeometryPass createGeometryPass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                                 const common::GpuScene& scene, uint32_t framesInFlight, bool generic) {
     GeometryPass pass;
-    // D32_SFLOAT where the device has it, else a 24-bit depth format (common/formats.hpp).
+    // D32_SFLOAT where the device has it, else a 24-bit depth format (common/vk/formats.hpp).
     pass.depthFormat = common::chooseDepthFormat(device);
     pass.renderPass = createGeometryRenderPass(device, pass.depthFormat);
     pass.gbuffer = createGBuffer(device, extent, pass.depthFormat);

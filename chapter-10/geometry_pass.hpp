@@ -9,12 +9,12 @@
 
 #include <glm/glm.hpp>
 
-#include "common/buffer.hpp"
-#include "common/device.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/image.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/image.hpp"
+#include "common/vk/pipeline.hpp"
 
 // The G-buffer: one set of attachments shared by all frames in flight (the subpass
 // dependencies keep one frame's writes from overtaking the previous frame's reads).

@@ -4,14 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/formats.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/formats.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 
@@ -109,7 +109,7 @@ LightingPass createLightingPass(const common::Device& device, VkPipelineCache ca
     LightingPass pass;
     pass.renderPass = createLightingRenderPass(device, target);
     pass.targetFormat = target.format;
-    // One framebuffer per target image, as chapter-06 makes them (common/target.cpp).
+    // One framebuffer per target image, as chapter-06 makes them (common/wnd/target.cpp).
     pass.framebuffers = common::createTargetFramebuffers(device, pass.renderPass, target);
 
     pass.attachmentsLayout = common::createDescriptorSetLayout(

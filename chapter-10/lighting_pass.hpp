@@ -10,8 +10,8 @@
 
 #include <vector>
 
-#include "common/device.hpp"
-#include "common/target.hpp"
+#include "common/vk/device.hpp"
+#include "common/wnd/target.hpp"
 #include "geometry_pass.hpp"
 
 // What the lighting pass shows (a push constant recorded into its command buffers).

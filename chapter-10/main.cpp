@@ -12,21 +12,22 @@
 #include <cstdio>
 #include <vector>
 
-#include "common/benchmark.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/debug_names.hpp"
-#include "common/device.hpp"
-#include "common/frame_cost.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/run_control.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
+#include "common/app/benchmark.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/model/load_model.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/frame_cost.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "geometry_pass.hpp"
 #include "lighting_pass.hpp"
 
@@ -128,7 +129,7 @@ void destroyPasses(Chapter& c) {
     destroyGeometryPass(c.device, c.geometryPass);
 }
 
-// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// Live reload (common/shaders/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
 // the passes that use them are made from the new code while the frames in flight still draw
 // with the old ones; then the new ones take their place (the old ones are destroyed once the
 // GPU is done with those frames), and the lighting command buffers, which name the pipeline, are
@@ -146,7 +147,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    common::swapPipelines(c.device, swap, frame);  // the old ones go once the frames in flight are done
     if (lighting) {  // its command buffers, which name the pipeline, recorded again once not in use
         VK_CHECK(vkDeviceWaitIdle(c.device.handle));
         recordLightingPass(c.device, c.lightingPass, c.target, c.lightingView);
@@ -169,7 +170,7 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetImages(c.target, c.device);
     c.frames = createFrames(c.device, options.framesInFlight);
 
-    // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
+    // What the first frame may cost to rasterise, refused beyond a budget (common/scene/frame_cost.hpp).
     const common::RasterView firstView =
         common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
     common::checkFrameCost(c.scene, models, {&firstView, 1});

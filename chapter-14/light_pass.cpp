@@ -1,10 +1,10 @@
 // chapter-14: the light pass.
 #include "light_pass.hpp"
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
-#include "common/descriptors.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/barriers.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <cstddef>
 
-#include "common/device.hpp"
-#include "common/fullscreen.hpp"
-#include "common/image.hpp"
+#include "common/passes/fullscreen.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/image.hpp"
 #include "scene_pass.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -8,30 +8,32 @@
 //   scene pass (scene_pass.cpp): the scene into the G-buffer (albedo + depth);
 //   light pass (light_pass.cpp): a full-screen triangle into an R32G32B32A32_SFLOAT image;
 //   post pass  (post_pass.cpp): that image into the presentation image (FXAA optional);
-//   GUI pass   (common/gui_pass.cpp, --gui): Dear ImGui's overlay drawn over it, as the book's GuiRender.
+//   GUI pass   (common/passes/gui_pass.cpp, --gui): Dear ImGui's overlay drawn over it, as the book's
+//   GuiRender.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
-#include "common/benchmark.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/device.hpp"
-#include "common/frame_cost.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/gui.hpp"
-#include "common/gui_pass.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/post_pass.hpp"
-#include "common/run_control.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
+#include "common/app/benchmark.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/gui.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/model/load_model.hpp"
+#include "common/passes/gui_pass.hpp"
+#include "common/passes/post_pass.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/frame_cost.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "light_pass.hpp"
 #include "scene_pass.hpp"
 
@@ -48,7 +50,7 @@ const common::ChapterInfo kChapter{
 };
 
 //> overlay
-// The overlay's widgets (--gui): the timings window with the view selector (common/gui.cpp), and
+// The overlay's widgets (--gui): the timings window with the view selector (common/app/gui.cpp), and
 // FXAA in the same window.
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa) {
     common::guiTimingsWindow(gui, run, kChapter.views, view, {"V  cycles the views", "F  toggles FXAA"});
@@ -72,7 +74,7 @@ struct Chapter {
     ScenePass scenePass;
     LightPass lightPass;
     common::PostPass postPass;
-    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/app/gui.cpp) and its pass
     common::GuiPass guiPass;
     common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
     // What the frames change.
@@ -105,7 +107,7 @@ void destroyPasses(Chapter& c) {
     destroyScenePass(c.device, c.scenePass);
 }
 
-// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// Live reload (common/shaders/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
 // the passes that use them are made from the new code while the frames in flight still draw
 // with the old ones; then the new ones take their place, and the old ones are destroyed once
 // the GPU is done with those frames. If one cannot be made, none does: the old pipelines keep
@@ -124,7 +126,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    common::swapPipelines(c.device, swap, frame);  // the old ones go once the frames in flight are done
     common::finishShaderReload();
 }
 //< passes
@@ -146,7 +148,7 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetImages(c.target, c.device);
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
-    // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
+    // What the first frame may cost to rasterise, refused beyond a budget (common/scene/frame_cost.hpp).
     const common::RasterView firstView =
         common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
     common::checkFrameCost(c.scene, models, {&firstView, 1});

@@ -4,14 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/formats.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/formats.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 

@@ -10,13 +10,14 @@
 
 #include <glm/glm.hpp>
 
-#include "common/buffer.hpp"
-#include "common/camera.hpp"
-#include "common/device.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/image.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
+#include "common/passes/camera_frames.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/image.hpp"
+#include "common/vk/pipeline.hpp"
 
 //> gbuffer
 // This chapter's G-buffer: albedo and depth (chapter-15 adds position, normal and PBR data). One,

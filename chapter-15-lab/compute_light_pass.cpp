@@ -3,13 +3,13 @@
 
 #include <string>
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/barriers.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/pipeline.hpp"
 
 LightPassSetup computeLightPassSetup(VkShaderStageFlags alsoStages) {
     return {.fragmentShader = "",

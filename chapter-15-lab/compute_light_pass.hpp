@@ -9,10 +9,10 @@
 
 #include <string>
 
-#include "common/device.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "light_pass.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 
 // How the light pass runs: chapter-15's full-screen triangle, or a compute dispatch.
 enum class LightPassKind { Fragment, Compute };

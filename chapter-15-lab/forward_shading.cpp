@@ -3,8 +3,8 @@
 
 #include <array>
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/barriers.hpp"
 
 Shading readShading(const common::Options& options) {
     auto given = options.choices.find("shading");

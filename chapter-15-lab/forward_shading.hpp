@@ -13,11 +13,11 @@
 
 #include <glm/glm.hpp>
 
-#include "common/cli.hpp"
-#include "common/device.hpp"
-#include "common/gpu_scene.hpp"
-#include "light_pass.hpp"
-#include "scene_pass.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/app/cli.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/vk/device.hpp"
 
 enum class Shading { Deferred, Forward };
 

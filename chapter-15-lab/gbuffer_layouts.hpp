@@ -10,11 +10,11 @@
 
 #include <glm/glm.hpp>
 
-#include "common/camera.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/scene.hpp"
-#include "gbuffer_layout.hpp"
-#include "scene_pass.hpp"
+#include "chapter-15/gbuffer_layout.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
 
 struct LabLayout {
     GBufferLayout layout;

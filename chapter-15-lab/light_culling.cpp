@@ -9,13 +9,13 @@
 #include <optional>
 #include <string>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "light_pass.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/pipeline.hpp"
 
 namespace {
 

@@ -21,14 +21,14 @@
 #include <string>
 #include <vector>
 
-#include "common/buffer.hpp"
-#include "common/cli.hpp"
-#include "common/device.hpp"
-#include "common/pipeline.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "gbuffer_layout.hpp"
-#include "gpu_types.hpp"
+#include "chapter-15/gbuffer_layout.hpp"
+#include "chapter-15/gpu_types.hpp"
+#include "common/app/cli.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 
 struct LightPass;
 

@@ -17,34 +17,36 @@
 #include <string>
 #include <vector>
 
-#include "common/benchmark.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/debug_names.hpp"
-#include "common/device.hpp"
-#include "common/files.hpp"
-#include "common/frame_cost.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/gui.hpp"
-#include "common/gui_pass.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/post_pass.hpp"
-#include "common/run_control.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
+#include "chapter-15/gbuffer_layout.hpp"
+#include "chapter-15/gpu_types.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/app/benchmark.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/gui.hpp"
+#include "common/app/light_controls.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/model/load_model.hpp"
+#include "common/passes/gui_pass.hpp"
+#include "common/passes/post_pass.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/frame_cost.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "compute_light_pass.hpp"
 #include "forward_shading.hpp"
-#include "gbuffer_layout.hpp"
 #include "gbuffer_layouts.hpp"
-#include "gpu_types.hpp"
 #include "light_culling.hpp"
-#include "light_pass.hpp"
 #include "output_dump.hpp"
-#include "scene_pass.hpp"
 #include "shadow_study.hpp"
 
 namespace {
@@ -104,65 +106,6 @@ const common::ChapterInfo kChapter{
       "with --shadows: texels along each side of a cascade's map"}},
 };
 
-// chapter-15's controls, as chapter-15 has them: Left/Right turn the directional light about the x axis, its
-// angle kept within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
-// The point light's marker model follows it.
-struct LightControls {
-    int sun = -1;    // index of the first directional light, if any
-    int point = -1;  // index of the first point light, if any
-    float sunAngle = 270.0f;
-    bool moved = false;
-};
-
-LightControls findControlledLights(const common::Scene& scene) {
-    LightControls controls;
-    for (int i = 0; i < int(scene.lights.size()); ++i) {
-        const common::Light& light = scene.lights[size_t(i)];
-        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
-            controls.sun = i;
-            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
-            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
-        }
-        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
-    }
-    return controls;
-}
-
-void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
-    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
-    float radians = glm::radians(controls.sunAngle);
-    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
-    controls.moved = true;
-}
-
-void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                     glm::vec3 position) {
-    common::Light& light = scene.lights[size_t(controls.point)];
-    light.position = position;
-    controls.moved = true;
-    if (light.marker < 0) return;
-    common::Transform transform = scene.models[size_t(light.marker)].transform;
-    transform.position = light.position;
-    for (common::Draw& draw : gpuScene.draws)
-        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
-}
-
-void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                float seconds, float speed) {
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
-        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
-    if (controls.point < 0) return;
-    glm::vec3 step(0.0f);
-    if (held(GLFW_KEY_1)) step.y += 1.0f;
-    if (held(GLFW_KEY_2)) step.y -= 1.0f;
-    if (held(GLFW_KEY_3)) step.z -= 1.0f;
-    if (held(GLFW_KEY_4)) step.z += 1.0f;
-    if (step == glm::vec3(0.0f)) return;
-    placePointLight(controls, scene, gpuScene,
-                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
-}
-
 //> overlay
 // The overlay (--gui): chapter-15's, with the G-buffer layout and the light pass's form in the
 // timings window (switched at the next frame).
@@ -172,14 +115,14 @@ struct RendererChoice {
 };
 
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
-                    RendererChoice& renderer, LightControls& controls, common::Scene& scene,
+                    RendererChoice& renderer, common::LightControls& controls, common::Scene& scene,
                     common::GpuScene& gpuScene, bool deferred, bool switchable) {
     // "visibility" (the last view) only with --shadows, where the overlay has no renderer switch.
     std::vector<std::string> views = kChapter.views;
     if (switchable) views.pop_back();
-    common::guiTimingsWindow(gui, run, deferred ? views : std::vector<std::string>{"final"}, view,
-                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
-                              "1/2, 3/4  move the point light up/down, along z"});
+    common::guiTimingsWindow(
+        gui, run, deferred ? views : std::vector<std::string>{"final"}, view,
+        {"V  cycles the views", "F  toggles FXAA", common::kLightKeysHelp[0], common::kLightKeysHelp[1]});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
     if (deferred && switchable) {  // --shading forward has neither; the shadow study, one
@@ -188,23 +131,8 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
     }
     ImGui::End();
 
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
-                            ImVec2(1.0f, 0.0f));
-    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
-    ImGui::PushItemWidth(180.0f);
-    float angle = controls.sunAngle;
-    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
-        setSunAngle(controls, scene, angle);
-    if (controls.point >= 0) {
-        common::Light& point = scene.lights[size_t(controls.point)];
-        glm::vec3 position = point.position;
-        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
-            placePointLight(controls, scene, gpuScene, position);
-        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
-    }
-    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
-    ImGui::PopItemWidth();
-    ImGui::End();
+    common::beginLightsWindow(controls, scene, gpuScene);
+    common::endLightsWindow();
 }
 //< overlay
 
@@ -305,7 +233,7 @@ void run(const common::Options& options) {
     }
 
     // What the first frame's view may cost to rasterise, refused beyond a budget
-    // (common/frame_cost.hpp).
+    // (common/scene/frame_cost.hpp).
     const common::RasterView firstView =
         common::sceneRasterView(scene, target.extent.width, target.extent.height);
     common::checkFrameCost(scene, models, {&firstView, 1});
@@ -317,7 +245,7 @@ void run(const common::Options& options) {
             cascadeRasterViews(studyCascades(study, scene, gpuScene, device, target.extent,
                                              common::viewMatrix({scene.camera.position, scene.camera.yaw,
                                                                  scene.camera.pitch}),
-                                             findControlledLights(scene).sun),
+                                             common::findControlledLights(scene).sun),
                                study.cascades.mapSize));
     models.clear();
     // The book's layout (which the overlay may switch to) keeps world positions in 16-bit floats.
@@ -385,7 +313,7 @@ void run(const common::Options& options) {
 
     common::Camera camera{scene.camera.position, scene.camera.yaw, scene.camera.pitch};
     common::CameraInput cameraInput;
-    LightControls lightControls = findControlledLights(scene);
+    common::LightControls lightControls = common::findControlledLights(scene);
     LightView lightView{.boundsMin = glm::vec4(gpuScene.boundsMin, 0.0f),
                         .boundsMax = glm::vec4(gpuScene.boundsMax, 0.0f),
                         .view = int(options.view),
@@ -445,7 +373,7 @@ void run(const common::Options& options) {
                     lightKind == LightPassKind::Compute ? "compute" : "fragment");
     };
 
-    // Live reload (common/shader_watch.hpp): edited shaders compiled and checked; new pipelines for
+    // Live reload (common/shaders/shader_watch.hpp): edited shaders compiled and checked; new pipelines for
     // the passes that use them, made while the frames in flight still draw with the old ones,
     // take their place; the old ones go once the GPU is done with those frames. If one cannot be
     // made, none does.
@@ -467,7 +395,7 @@ void run(const common::Options& options) {
             common::finishShaderReload(e.what());
             return;
         }
-        common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+        common::swapPipelines(device, swap, frame);  // the old ones go once the frames in flight are done
         common::finishShaderReload();
     };
     //< switch-renderer
@@ -493,7 +421,8 @@ void run(const common::Options& options) {
             float seconds = float(now - lastTime);
             lastTime = now;
             common::moveCamera(target.window, camera, cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
-            if (keys) moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
+            if (keys)
+                common::moveLights(target.window, lightControls, scene, gpuScene, seconds, sceneSize * 0.05f);
             if (common::pressedOnce(target.window, viewKey) && keys && !forward)  // forward: no views
                 lightView.view = (lightView.view + 1) % int(kChapter.views.size() - (study.enabled ? 0 : 1));
             if (common::pressedOnce(target.window, fxaaKey) && keys) fxaa = !fxaa;

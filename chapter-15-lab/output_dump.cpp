@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/files.hpp"
-#include "common/screenshot.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/vk/screenshot.hpp"
 
 // --dump DIR: the last frame's light output, light.pfm; the distance from the camera plane of
 // each pixel's surface, distance.pfm (from the depth attachment: it tells which surface a layout

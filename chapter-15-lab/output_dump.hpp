@@ -6,9 +6,9 @@
 
 #include <filesystem>
 
-#include "common/device.hpp"
-#include "light_pass.hpp"
-#include "scene_pass.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/vk/device.hpp"
 
 void dumpFrame(const common::Device& device, const LightPass& lightPass, const ScenePass& scenePass,
                const LightView& view, const std::filesystem::path& directory, bool withGBuffer = true);

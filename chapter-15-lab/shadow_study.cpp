@@ -5,12 +5,12 @@
 #include <cstring>
 #include <optional>
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/texture.hpp"
-#include "gpu_types.hpp"
+#include "chapter-15/gpu_types.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/barriers.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/texture.hpp"
 
 ShadowStudyOptions readShadowStudy(const common::Options& options) {
     auto chosen = [&](const char* name) {

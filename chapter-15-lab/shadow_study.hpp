@@ -16,14 +16,14 @@
 #include <string>
 #include <vector>
 
-#include "cascades.hpp"
-#include "common/cli.hpp"
-#include "common/device.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "scene_pass.hpp"
-#include "shadow_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "chapter-16/cascades.hpp"
+#include "chapter-16/shadow_pass.hpp"
+#include "common/app/cli.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 
 enum class ShadowFilter { Variance, Pcf2, Pcf3, Pcf5 };
 enum class ShadowLayers { GeometryShader, Multiview, PassPerCascade };

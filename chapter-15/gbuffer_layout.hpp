@@ -6,7 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "common/gbuffer.hpp"
+#include "common/passes/gbuffer.hpp"
 
 struct GBufferLayout {
     const char* name;

@@ -63,6 +63,10 @@ struct DrawConstants {
     glm::vec4 normalMatrix[3];
 };
 static_assert(sizeof(DrawConstants) == 112 && offsetof(DrawConstants, normalMatrix) == 64);
+// Where the fragment stage's material index lies in the push constants: DRAW_MATERIAL_OFFSET in
+// shaders/include/gpu_types.glsl.
+inline constexpr uint32_t kDrawMaterialOffset = sizeof(DrawConstants);
+static_assert(kDrawMaterialOffset == 112);
 
 // The light pass's push constants: 112 bytes.
 struct LightView {
@@ -77,4 +81,4 @@ struct LightView {
 static_assert(sizeof(LightView) == 112 && offsetof(LightView, boundsMin) == 64 &&
               offsetof(LightView, view) == 96 && offsetof(LightView, reversedZ) == 108);
 
-// CameraUniform, shared with chapter-14, is common::CameraUniform (common/camera.hpp).
+// CameraUniform, shared with chapter-14, is common::CameraUniform (common/passes/camera_frames.hpp).

@@ -7,12 +7,12 @@
 #include <cstring>
 #include <string>
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/screenshot.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/barriers.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/screenshot.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 

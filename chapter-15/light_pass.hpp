@@ -1,5 +1,5 @@
 // chapter-15: the light pass -- Cook-Torrance lighting of the G-buffer by the scene's lights into
-// an R32G32B32A32_SFLOAT image; the post pass (common/post_pass.cpp) presents it. The book's
+// an R32G32B32A32_SFLOAT image; the post pass (common/passes/post_pass.cpp) presents it. The book's
 // LightRender (chapter 15): a full-screen triangle.
 #pragma once
 
@@ -13,12 +13,12 @@
 
 #include <glm/glm.hpp>
 
-#include "common/buffer.hpp"
-#include "common/device.hpp"
-#include "common/fullscreen.hpp"
-#include "common/gbuffer.hpp"
-#include "common/image.hpp"
-#include "common/scene.hpp"
+#include "common/passes/fullscreen.hpp"
+#include "common/passes/gbuffer.hpp"
+#include "common/scene/scene.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/image.hpp"
 #include "gpu_types.hpp"
 
 inline constexpr VkFormat kLightOutputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

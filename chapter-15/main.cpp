@@ -6,8 +6,8 @@
 //   light pass (light_pass.cpp): Cook-Torrance shading (shaders/include/pbr.glsl) of every pixel
 //     by the scene's directional and point lights, from a scalar-layout storage buffer, plus
 //     ambient light, into an R32G32B32A32_SFLOAT image;
-//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional;
-//   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
+//   post pass (common/passes/post_pass.cpp): into the presentation image, FXAA optional;
+//   GUI pass (common/passes/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
 // run() at the end of this file is the chapter in four steps: set up, the frame loop, the report,
 // tear down.
 #include <vulkan/vulkan.h>
@@ -18,24 +18,26 @@
 #include <string>
 #include <vector>
 
-#include "common/benchmark.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/device.hpp"
-#include "common/files.hpp"
-#include "common/frame_cost.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/gui.hpp"
-#include "common/gui_pass.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/post_pass.hpp"
-#include "common/run_control.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
+#include "common/app/benchmark.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/gui.hpp"
+#include "common/app/light_controls.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/model/load_model.hpp"
+#include "common/passes/gui_pass.hpp"
+#include "common/passes/post_pass.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/frame_cost.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "gbuffer_layout.hpp"
 #include "gpu_types.hpp"
 #include "light_pass.hpp"
@@ -54,96 +56,20 @@ const common::ChapterInfo kChapter{
     {common::kGuiClickChoice, common::kGuiScaleChoice, common::kPipelinesChoice},
 };
 
-//> light-controls
-// The book's controls: Left/Right turn the directional light about the x axis, its angle kept
-// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
-// The point light's marker model follows it.
-struct LightControls {
-    int sun = -1;    // index of the first directional light, if any
-    int point = -1;  // index of the first point light, if any
-    float sunAngle = 270.0f;
-    bool moved = false;
-};
-
-LightControls findControlledLights(const common::Scene& scene) {
-    LightControls controls;
-    for (int i = 0; i < int(scene.lights.size()); ++i) {
-        const common::Light& light = scene.lights[size_t(i)];
-        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
-            controls.sun = i;
-            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
-            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
-        }
-        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
-    }
-    return controls;
-}
-
-void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
-    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
-    float radians = glm::radians(controls.sunAngle);
-    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
-    controls.moved = true;
-}
-
-void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                     glm::vec3 position) {
-    common::Light& light = scene.lights[size_t(controls.point)];
-    light.position = position;
-    controls.moved = true;
-    if (light.marker < 0) return;
-    common::Transform transform = scene.models[size_t(light.marker)].transform;
-    transform.position = light.position;
-    for (common::Draw& draw : gpuScene.draws)
-        if (draw.instance == uint32_t(light.marker)) common::setDrawModel(gpuScene, draw, transform.matrix());
-}
-
-void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                float seconds, float speed) {
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
-        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
-    if (controls.point < 0) return;
-    glm::vec3 step(0.0f);
-    if (held(GLFW_KEY_1)) step.y += 1.0f;
-    if (held(GLFW_KEY_2)) step.y -= 1.0f;
-    if (held(GLFW_KEY_3)) step.z -= 1.0f;
-    if (held(GLFW_KEY_4)) step.z += 1.0f;
-    if (step == glm::vec3(0.0f)) return;
-    placePointLight(controls, scene, gpuScene,
-                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
-}
-//< light-controls
-
 //> overlay
-// The overlay (--gui): the timings window with the view selector (common/gui.cpp) and FXAA; a
+// The overlay (--gui): the timings window with the view selector (common/app/gui.cpp) and FXAA; a
 // second window with the book's light controls and the ambient light.
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
-                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene) {
-    common::guiTimingsWindow(gui, run, kChapter.views, view,
-                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
-                              "1/2, 3/4  move the point light up/down, along z"});
+                    common::LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene) {
+    common::guiTimingsWindow(
+        gui, run, kChapter.views, view,
+        {"V  cycles the views", "F  toggles FXAA", common::kLightKeysHelp[0], common::kLightKeysHelp[1]});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
     ImGui::End();
 
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
-                            ImVec2(1.0f, 0.0f));
-    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
-    ImGui::PushItemWidth(180.0f);
-    float angle = controls.sunAngle;
-    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
-        setSunAngle(controls, scene, angle);
-    if (controls.point >= 0) {
-        common::Light& point = scene.lights[size_t(controls.point)];
-        glm::vec3 position = point.position;
-        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
-            placePointLight(controls, scene, gpuScene, position);
-        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
-    }
-    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
-    ImGui::PopItemWidth();
-    ImGui::End();
+    common::beginLightsWindow(controls, scene, gpuScene);
+    common::endLightsWindow();
 }
 //< overlay
 
@@ -161,13 +87,13 @@ struct Chapter {
     ScenePass scenePass;
     LightPass lightPass;
     common::PostPass postPass;
-    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/app/gui.cpp) and its pass
     common::GuiPass guiPass;
     common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
     // What the frames change.
     common::Camera camera;
     common::CameraInput cameraInput;
-    LightControls lightControls;
+    common::LightControls lightControls;
     LightView lightView;
     bool fxaa = false;
     bool genericPipelines = false;  // --pipelines generic
@@ -200,7 +126,7 @@ void destroyPasses(Chapter& c) {
     destroyScenePass(c.device, c.scenePass);
 }
 
-// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// Live reload (common/shaders/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
 // the passes that use them are made from the new code while the frames in flight still draw
 // with the old ones; then the new ones take their place, and the old ones are destroyed once
 // the GPU is done with those frames. If one cannot be made, none does: the old pipelines keep
@@ -219,7 +145,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    common::swapPipelines(c.device, swap, frame);  // the old ones go once the frames in flight are done
     common::finishShaderReload();
 }
 //< passes
@@ -241,7 +167,7 @@ void setUp(Chapter& c, const common::Options& options) {
     common::createTargetImages(c.target, c.device);
     c.frames = common::createFrameSync(c.device, options.framesInFlight);
 
-    // What the first frame may cost to rasterise, refused beyond a budget (common/frame_cost.hpp).
+    // What the first frame may cost to rasterise, refused beyond a budget (common/scene/frame_cost.hpp).
     const common::RasterView firstView =
         common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height);
     common::checkFrameCost(c.scene, models, {&firstView, 1});
@@ -265,7 +191,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.run = common::createRunControl(options, c.device, passes);
 
     c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
-    c.lightControls = findControlledLights(c.scene);
+    c.lightControls = common::findControlledLights(c.scene);
     c.lightView = {.boundsMin = glm::vec4(c.gpuScene.boundsMin, 0.0f),
                    .boundsMax = glm::vec4(c.gpuScene.boundsMax, 0.0f),
                    .view = int(options.view),
@@ -299,7 +225,8 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
     lastTime = now;
     float sceneSize = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin);
     common::moveCamera(c.target.window, c.camera, c.cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
-    if (keys) moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
+    if (keys)
+        common::moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
     if (common::pressedOnce(c.target.window, viewKey) && keys)
         c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
     if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;

@@ -5,14 +5,14 @@
 
 #include <string>
 
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
-#include "common/formats.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/formats.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/vk/texture.hpp"
 #include "gpu_types.hpp"
 
 namespace {
@@ -181,9 +181,7 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     layouts.insert(layouts.end(), target.moreSets.begin(), target.moreSets.end());
     std::array<VkPushConstantRange, 2> pushConstants{{
         {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(DrawConstants)},
-        {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT,
-         .offset = sizeof(DrawConstants),
-         .size = sizeof(uint32_t)},
+        {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = kDrawMaterialOffset, .size = sizeof(uint32_t)},
     }};
     VkPipelineLayoutCreateInfo layoutInfo{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
@@ -331,7 +329,7 @@ void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines
                                  glm::vec4(normalMatrix[2], 0.0f)}};
         vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
                            &constants);
-        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants),
+        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset,
                            sizeof(uint32_t), &draw.material);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
     }

@@ -2,7 +2,7 @@
 // normal (with normal maps) and PBR data (AO, roughness, metallic), all R16G16B16A16_SFLOAT,
 // plus D32_SFLOAT depth: 36 bytes per pixel (gbuffer_layout.hpp). The book's ScnRender and
 // MrtAttachments. The G-buffer's barriers and vkCmdBeginRendering are chapter-14's, from
-// common/gbuffer.cpp.
+// common/passes/gbuffer.cpp.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -13,13 +13,14 @@
 
 #include <glm/glm.hpp>
 
-#include "common/buffer.hpp"
-#include "common/camera.hpp"
-#include "common/device.hpp"
-#include "common/gbuffer.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
+#include "common/passes/camera_frames.hpp"
+#include "common/passes/gbuffer.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 #include "gbuffer_layout.hpp"
 
 // The compiled shaders of a scene pipeline, files under <build>/bin/shaders/: the book's by

@@ -1,6 +1,8 @@
 // chapter-16: the cascades of a directional light's shadow.
 #include "cascades.hpp"
 
+#include "common/model/model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -107,8 +109,7 @@ float fittedFar(const glm::mat4& view, glm::vec3 boundsMin, glm::vec3 boundsMax,
     if (!(near > 0.0f) || !(far > near)) return far;  // no steps from a near plane at or past 0
     float farthest = near;
     for (int i = 0; i < 8; ++i) {
-        glm::vec3 corner((i & 1) ? boundsMax.x : boundsMin.x, (i & 2) ? boundsMax.y : boundsMin.y,
-                         (i & 4) ? boundsMax.z : boundsMin.z);
+        glm::vec3 corner = common::boxCorner(i, boundsMin, boundsMax);
         farthest = std::max(farthest, -(view * glm::vec4(corner, 1.0f)).z);  // view distance
     }
     if (!(farthest < far)) return far;

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/frame_cost.hpp"
+#include "common/scene/frame_cost.hpp"
 
 // The camera whose view the cascades cover.
 struct CascadeCamera {

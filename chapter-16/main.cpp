@@ -8,8 +8,8 @@
 //   light pass (light_pass.cpp): Cook-Torrance shading (shaders/include/pbr.glsl) of every pixel
 //     by the scene's directional and point lights, from a scalar-layout storage buffer, plus
 //     ambient light, into an R32G32B32A32_SFLOAT image;
-//   post pass (common/post_pass.cpp): into the presentation image, FXAA optional;
-//   GUI pass (common/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
+//   post pass (common/passes/post_pass.cpp): into the presentation image, FXAA optional;
+//   GUI pass (common/passes/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
 // run() at the end of this file is the chapter in four steps: set up, the frame loop, the report,
 // tear down.
 #include <vulkan/vulkan.h>
@@ -22,29 +22,31 @@
 #include <vector>
 
 #include "cascades.hpp"
-#include "common/benchmark.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/device.hpp"
-#include "common/files.hpp"
-#include "common/frame_cost.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/gui.hpp"
-#include "common/gui_pass.hpp"
-#include "common/instance.hpp"
-#include "common/pipeline.hpp"
-#include "common/post_pass.hpp"
-#include "common/report.hpp"
-#include "common/run_control.hpp"
-#include "common/scene.hpp"
-#include "common/shader_watch.hpp"
-#include "common/target.hpp"
-#include "gbuffer_layout.hpp"
-#include "gpu_types.hpp"
-#include "light_pass.hpp"
-#include "scene_pass.hpp"
+#include "chapter-15/gbuffer_layout.hpp"
+#include "chapter-15/gpu_types.hpp"
+#include "chapter-15/light_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/app/benchmark.hpp"
+#include "common/app/cli.hpp"
+#include "common/app/gui.hpp"
+#include "common/app/light_controls.hpp"
+#include "common/app/run_control.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/core/report.hpp"
+#include "common/model/load_model.hpp"
+#include "common/passes/gui_pass.hpp"
+#include "common/passes/post_pass.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/frame_cost.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
+#include "common/vk/pipeline.hpp"
+#include "common/wnd/target.hpp"
 #include "shadow_pass.hpp"
 
 namespace {
@@ -74,82 +76,6 @@ const common::ChapterInfo kChapter{
       "(testing, benchmarks) move the camera forward every frame: walk 2 cm, creep 0.1 mm"}},
 };
 
-//> light-controls
-// The book's controls: Left/Right turn the directional light about the x axis, its angle kept
-// within 180..360 degrees (270 is straight down); 1/2 move the point light up/down, 3/4 along z.
-// The point light's marker model follows it.
-struct LightControls {
-    int sun = -1;    // index of the first directional light, if any
-    int point = -1;  // index of the first point light, if any
-    float sunAngle = 270.0f;
-    bool moved = false;
-    uint64_t markerMoves = 0;  // the scene's geometry changed (the shadow map is drawn again)
-};
-
-LightControls findControlledLights(const common::Scene& scene) {
-    LightControls controls;
-    for (int i = 0; i < int(scene.lights.size()); ++i) {
-        const common::Light& light = scene.lights[size_t(i)];
-        if (light.type == common::Light::Type::Directional && controls.sun < 0) {
-            controls.sun = i;
-            float angle = glm::degrees(std::atan2(light.direction.y, light.direction.z));
-            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
-        }
-        if (light.type == common::Light::Type::Point && controls.point < 0) controls.point = i;
-    }
-    return controls;
-}
-
-void setSunAngle(LightControls& controls, common::Scene& scene, float degrees) {
-    controls.sunAngle = glm::clamp(degrees, 180.0f, 360.0f);
-    float radians = glm::radians(controls.sunAngle);
-    scene.lights[size_t(controls.sun)].direction = {0.0f, std::sin(radians), std::cos(radians)};
-    controls.moved = true;
-}
-
-void placePointLight(LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                     glm::vec3 position) {
-    common::Light& light = scene.lights[size_t(controls.point)];
-    light.position = position;
-    controls.moved = true;
-    if (light.marker < 0) return;
-    ++controls.markerMoves;
-    common::Transform transform = scene.models[size_t(light.marker)].transform;
-    transform.position = light.position;
-    for (common::Draw& draw : gpuScene.draws) {
-        if (draw.instance != uint32_t(light.marker)) continue;
-        common::setDrawModel(gpuScene, draw, transform.matrix());
-        // The scene's bounds grow to hold the marker where it went: the last cascade ends where
-        // they do, and without depth clamping the cascades reach its shadow through them.
-        const common::GpuMesh& mesh = gpuScene.meshes[draw.mesh];
-        for (int i = 0; i < 8; ++i) {
-            glm::vec3 corner((i & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
-                             (i & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
-                             (i & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
-            glm::vec3 world = glm::vec3(transform.matrix() * glm::vec4(corner, 1.0f));
-            gpuScene.boundsMin = glm::min(gpuScene.boundsMin, world);
-            gpuScene.boundsMax = glm::max(gpuScene.boundsMax, world);
-        }
-    }
-}
-
-void moveLights(GLFWwindow* window, LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
-                float seconds, float speed) {
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
-        setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);
-    if (controls.point < 0) return;
-    glm::vec3 step(0.0f);
-    if (held(GLFW_KEY_1)) step.y += 1.0f;
-    if (held(GLFW_KEY_2)) step.y -= 1.0f;
-    if (held(GLFW_KEY_3)) step.z -= 1.0f;
-    if (held(GLFW_KEY_4)) step.z += 1.0f;
-    if (step == glm::vec3(0.0f)) return;
-    placePointLight(controls, scene, gpuScene,
-                    scene.lights[size_t(controls.point)].position + step * speed * seconds);
-}
-//< light-controls
-
 // The shadow controls of the overlay: the book's cascade debug view (a switch in its settings
 // file), where the last cascade ends, whether cascades are drawn only when they changed; and per
 // cascade, the slice it covers, its texel in the world and how often it was drawn.
@@ -176,36 +102,21 @@ void shadowWidgets(int* view, const ShadowControls& shadows) {
 }
 
 //> overlay
-// The overlay (--gui): the timings window with the view selector (common/gui.cpp) and FXAA; a
-// second window with the book's light controls, the ambient light and the shadow controls.
+// The overlay (--gui): the timings window with the view selector (common/app/gui.cpp) and FXAA; a
+// second window with chapter-15's light controls, the ambient light and the shadow controls.
 void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, bool* fxaa,
-                    LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
+                    common::LightControls& controls, common::Scene& scene, common::GpuScene& gpuScene,
                     const ShadowControls& shadows) {
-    common::guiTimingsWindow(gui, run, kChapter.views, view,
-                             {"V  cycles the views", "F  toggles FXAA", "Left/Right  turn the sun",
-                              "1/2, 3/4  move the point light up/down, along z"});
+    common::guiTimingsWindow(
+        gui, run, kChapter.views, view,
+        {"V  cycles the views", "F  toggles FXAA", common::kLightKeysHelp[0], common::kLightKeysHelp[1]});
     ImGui::Begin("Frame");  // appends to the timings window
     ImGui::Checkbox("FXAA (F)", fxaa);
     ImGui::End();
 
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always,
-                            ImVec2(1.0f, 0.0f));
-    ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
-    ImGui::PushItemWidth(180.0f);
-    float angle = controls.sunAngle;
-    if (controls.sun >= 0 && ImGui::SliderFloat("sun angle", &angle, 180.0f, 360.0f, "%.0f deg"))
-        setSunAngle(controls, scene, angle);
-    if (controls.point >= 0) {
-        common::Light& point = scene.lights[size_t(controls.point)];
-        glm::vec3 position = point.position;
-        if (ImGui::DragFloat3("point light", &position.x, 0.05f))
-            placePointLight(controls, scene, gpuScene, position);
-        if (ImGui::ColorEdit3("colour", &point.color.x)) controls.moved = true;
-    }
-    ImGui::SliderFloat("ambient", &scene.ambientIntensity, 0.0f, 1.0f);
+    common::beginLightsWindow(controls, scene, gpuScene);
     shadowWidgets(view, shadows);
-    ImGui::PopItemWidth();
-    ImGui::End();
+    common::endLightsWindow();
 }
 //< overlay
 
@@ -214,7 +125,7 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 // (-5, 5, 0), turned 90 degrees about y (looking along +x) and 20 down; zNear 0.5 and zFar 50; the
 // sun straight down at intensity 8; no point light, and no marker for it; and a tree at the
 // origin, scaled 0.005, which the book ships in its own converted format only
-// (booksamples/chapter-16/resources/models/tree/tree.json, common/book_model.hpp).
+// (booksamples/chapter-16/resources/models/tree/tree.json, common/model/book_model.hpp).
 void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bookScene) {
     scene.camera.position = {-5.0f, 5.0f, 0.0f};
     scene.camera.yaw = 90.0f;
@@ -259,13 +170,13 @@ struct Chapter {
     ShadowPass shadowPass;
     LightPass lightPass;
     common::PostPass postPass;
-    common::Gui gui;  // --gui: Dear ImGui's context and input (common/gui.cpp) and its pass
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/app/gui.cpp) and its pass
     common::GuiPass guiPass;
     common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
     // What the frames change.
     common::Camera camera;
     common::CameraInput cameraInput;
-    LightControls lightControls;
+    common::LightControls lightControls;
     LightView lightView;
     bool fxaa = false;
     bool genericPipelines = false;         // --pipelines generic
@@ -309,7 +220,7 @@ void destroyPasses(Chapter& c) {
     destroyScenePass(c.device, c.scenePass);
 }
 
-// Live reload (common/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
+// Live reload (common/shaders/shader_watch.hpp): edited shaders compiled and checked. New pipelines for
 // the passes that use them are made from the new code while the frames in flight still draw
 // with the old ones; then the new ones take their place, and the old ones are destroyed once
 // the GPU is done with those frames. If one cannot be made, none does: the old pipelines keep
@@ -329,7 +240,7 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
         common::finishShaderReload(e.what());
         return;
     }
-    common::swapPipelines(swap, frame);  // the old ones go once the frames in flight are done
+    common::swapPipelines(c.device, swap, frame);  // the old ones go once the frames in flight are done
     common::finishShaderReload();
 }
 //< passes
@@ -360,8 +271,9 @@ void setUp(Chapter& c, const common::Options& options) {
     c.instance =
         common::createInstance("chapter-16", options.validation, common::targetInstanceExtensions(c.target));
     common::createTargetSurface(c.target, c.instance);
-    // scalarBlockLayout: the feature this chapter adds -- the lights and the scene info are read
-    // with the C-like scalar layout (gpu_types.hpp).
+    // What this chapter adds: geometryShader (the shadow pass sends each triangle to every
+    // cascade's layer) and depthClamp where the device has it (casters in front of a cascade's box
+    // kept); the rest is chapter-15's.
     c.device = common::createDevice(c.instance, c.target.surface, options.device,
                                     {.dynamicRendering = true,
                                      .synchronization2 = true,
@@ -405,7 +317,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.run = common::createRunControl(options, c.device, passes);
 
     c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
-    c.lightControls = findControlledLights(c.scene);
+    c.lightControls = common::findControlledLights(c.scene);
     c.lightView = {.boundsMin = glm::vec4(c.gpuScene.boundsMin, 0.0f),
                    .boundsMax = glm::vec4(c.gpuScene.boundsMax, 0.0f),
                    .view = int(options.view),
@@ -414,7 +326,7 @@ void setUp(Chapter& c, const common::Options& options) {
     c.fxaa = options.switches.count("fxaa") != 0;
 
     // What the first frame may cost to rasterise -- the view and every cascade, each triangle
-    // drawn into each layer -- refused beyond a budget (common/frame_cost.hpp).
+    // drawn into each layer -- refused beyond a budget (common/scene/frame_cost.hpp).
     std::vector<common::RasterView> views{
         common::sceneRasterView(c.scene, c.target.extent.width, c.target.extent.height)};
     for (const common::RasterView& cascade :
@@ -448,7 +360,8 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
     lastTime = now;
     float sceneSize = glm::length(c.gpuScene.boundsMax - c.gpuScene.boundsMin);
     common::moveCamera(c.target.window, c.camera, c.cameraInput, seconds, sceneSize * 0.15f, keys, mouse);
-    if (keys) moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
+    if (keys)
+        common::moveLights(c.target.window, c.lightControls, c.scene, c.gpuScene, seconds, sceneSize * 0.05f);
     if (common::pressedOnce(c.target.window, viewKey) && keys)
         c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
     if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
@@ -621,7 +534,7 @@ void report(Chapter& c, const common::Options& options) {
     // Without depth clamping the cascades reach toward the sun as far as the scene does.
     info.push_back({"depth_clamp", c.device.depthClamp ? "yes" : "no: cascades reach the scene's casters"});
     for (const auto& [key, value] : describeCascades(c)) info.push_back({key, value});
-    // The bound of the first frame's fragments that setUp checked (common/frame_cost.hpp).
+    // The bound of the first frame's fragments that setUp checked (common/scene/frame_cost.hpp).
     std::string bound;
     for (uint64_t fragments : c.firstFrameCost)
         bound += (bound.empty() ? "" : ", ") + std::to_string(fragments);

@@ -6,13 +6,13 @@
 #include <optional>
 #include <string>
 
-#include "common/barriers.hpp"
-#include "common/check.hpp"
-#include "common/debug_names.hpp"
-#include "common/descriptors.hpp"
-#include "common/shader_watch.hpp"
-#include "common/texture.hpp"
-#include "gpu_types.hpp"
+#include "chapter-15/gpu_types.hpp"
+#include "common/core/check.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/barriers.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+#include "common/vk/texture.hpp"
 
 //> layered-image
 // A 2D image with one layer per cascade (arrayLayers) and a view of type 2D_ARRAY over all of them:
@@ -162,7 +162,7 @@ VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDesc
                                                  scenePass.texturesLayout};
     std::array<VkPushConstantRange, 2> pushConstants{{
         {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
-        {VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t)},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t)},
     }};
     VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
                                           .setLayoutCount = uint32_t(layouts.size()),
@@ -366,7 +366,7 @@ void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline 
                                 &scenePass.materialTextureSets[draw.material], 0, nullptr);
         DrawConstants constants{draw.model, {}};
         vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(DrawConstants), sizeof(uint32_t),
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t),
                            &draw.material);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
     }

@@ -12,12 +12,12 @@
 #include <glm/glm.hpp>
 
 #include "cascades.hpp"
-#include "common/buffer.hpp"
-#include "common/device.hpp"
-#include "common/gpu_scene.hpp"
-#include "common/pipeline.hpp"
-#include "common/shader_watch.hpp"
-#include "scene_pass.hpp"
+#include "chapter-15/scene_pass.hpp"
+#include "common/scene/gpu_scene.hpp"
+#include "common/shaders/shader_watch.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/pipeline.hpp"
 
 inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
 

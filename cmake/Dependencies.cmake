@@ -173,7 +173,7 @@ if(NOT TARGET CLI11::CLI11)
     FetchContent_MakeAvailable(cli11)
 endif()
 
-# Runtime shader compilation (common/shader_compiler.cpp, chapter-06/shader_compiler.cpp): shaderc
+# Runtime shader compilation (common/shaders/shader_compiler.cpp, chapter-06/shader_compiler.cpp): shaderc
 # compiles GLSL while a chapter runs, as the book's ShaderCompiler does, and SPIRV-Cross reflects a
 # recompiled shader's interface so that a reload never gives a pipeline a shader its layout does
 # not fit. Debian: libshaderc-dev, glslang-dev and libspirv-cross-c-shared-dev; Windows and macOS:

@@ -111,7 +111,7 @@ function(vkbook_shaders target chapter)
             get_filename_component(name ${name} NAME)
         endif()
         set(out ${VKBOOK_SHADER_OUTPUT_DIR}/${chapter}/${name}.spv)
-        # What the build compiled it from, for runtime compilation (common/shader_compiler.cpp):
+        # What the build compiled it from, for runtime compilation (common/shaders/shader_compiler.cpp):
         # the source relative to shaders/, then one macro definition a line.
         file(RELATIVE_PATH relative ${VKBOOK_ROOT}/shaders ${in})
         string(REPLACE "-D" "" define_lines "${defines}")

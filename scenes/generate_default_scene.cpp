@@ -22,8 +22,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/files.hpp"
-#include "common/scene.hpp"
+#include "common/core/files.hpp"
+#include "common/scene/scene.hpp"
 #include "gltf_writer.hpp"
 
 namespace fs = std::filesystem;

@@ -27,8 +27,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/files.hpp"
-#include "common/scene.hpp"
+#include "common/core/files.hpp"
+#include "common/scene/scene.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A run killed between writing its new pipeline cache and renaming it over the old one, as a crash
-# would kill it (a power cut could also lose what the kernel had not written yet: we do not fsync): gdb stops the chapter at rename() (common/pipeline.cpp,
+# would kill it (a power cut could also lose what the kernel had not written yet: we do not fsync): gdb stops the chapter at rename() (common/vk/pipeline.cpp,
 # savePipelineCache) and kills it there. The old cache must be untouched (the same bytes), and the
 # next run must load it with nothing on stderr, remove the dead run's temporary and leave none of
 # its own.
@@ -33,7 +33,7 @@ leftover=$(basename "$temporary")
 "$chapter" "$@" > /dev/null 2> "$work/err" || fail "the next run failed: $(cat "$work/err")"
 [ -s "$work/err" ] && fail "the next run printed: $(cat "$work/err")"
 # The killed run's temporary is removed by the next run that saves (its process is gone:
-# common/files.cpp, removeStaleTemporaries), and that run leaves none of its own.
+# common/core/files.cpp, removeStaleTemporaries), and that run leaves none of its own.
 for file in "$XDG_CACHE_HOME"/vulkan-book-cpp/*.tmp*; do
     [ -e "$file" ] || continue  # no match: the pattern itself
     fail "the next run left $(basename "$file") behind"

@@ -2,7 +2,7 @@
 # concurrent_runs.sh N RUNS -- COMMAND...: starts COMMAND N times at once, RUNS rounds one after
 # the other, and fails unless every run exits 0 with nothing on stderr. For the pipeline cache,
 # which every run of a chapter reads at start and replaces at exit: on Windows a file being
-# replaced cannot be opened, nor one being read replaced, so both sides retry (common/pipeline.cpp).
+# replaced cannot be opened, nor one being read replaced, so both sides retry (common/vk/pipeline.cpp).
 set -u
 count=$1 rounds=$2
 shift 3  # N RUNS --

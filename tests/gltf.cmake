@@ -246,7 +246,7 @@ hostile_test(book-scene-missing 10 2
 set_tests_properties(hostile.book-scene-not-a-clone hostile.book-scene-missing PROPERTIES
     FIXTURES_REQUIRED "hostile-inputs;gltf-cases")
 
-# The book's converted models (common/book_model.cpp): the stand-in tree loads (--model, any
+# The book's converted models (common/model/book_model.cpp): the stand-in tree loads (--model, any
 # chapter), and each broken rule is refused in one line naming the file and the rule -- a range
 # past its file, one whose offset would wrap a sum, part of a vertex or a triangle, a material id
 # no material has, a size that is not a number, no meshes, a factor outside 0..1, materials that

@@ -1,10 +1,10 @@
 // Test helper: one compute dispatch.
 #include "gpu_compute.hpp"
 
-#include "common/check.hpp"
-#include "common/commands.hpp"
-#include "common/descriptors.hpp"
-#include "common/files.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/descriptors.hpp"
 
 void runCompute(const common::Device& device, const std::filesystem::path& spirv,
                 const std::vector<ComputeBinding>& bindings, const void* push, uint32_t pushSize,

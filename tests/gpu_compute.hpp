@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "common/device.hpp"
+#include "common/vk/device.hpp"
 
 struct ComputeBinding {
     VkDescriptorType type;  // STORAGE_BUFFER or UNIFORM_BUFFER

@@ -1,4 +1,4 @@
-# The --gui overlay of chapters 14, 15, 16 and chapter-15-lab (common/gui.cpp, common/gui_pass.cpp):
+# The --gui overlay of chapters 14, 15, 16 and chapter-15-lab (common/app/gui.cpp, common/passes/gui_pass.cpp):
 # golden images headless (the overlay is deterministic there: timings as placeholders); scripted
 # clicks on the overlay (--gui-click); the buffers growing when the help window opens; a size too
 # small for the overlay; the GUI pass's row in --benchmark; and in a real window under Xvfb,

@@ -10,13 +10,14 @@
 #include <cstring>
 #include <vector>
 
-#include "common/buffer.hpp"
-#include "common/camera.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/device.hpp"
-#include "common/files.hpp"
-#include "common/instance.hpp"
+#include "common/app/cli.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/passes/camera_frames.hpp"
+#include "common/scene/camera.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
 #include "gpu_compute.hpp"
 #include "gpu_types.hpp"      // chapter-15
 #include "light_culling.hpp"  // chapter-15-lab: CullView

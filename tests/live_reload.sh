@@ -245,7 +245,7 @@ kill -0 "$pid" 2> /dev/null && fail "the chapter did not end"
 wait "$pid"
 status=$?
 # 0: it ended at a frame's end; 130: a frame still running 0.4 s after Ctrl+C was cut short
-# (common/stop.hpp), which a slow build (the sanitizers') may see.
+# (common/core/stop.hpp), which a slow build (the sanitizers') may see.
 [ $status = 0 ] || [ $status = 130 ] || fail "the chapter exited with $status"
 grep "^shaders: reloaded" "$work/stdout" | tail -1
 if [ -n "${EXPECT_PIPELINES:-}" ]; then

@@ -10,12 +10,12 @@
 // went unreported.
 #include <cstdio>
 
-#include "common/buffer.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/commands.hpp"
-#include "common/device.hpp"
-#include "common/instance.hpp"
+#include "common/app/cli.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
 
 namespace {
 

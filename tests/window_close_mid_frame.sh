@@ -2,7 +2,7 @@
 # window_close_mid_frame.sh CHAPTER ARGS...: a chapter in a window (with a window manager, jwm),
 # drawing frames of more than a second, is closed with Escape in the middle of one: it must end
 # within a second of the key, exit 0 (a closed window is the run's normal end), and say it was
-# closed in the middle of a frame (common/stop.hpp).
+# closed in the middle of a frame (common/core/stop.hpp).
 set -u
 chapter=$1
 shift

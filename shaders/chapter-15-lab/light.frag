@@ -13,18 +13,19 @@ layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
+    float visibility = 1.0;
 #ifdef SUN_SHADOWS
     // --shadows: the sun's visibility at the pixel first (chapter-16's light pass); view 6, the
     // visibility alone.
     SurfaceSample s = readGBuffer(inUv);
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
-    gVisibility = s.surface && cascades.count > 0 ? labSunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
+    visibility = s.surface && cascades.count > 0 ? labSunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
     if (show.view == 6) {
-        outColor = vec4(vec3(gVisibility), 1.0);
+        outColor = vec4(vec3(visibility), 1.0);
         return;
     }
 #endif
-    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy));
+    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy), visibility);
 }
 //< light-frag

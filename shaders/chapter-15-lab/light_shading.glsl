@@ -39,7 +39,7 @@ SurfaceSample readGBuffer(vec2 uv) {
 #if defined(SUN_SHADOWS)
 // --shadows (the shadow study): chapter-16's loop, the sun's light times its visibility.
 #include "shadow_filters.glsl"
-#include "../chapter-16/sun_light_loop.glsl"
+#include "../chapter-15/light_loop.glsl"  // the sun times its visibility
 #elif defined(TILED_LIGHTS)
 #include "light_tiles.glsl"
 #else

@@ -32,7 +32,7 @@ layout(set = 2, binding = 2) uniform sampler2D metalRoughTexture;
 layout(set = 2, binding = 3) uniform sampler2D occlusionTexture;
 
 layout(push_constant) uniform Draw {
-    layout(offset = 112) uint materialIndex;
+    layout(offset = DRAW_MATERIAL_OFFSET) uint materialIndex;
 } draw;
 
 struct SceneSurface {

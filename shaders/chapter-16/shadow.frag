@@ -18,7 +18,7 @@ layout(std430, set = 1, binding = 0) readonly buffer Materials {
 layout(set = 2, binding = 0) uniform sampler2D albedoTexture;
 
 layout(push_constant) uniform Draw {
-    layout(offset = 112) uint materialIndex;
+    layout(offset = DRAW_MATERIAL_OFFSET) uint materialIndex;
 } draw;
 
 void main() {

@@ -43,7 +43,7 @@ struct ShaderMaterial {
 //< gpu-types
 
 // The camera: one uniform buffer per frame in flight (std140), set 0 of the scene pass. C++:
-// common::CameraUniform (common/camera.hpp).
+// common::CameraUniform (common/passes/camera_frames.hpp).
 struct CameraUniform {
     mat4 projection;
     mat4 view;
@@ -54,6 +54,9 @@ struct DrawConstants {
     mat4 model;         // bytes 0..63
     mat3 normalMatrix;  // bytes 64..111 (three 16-byte columns): inverse-transpose of the model matrix
 };
+// The fragment stage's push constant, the draw's material index, follows the vertex stage's:
+// at sizeof(DrawConstants). C++: kDrawMaterialOffset (chapter-15/gpu_types.hpp).
+#define DRAW_MATERIAL_OFFSET 112
 
 // The light pass's push constants (std430): 112 bytes.
 struct LightView {

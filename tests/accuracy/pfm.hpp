@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/check.hpp"
+#include "common/core/check.hpp"
 
 namespace accuracy {
 

@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
-#include "common/check.hpp"
-#include "common/scene.hpp"
+#include "common/core/check.hpp"
+#include "common/scene/scene.hpp"
 #include "tests/accuracy/pfm.hpp"
 #include "tests/pbr_reference.hpp"
 

@@ -46,10 +46,11 @@
 #include <stb_image_write.h>
 #include <nlohmann/json.hpp>
 
-#include "common/check.hpp"
-#include "common/model.hpp"
-#include "common/scene.hpp"
-#include "common/texture.hpp"
+#include "common/core/check.hpp"
+#include "common/model/load_model.hpp"
+#include "common/model/model.hpp"
+#include "common/scene/scene.hpp"
+#include "common/vk/texture.hpp"
 #include "tests/accuracy/pfm.hpp"
 
 namespace {
@@ -200,7 +201,7 @@ int main(int argc, char** argv) {
                                             3 * sizeof(uint32_t), mesh.indices.size() / 3));
                 std::memcpy(indices, mesh.indices.data(), mesh.indices.size() / 3 * 3 * sizeof(uint32_t));
                 triangles += mesh.indices.size() / 3;
-                // Cut-outs, as the chapters decide them (common/gpu_scene.cpp): MASK, or an OBJ
+                // Cut-outs, as the chapters decide them (common/scene/gpu_scene.cpp): MASK, or an OBJ
                 // material with alpha below 1 in its factor or texture; the scene's overrides of a
                 // material's diffuse colour and texture applied as the chapters apply them.
                 common::MaterialData material = model.materials[mesh.material];

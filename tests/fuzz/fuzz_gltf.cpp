@@ -31,8 +31,9 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
-#include "common/check.hpp"
-#include "common/model.hpp"
+#include "common/core/check.hpp"
+#include "common/model/gltf_model.hpp"
+#include "common/model/model.hpp"
 #include "model_checks.hpp"
 
 namespace {

@@ -19,8 +19,9 @@
 #include <string>
 #include <string_view>
 
-#include "common/check.hpp"
-#include "common/model.hpp"
+#include "common/core/check.hpp"
+#include "common/model/model.hpp"
+#include "common/model/obj_model.hpp"
 #include "model_checks.hpp"
 
 namespace {

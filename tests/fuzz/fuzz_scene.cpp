@@ -10,8 +10,8 @@
 #include <string>
 #include <string_view>
 
-#include "common/check.hpp"
-#include "common/scene.hpp"
+#include "common/core/check.hpp"
+#include "common/scene/scene.hpp"
 
 namespace {
 

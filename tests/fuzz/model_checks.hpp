@@ -1,4 +1,4 @@
-// What every loaded model must be, whatever the input (common/model.hpp's promises), checked by
+// What every loaded model must be, whatever the input (common/model/model.hpp's promises), checked by
 // the loaders' fuzz targets (fuzz_obj, fuzz_gltf): a broken promise aborts the run.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/model.hpp"
+#include "common/model/model.hpp"
 
 namespace fuzz {
 

@@ -29,11 +29,11 @@
 #include <vector>
 
 #include "../gpu_compute.hpp"
-#include "common/buffer.hpp"
-#include "common/check.hpp"
-#include "common/cli.hpp"
-#include "common/device.hpp"
-#include "common/instance.hpp"
+#include "common/app/cli.hpp"
+#include "common/core/check.hpp"
+#include "common/vk/buffer.hpp"
+#include "common/vk/device.hpp"
+#include "common/vk/instance.hpp"
 #include "tests/pbr_reference.hpp"
 
 namespace {

@@ -850,7 +850,7 @@ void writeHostile(const fs::path& dir) {
 
 // ---- A stand-in for the book's clone (--book-scene) -----------------------------------------
 
-// The book's converted model format (common/book_model.hpp): 14 big-endian floats a vertex,
+// The book's converted model format (common/model/book_model.hpp): 14 big-endian floats a vertex,
 // big-endian 32-bit indices, a JSON of byte ranges and one of materials.
 struct BookMesh {
     std::vector<float> vertices;  // 14 a vertex

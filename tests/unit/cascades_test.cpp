@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "cascades.hpp"
+#include "chapter-16/cascades.hpp"
 
 namespace {
 

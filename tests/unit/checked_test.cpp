@@ -1,8 +1,8 @@
-// Unit tests of common/checked.hpp: the arithmetic the loaders do on numbers read from files, at
+// Unit tests of common/core/checked.hpp: the arithmetic the loaders do on numbers read from files, at
 // the boundaries where a plain 64-bit sum or product would wrap.
 #include <gtest/gtest.h>
 
-#include "common/checked.hpp"
+#include "common/core/checked.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Unit tests of the glTF loader (common/gltf_model.cpp): what the glTF 2.0 specification asks of
+// Unit tests of the glTF loader (common/model/gltf_model.cpp): what the glTF 2.0 specification asks of
 // it, checked as numbers on small files written here with scenes/gltf_writer.hpp.
 #include <gtest/gtest.h>
 
@@ -7,11 +7,13 @@
 #include <filesystem>
 
 #include "../../scenes/gltf_writer.hpp"
-#include "common/check.hpp"
-#include "common/files.hpp"
-#include "common/gltf_accessors.hpp"
-#include "common/gltf_document.hpp"
-#include "common/model.hpp"
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/model/gltf_accessors.hpp"
+#include "common/model/gltf_document.hpp"
+#include "common/model/gltf_model.hpp"
+#include "common/model/load_model.hpp"
+#include "common/model/model.hpp"
 
 namespace {
 

@@ -7,9 +7,10 @@
 #include <fstream>
 #include <string>
 
-#include "common/check.hpp"
-#include "common/model.hpp"
-#include "common/scene.hpp"
+#include "common/core/check.hpp"
+#include "common/model/model.hpp"
+#include "common/model/obj_model.hpp"
+#include "common/scene/scene.hpp"
 
 namespace {
 
@@ -160,7 +161,7 @@ common::ModelData loadFlatPolygons(size_t faces, const std::string& name) {
 }  // namespace
 
 TEST(HostileObj, IndexBudgetCheckedAsFacesAreRead) {
-    // common/model.hpp: at most 2^25 indices. 44,208 faces of 759 indices are 33,553,872, within
+    // common/model/model.hpp: at most 2^25 indices. 44,208 faces of 759 indices are 33,553,872, within
     // it; one face more is 33,554,631, refused at that face.
     static_assert(44208 * 759 <= common::kMaxModelIndices && 44209 * 759 > common::kMaxModelIndices);
     try {

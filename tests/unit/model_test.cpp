@@ -6,8 +6,9 @@
 #include <fstream>
 #include <random>
 
-#include "common/check.hpp"
-#include "common/model.hpp"
+#include "common/core/check.hpp"
+#include "common/model/model.hpp"
+#include "common/model/obj_model.hpp"
 
 namespace {
 

@@ -1,12 +1,12 @@
-// common/report.hpp's one-line messages and common/files.hpp's temporaries.
+// common/core/report.hpp's one-line messages and common/core/files.hpp's temporaries.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
-#include "common/files.hpp"
-#include "common/report.hpp"
+#include "common/core/files.hpp"
+#include "common/core/report.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "common/check.hpp"
-#include "common/scene.hpp"
+#include "common/core/check.hpp"
+#include "common/scene/scene.hpp"
 
 namespace {
 

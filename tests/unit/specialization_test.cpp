@@ -1,4 +1,4 @@
-// common::specializationMismatch (common/shader_interface.cpp): the constants a pipeline sets,
+// common::specializationMismatch (common/shaders/shader_interface.cpp): the constants a pipeline sets,
 // checked against those its shader declares -- on chapter-15's scene fragment shader as built
 // (constant_id 0 ALPHA_TEST bool, 1 MATERIAL_FEATURES uint, 2 FEATURES_AT_RUN_TIME bool).
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "common/shader_interface.hpp"
+#include "common/shaders/shader_interface.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Mip chains (common/texture.cpp, makeMipChain): each level the 2x2 box filter of the one above,
+// Mip chains (common/vk/texture.cpp, makeMipChain): each level the 2x2 box filter of the one above,
 // in linear light for sRGB and weighted by alpha, as stb_image_resize computes it.
 #include <gtest/gtest.h>
 #include <stb_image_resize.h>
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "common/texture.hpp"
+#include "common/vk/texture.hpp"
 
 namespace {
 

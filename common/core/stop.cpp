@@ -1,0 +1,72 @@
+// Stopping a run (stop.hpp).
+#include "common/core/stop.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#if !defined(_WIN32)
+#include <unistd.h>
+#endif
+
+#include "common/core/files.hpp"
+
+namespace common {
+
+namespace {
+
+// Ctrl+C or a TERM signal ends the run at the next frame like closing the window does, so a
+// headless run of many frames still writes its --screenshot (and a live-reload test can end one).
+// The handler only stores the signal (a lock-free atomic: async-signal-safe); a watchdog thread
+// cuts the run short if the frame or the load does not end in time.
+std::atomic<int> gInterrupted{0};  // the signal; negative: a window closed (kCloseNow: cut short now)
+constexpr int kCloseNow = -2;
+static_assert(std::atomic<int>::is_always_lock_free);
+extern "C" void interrupt(int signal) {
+    gInterrupted.store(signal);
+}
+
+void watchdog(std::string name) {
+    while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (gInterrupted.load() != kCloseNow)
+        std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
+    const int signal = gInterrupted.load();
+    removeRegisteredTemporaries();
+    // write(), not stdio: the main thread may hold stderr's lock, stuck on a full pipe.
+    std::string line =
+        name + (signal > 0 ? ": interrupted" : ": closed") + " in the middle of a frame or a load; stopped\n";
+#if defined(_WIN32)
+    std::fputs(line.c_str(), stderr);
+#else
+    [[maybe_unused]] ssize_t written = ::write(2, line.data(), line.size());
+#endif
+    std::fflush(stdout);  // what the run printed so far (stdio locks each stream: safe from here)
+    std::_Exit(signal > 0 ? 128 + signal : 0);  // a closed window: the run's normal end
+}
+
+}  // namespace
+
+void watchForStop(const char* chapterName) {
+    static bool started = false;
+    gInterrupted.store(0);
+    std::signal(SIGINT, interrupt);
+    std::signal(SIGTERM, interrupt);
+    if (started) return;
+    started = true;
+    std::thread(watchdog, std::string(chapterName)).detach();
+}
+
+bool stopRequested() {
+    return gInterrupted.load() != 0;
+}
+
+void requestStop(bool now) {
+    int none = 0;
+    gInterrupted.compare_exchange_strong(none, now ? kCloseNow : -1);  // negative: no signal, exit 0
+}
+
+}  // namespace common

@@ -1,0 +1,269 @@
+// The book's converted models (book_model.hpp).
+#include "common/model/book_model.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/core/report.hpp"
+#include "common/model/gltf_document.hpp"  // pathFromUtf8
+
+namespace common {
+
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+    std::string file;  // for messages
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(file + ": " + what); }
+    const json& field(const json& object, const char* name, const std::string& where) const {
+        if (!object.is_object() || !object.contains(name)) fail(where + " has no \"" + name + "\"");
+        return object[name];
+    }
+    std::string text(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_string()) fail(where + "'s \"" + name + "\" is not a string");
+        return value.get<std::string>();
+    }
+    uint64_t count(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_number_unsigned()) fail(where + "'s \"" + name + "\" is not a whole number 0 or more");
+        return value.get<uint64_t>();
+    }
+    // A factor, 0 to 1 as glTF's.
+    float factor(const json& object, const char* name, const std::string& where) const {
+        const json& value = field(object, name, where);
+        if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() <= 1.0))
+            fail(where + "'s \"" + name + "\" is not a number from 0 to 1");
+        return value.get<float>();
+    }
+};
+
+json parse(const std::filesystem::path& path) {
+    std::string bytes = readInputFile(path);
+    json root = json::parse(bytes, nullptr, false);
+    if (root.is_discarded()) throw InputError(utf8(path) + ": not JSON (the book's converted model)");
+    return root;
+}
+
+// A path of the book's ("resources\\models\\tree\\trunk.png", from its sample directory, with
+// Windows' backslashes or not): the file of that name beside the model's JSON.
+std::filesystem::path besideJson(const std::filesystem::path& directory, std::string path, const Reader& r,
+                                 const std::string& what) {
+    if (hasControlCharacter(path))
+        r.fail(what + " '" + oneLine(path) + "' has a control character (NUL, a line break, ...)");
+    for (char& c : path)
+        if (c == '\\') c = '/';
+    std::filesystem::path name = pathFromUtf8(path).filename();
+    if (name.empty() || name == "." || name == "..") r.fail(what + " '" + path + "' names no file");
+    return directory / name;
+}
+
+// A material's texture: none where its path is empty.
+TextureRef bookTexture(const std::filesystem::path& directory, const std::string& path, const Reader& r,
+                       const std::string& what) {
+    if (path.empty()) return {};
+    return TextureRef{.image = {.file = besideJson(directory, path, r, what)}};
+}
+
+float bigEndianFloat(const uint8_t* bytes) {
+    uint32_t bits = uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | bytes[3];
+    float value;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+}
+
+uint32_t bigEndianInt(const uint8_t* bytes) {
+    return uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | bytes[3];
+}
+
+// A binary file the model names, whole, within `limit` bytes; InputError naming it otherwise.
+std::vector<uint8_t> readBinary(const std::filesystem::path& path, uint64_t limit, const Reader& r) {
+    requireInputFile(path);
+    std::error_code ec;
+    uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(utf8(path) + ": cannot read it");
+    if (size > limit)
+        r.fail("'" + utf8(path) + "' has " + std::to_string(size) + " bytes, more than the " +
+               std::to_string(limit) + " our limits allow");
+    std::vector<uint8_t> bytes(static_cast<size_t>(size));
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        throw InputError(utf8(path) + ": cannot read it");
+    return bytes;
+}
+
+}  // namespace
+
+//> book-model
+ModelData loadBookModel(const std::filesystem::path& path) {
+    Reader r{utf8(path)};
+    json root = parse(path);
+    std::filesystem::path directory = path.parent_path();
+    const json& meshes = r.field(root, "meshes", "the model");
+    if (!meshes.is_array() || meshes.empty()) r.fail("\"meshes\" is not a list of meshes");
+    if (meshes.size() > kMaxModelPrimitives)
+        r.fail(std::to_string(meshes.size()) + " meshes, more than the " +
+               std::to_string(kMaxModelPrimitives) + " our limits allow");
+    constexpr uint64_t kVertexBytes = 14 * 4, kIndexBytes = 4;
+    std::vector<uint8_t> vertices =
+        readBinary(besideJson(directory, r.text(root, "vtx_path", "the model"), r, "\"vtx_path\""),
+                   kMaxModelVertices * kVertexBytes, r);
+    std::vector<uint8_t> indices =
+        readBinary(besideJson(directory, r.text(root, "idx_path", "the model"), r, "\"idx_path\""),
+                   kMaxModelIndices * kIndexBytes, r);
+
+    // The materials: NAME_mat.json beside NAME.json, by id.
+    ModelData model;
+    std::map<std::string, uint32_t> materialIndex;
+    std::filesystem::path materialsPath = directory / pathFromUtf8(utf8(path.stem()) + "_mat.json");
+    Reader m{utf8(materialsPath)};
+    json materials = parse(materialsPath);
+    if (!materials.is_array()) m.fail("not a list of materials");
+    for (size_t i = 0; i < materials.size(); ++i) {
+        const json& entry = materials[i];
+        std::string where = "material " + std::to_string(i);
+        MaterialData material;
+        material.name = m.text(entry, "id", where);
+        if (material.name.empty() || materialIndex.count(material.name))
+            m.fail(where + "'s id '" + material.name + "' is empty or another material's");
+        const json& color = m.field(entry, "diffuse_color", where);
+        std::string colorWhere = where + "'s diffuse_color";
+        material.diffuse = {m.factor(color, "x", colorWhere), m.factor(color, "y", colorWhere),
+                            m.factor(color, "z", colorWhere), m.factor(color, "w", colorWhere)};
+        material.roughness = m.factor(entry, "roughness_factor", where);
+        material.metallic = m.factor(entry, "metallic_factor", where);
+        material.diffuseTexture =
+            bookTexture(directory, m.text(entry, "texture_path", where), m, where + "'s texture_path");
+        material.normalTexture =
+            bookTexture(directory, m.text(entry, "normal_map_path", where), m, where + "'s normal_map_path");
+        material.metalRoughTexture =
+            bookTexture(directory, m.text(entry, "metal_rough_map", where), m, where + "'s metal_rough_map");
+        // The book's shaders discard texels of alpha below 0.5: a cut-out wherever there is alpha.
+        material.alphaMode = AlphaMode::Auto;
+        materialIndex[material.name] = uint32_t(model.materials.size());
+        model.materials.push_back(material);
+    }
+    // A mesh without a material id (the book's generator writes "" for none) gets a default one.
+    auto defaultMaterial = [&] {
+        if (auto found = materialIndex.find(""); found != materialIndex.end()) return found->second;
+        materialIndex[""] = uint32_t(model.materials.size());
+        model.materials.push_back(MaterialData{.name = "default"});
+        return uint32_t(model.materials.size() - 1);
+    };
+
+    // First every mesh's ranges, checked, and their sums against our limits (ranges may be named
+    // more than once: a small file may ask for much work); only then anything decoded.
+    struct Range {
+        uint64_t vertexOffset, vertexCount, indexOffset, indexCount;
+        uint32_t material;
+    };
+    std::vector<Range> ranges;
+    uint64_t totalVertices = 0, totalIndices = 0;
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        std::string where = "mesh " + std::to_string(i);
+        const json& entry = meshes[i];
+        uint64_t vertexOffset = r.count(entry, "offset_vtx", where),
+                 vertexBytes = r.count(entry, "vtx_size", where);
+        uint64_t indexOffset = r.count(entry, "offset_idx", where),
+                 indexBytes = r.count(entry, "idx_size", where);
+        // Each range within its file (compared without a sum that could wrap), whole vertices and
+        // whole triangles.
+        if (vertexOffset > vertices.size() || vertexBytes > vertices.size() - vertexOffset)
+            r.fail(where + "'s vertices (bytes " + std::to_string(vertexOffset) + " + " +
+                   std::to_string(vertexBytes) + ") lie past the end of the .vtx file (" +
+                   std::to_string(vertices.size()) + " bytes)");
+        if (indexOffset > indices.size() || indexBytes > indices.size() - indexOffset)
+            r.fail(where + "'s indices (bytes " + std::to_string(indexOffset) + " + " +
+                   std::to_string(indexBytes) + ") lie past the end of the .idx file (" +
+                   std::to_string(indices.size()) + " bytes)");
+        if (vertexBytes % kVertexBytes != 0)
+            r.fail(where + "'s vtx_size " + std::to_string(vertexBytes) +
+                   " is not a whole number of 56-byte vertices");
+        if (indexBytes % (3 * kIndexBytes) != 0)
+            r.fail(where + "'s idx_size " + std::to_string(indexBytes) +
+                   " is not a whole number of triangles");
+        uint32_t material = 0;
+        std::string materialId = r.text(entry, "material_id", where);
+        if (materialId.empty())
+            material = defaultMaterial();
+        else if (auto found = materialIndex.find(materialId); found != materialIndex.end())
+            material = found->second;
+        else
+            r.fail(where + "'s material_id '" + materialId + "' is in none of " +
+                   utf8(materialsPath.filename()));
+        ranges.push_back(
+            {vertexOffset, vertexBytes / kVertexBytes, indexOffset, indexBytes / kIndexBytes, material});
+        totalVertices += vertexBytes / kVertexBytes;
+        totalIndices += indexBytes / kIndexBytes;
+        if (totalVertices > kMaxModelVertices || totalIndices > kMaxModelIndices)
+            r.fail("its meshes make more than " +
+                   (totalVertices > kMaxModelVertices ? std::to_string(kMaxModelVertices) + " vertices"
+                                                      : std::to_string(kMaxModelIndices) + " indices") +
+                   ", our limit");
+    }
+
+    model.boundsMin = glm::vec3(std::numeric_limits<float>::max());
+    model.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
+    // A range that several meshes name is decoded and kept once: the others draw it again.
+    std::map<std::array<uint64_t, 4>, uint32_t> decoded;  // range -> its mesh in model.meshes
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        const Range& range = ranges[i];
+        std::string where = "mesh " + std::to_string(i);
+        const std::array<uint64_t, 4> key{range.vertexOffset, range.vertexCount, range.indexOffset,
+                                          range.indexCount};
+        if (auto found = decoded.find(key); found != decoded.end()) {
+            model.repeats.push_back({found->second, range.material});
+            continue;
+        }
+        MeshData mesh;
+        mesh.material = range.material;
+        mesh.vertices.resize(size_t(range.vertexCount));
+        for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+            const uint8_t* bytes = &vertices[size_t(range.vertexOffset) + v * kVertexBytes];
+            float f[14];
+            for (int k = 0; k < 14; ++k) {
+                f[k] = bigEndianFloat(bytes + 4 * k);
+                if (!std::isfinite(f[k]) || std::abs(f[k]) > kMaxModelCoordinate)
+                    r.fail(where + "'s vertex " + std::to_string(v) +
+                           " has a value that is not finite or beyond 1e15");
+            }
+            Vertex& vertex = mesh.vertices[v];
+            vertex.position = {f[0], f[1], f[2]};
+            vertex.normal = {f[3], f[4], f[5]};
+            vertex.tangent = {f[6], f[7], f[8]};
+            vertex.bitangent = {f[9], f[10], f[11]};
+            vertex.uv = {f[12], f[13]};  // the book's generator already made v top-down (1 - v)
+        }
+        mesh.indices.resize(size_t(range.indexCount));
+        for (size_t k = 0; k < mesh.indices.size(); ++k) {
+            uint32_t index = bigEndianInt(&indices[size_t(range.indexOffset) + k * kIndexBytes]);
+            if (index >= range.vertexCount)
+                r.fail(where + "'s index " + std::to_string(k) + " is " + std::to_string(index) +
+                       ", past its " + std::to_string(range.vertexCount) + " vertices");
+            mesh.indices[k] = index;
+        }
+        if (mesh.indices.empty()) continue;  // nothing to draw, and no part of the bounds
+        for (const Vertex& vertex : mesh.vertices) {
+            model.boundsMin = glm::min(model.boundsMin, vertex.position);
+            model.boundsMax = glm::max(model.boundsMax, vertex.position);
+        }
+        decoded[key] = uint32_t(model.meshes.size());
+        model.meshes.push_back(std::move(mesh));
+    }
+    if (model.meshes.empty()) r.fail("no mesh has a triangle");
+    return model;
+}
+//< book-model
+
+}  // namespace common
