@@ -20,7 +20,7 @@ command -v gnuplot >/dev/null || { echo "accuracy.sh: gnuplot is missing (apt-ge
 size=(--width 1280 --height 720)
 
 scenes=(default far-from-origin grazing-light light-touching-surface mirror-sphere intense-light)
-scene_file() { [ "$1" = default ] && echo "$build/bin/scenes/default/scene.json" || echo "$build/tests/scenes/$1.json"; }
+scene_file() { [ "$1" = default ] && echo "$build/bin/scenes/default/scene.json" || echo "$build/tests/data/scenes/$1.json"; }
 
 device=""
 rows=""

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Live shader reload latency: for each chapter, RUNS times, a running chapter (headless, the size
-# given) has its light (or triangle) shader edited under it by tests/live_reload.sh, and the
+# given) has its light (or triangle) shader edited under it by tests/chapters/live_reload.sh, and the
 # chapter reports how long after the edit (the file's modification time) the first frame using
 # the new shader began: the poll (at most 50 ms), the compile, the new pipelines, one frame.
 #   bench/reload_latency.sh [BUILD[,BUILD...]] [RUNS] [chapter options...]
@@ -21,7 +21,7 @@ for case in chapter-06:chapter-06/triangle.frag chapter-10:chapter-10/lighting.f
     declare -A latencies=() compiles=() pipelines=()
     for _ in $(seq "$runs"); do
         for build in "${builds[@]}"; do
-            line=$("$root/tests/live_reload.sh" edit "$root/shaders" "$shader" "$build/tests/bin/image_compare" \
+            line=$("$root/tests/chapters/live_reload.sh" edit "$root/shaders" "$shader" "$build/tests/bin/image_compare" \
                    "$build/bin/$program" --headless "${options[@]}" 2> /dev/null | grep '^shaders: reloaded' | tail -1)
             compiles[$build]+=" $(sed -E 's/.*compiled in ([0-9]+) ms.*/\1/' <<< "$line")"
             latencies[$build]+=" $(sed -E 's/.*first frame with it ([0-9]+) ms.*/\1/' <<< "$line")"

@@ -130,15 +130,7 @@ void createPipelines(const common::Device& device, VkPipelineCache cache, SceneP
          .offset = sizeof(glm::mat4),
          .size = sizeof(uint32_t)},  // material
     }};
-    VkPipelineLayoutCreateInfo layoutInfo{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-        .setLayoutCount = uint32_t(layouts.size()),
-        .pSetLayouts = layouts.data(),
-        .pushConstantRangeCount = uint32_t(pushConstants.size()),
-        .pPushConstantRanges = pushConstants.data(),
-    };
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
-    common::nameObject(device.handle, pass.pipelineLayout, "scene");
+    pass.pipelineLayout = common::createPipelineLayout(device, layouts, pushConstants, "scene");
 
     // The material classes the scene has: a cut-out is a material whose alpha is tested; one
     // without a texture samples none. Generic: one class, both on, right for every material.

@@ -77,13 +77,8 @@ ComputeLightPass createComputeLightPass(const common::Device& device, VkPipeline
                                           lightPass.sceneLayout, pass.outputLayout,
                                           tileLists};  // set 4: --light-culling tiled
     VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
-    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = pass.tiled ? 5u : 4u,
-                                          .pSetLayouts = setLayouts,
-                                          .pushConstantRangeCount = 1,
-                                          .pPushConstantRanges = &pushRange};
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
-    common::nameObject(device.handle, pass.pipelineLayout, "compute light");
+    pass.pipelineLayout = common::createPipelineLayout(device, {setLayouts, pass.tiled ? 5u : 4u},
+                                                       {&pushRange, 1}, "compute light");
     pass.shader = shader;
     pass.kinds = lightPass.kinds;
     pass.pipeline = makePipeline(device, cache, pass);

@@ -219,13 +219,7 @@ void createLightCullingPipelines(const common::Device& device, VkPipelineCache c
     VkDescriptorSetLayout setLayouts[] = {lightPass.attachmentsLayout, lightPass.lightsLayout,
                                           lightPass.sceneLayout, c.setLayout};
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(LightView)};
-    VkPipelineLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                    .setLayoutCount = 4,
-                                    .pSetLayouts = setLayouts,
-                                    .pushConstantRangeCount = 1,
-                                    .pPushConstantRanges = &push};
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &c.pipelineLayout));
-    common::nameObject(device.handle, c.pipelineLayout, "cull");
+    c.pipelineLayout = common::createPipelineLayout(device, setLayouts, {&push, 1}, "cull");
     c.boundsShader = boundsShader;
     c.bounds = createComputePipeline(device, cache, c.pipelineLayout, boundsShader);
     c.count = createCullPipeline(device, cache, c.pipelineLayout, false, false);

@@ -125,12 +125,14 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
     // stand-in (every binding must be written).
     uint32_t momentsSize = variance(study) ? settings.mapSize : 1u;
     uint32_t momentsLayers = variance(study) ? settings.count : 1u;
-    study.moments = createLayeredImage(device, momentsSize, momentsLayers, kMomentsFormat,
-                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                       VK_IMAGE_ASPECT_COLOR_BIT, "shadow study: moments");
-    study.depth = createLayeredImage(device, settings.mapSize, settings.count, study.depthFormat,
-                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     VK_IMAGE_ASPECT_DEPTH_BIT, "shadow study: depth");
+    study.moments =
+        common::createLayeredImage(device, {momentsSize, momentsSize}, momentsLayers, kMomentsFormat,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                   VK_IMAGE_ASPECT_COLOR_BIT, "shadow study: moments");
+    study.depth = common::createLayeredImage(
+        device, {settings.mapSize, settings.mapSize}, settings.count, study.depthFormat,
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+        "shadow study: depth");
     if (options.layers == ShadowLayers::PassPerCascade)
         for (uint32_t layer = 0; layer < settings.count; ++layer) {
             study.depthLayers.push_back(
@@ -312,7 +314,7 @@ void destroyShadowStudy(const common::Device& device, ShadowStudy& study) {
     vkDestroyDescriptorSetLayout(device.handle, study.cascadesLayout, nullptr);
     for (VkImageView view : study.depthLayers) vkDestroyImageView(device.handle, view, nullptr);
     for (VkImageView view : study.momentLayers) vkDestroyImageView(device.handle, view, nullptr);
-    destroyLayeredImage(device, study.depth);
-    destroyLayeredImage(device, study.moments);
+    common::destroyImage(device, study.depth);
+    common::destroyImage(device, study.moments);
     study = {};
 }

@@ -49,8 +49,8 @@ std::string shadowLightShader(const ShadowStudyOptions& options, bool hardware);
 struct ShadowStudy {
     ShadowStudyOptions options;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
-    LayeredImage moments;  // the variance map's moments (R32G32_SFLOAT); 1x1, unused, for PCF
-    LayeredImage depth;    // sampled by PCF
+    common::Image moments;  // the variance map's moments (R32G32_SFLOAT); 1x1, unused, for PCF
+    common::Image depth;    // sampled by PCF
     std::vector<VkImageView> momentLayers, depthLayers;     // --shadow-layers passes: a view per layer
     VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0 of the shadow pipelines
     VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set 3

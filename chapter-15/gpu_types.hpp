@@ -1,6 +1,6 @@
 // chapter-15: the structs C++ writes and the shaders read, the twins of
 // shaders/include/gpu_types.glsl. The static_asserts pin the layout this side; the layout test
-// (tests/layout_test.cpp) checks on the GPU that the shader reads every field where C++ put it.
+// (tests/chapters/layout_test.cpp) checks on the GPU that the shader reads every field where C++ put it.
 #pragma once
 
 #include <cstddef>

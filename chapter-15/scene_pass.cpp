@@ -183,15 +183,7 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
         {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(DrawConstants)},
         {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = kDrawMaterialOffset, .size = sizeof(uint32_t)},
     }};
-    VkPipelineLayoutCreateInfo layoutInfo{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-        .setLayoutCount = uint32_t(layouts.size()),
-        .pSetLayouts = layouts.data(),
-        .pushConstantRangeCount = uint32_t(pushConstants.size()),
-        .pPushConstantRanges = pushConstants.data(),
-    };
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pipelines.layout));
-    common::nameObject(device.handle, pipelines.layout, "scene");
+    pipelines.layout = common::createPipelineLayout(device, layouts, pushConstants, "scene");
 
     pipelines.target = target;
     //> material-classes

@@ -10,8 +10,11 @@
 //     ambient light, into an R32G32B32A32_SFLOAT image;
 //   post pass (common/passes/post_pass.cpp): into the presentation image, FXAA optional;
 //   GUI pass (common/passes/gui_pass.cpp, --gui): the Dear ImGui overlay over it, as the book's GuiRender.
-// run() at the end of this file is the chapter in four steps: set up, the frame loop, the report,
-// tear down.
+// What this chapter adds to chapter-15's main.cpp comes first, after the chapter's state: each
+// frame's cascades (frameCascades, updateFrame: the book's CascadeShadows update) and the shadow
+// pass recorded before the scene pass (recordFrame: the book's Render.render). Then the overlay,
+// the book's scene, the passes, set-up and the frame loop; run() at the end of this file is the
+// chapter in four steps: set up, the frame loop, the report, tear down.
 #include <vulkan/vulkan.h>
 
 #include <cmath>
@@ -76,6 +79,106 @@ const common::ChapterInfo kChapter{
       "(testing, benchmarks) move the camera forward every frame: walk 2 cm, creep 0.1 mm"}},
 };
 
+//> chapter-state
+// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
+// reverse), and what the frames change.
+struct Chapter {
+    common::Scene scene;
+    common::Target target;
+    common::Instance instance;
+    common::Device device;
+    std::vector<common::FrameSync> frames;
+    common::GpuScene gpuScene;
+    common::PipelineCache pipelineCache;
+    ScenePass scenePass;
+    ShadowPass shadowPass;
+    LightPass lightPass;
+    common::PostPass postPass;
+    common::Gui gui;  // --gui: Dear ImGui's context and input (common/app/gui.cpp) and its pass
+    common::GuiPass guiPass;
+    common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
+    // What the frames change.
+    common::Camera camera;
+    common::CameraInput cameraInput;
+    common::LightControls lightControls;
+    LightView lightView;
+    bool fxaa = false;
+    bool genericPipelines = false;         // --pipelines generic
+    CascadeSettings cascadeSettings;       // --cascades, --shadow-map-size
+    bool fitFar = true;                    // --shadow-far scene
+    float cameraStep = 0.0f;               // --camera-motion: metres forward per frame
+    std::vector<Cascade> cascades;         // this frame's
+    double passesMs = 0.0;                 // how long createPasses took at start-up (pipelines, mostly)
+    std::vector<uint64_t> firstFrameCost;  // fragments bound: the view, then each cascade
+};
+//< chapter-state
+
+// The cascades for a frame's camera and sun, over the view from near to where the scene ends
+// (--shadow-far scene) or to the far plane; none without a directional light.
+std::vector<Cascade> frameCascades(Chapter& c, const glm::mat4& view) {
+    if (c.lightControls.sun < 0) return {};
+    float far = c.scene.camera.far;
+    if (c.fitFar) far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
+    c.cascadeSettings.castersMin = c.gpuScene.boundsMin;  // the casters: the scene, marker included
+    c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
+    CascadeCamera camera{.view = view,
+                         .fovY = glm::radians(c.scene.camera.fov),
+                         .aspect = float(c.target.extent.width) / float(c.target.extent.height),
+                         .near = c.scene.camera.near,
+                         .far = far};
+    return computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
+}
+
+//> update-frame
+// This frame's uniforms: the camera, the cascades, the lights (they may have moved), the scene info.
+void updateFrame(Chapter& c, uint32_t slot) {
+    glm::mat4 view = common::viewMatrix(c.camera);
+    glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
+                                                    c.scene.camera.far);
+    setCamera(c.scenePass, slot, projection, view);
+    // The cascades for this frame's camera and sun, over the view from near to where the scene
+    // ends (--shadow-far scene) or to the far plane. Without a directional light there are none:
+    // every pixel's visibility is 1.
+    c.cascades = frameCascades(c, view);
+    // Which cascades the shadow pass draws: those whose view changed, or all when geometry moved.
+    updateCascades(c.shadowPass, slot, c.cascades, view, c.lightControls.markerMoves);
+    updateLights(c.lightPass, slot, shaderLights(c.scene),
+                 {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
+}
+//< update-frame
+
+//> record-frame
+// The frame's passes into one command buffer, each labelled for graphics debuggers and timed for
+// --benchmark.
+void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
+                 ImDrawData* overlay) {
+    VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
+    VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
+    common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
+    common::beginPass(c.run, sync.commandBuffer, 0);
+    recordShadowPass(sync.commandBuffer, c.shadowPass, c.scenePass, c.gpuScene, slot);
+    common::endPass(c.run, sync.commandBuffer, slot, 0);
+    common::beginPass(c.run, sync.commandBuffer, 1);
+    recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
+    common::endPass(c.run, sync.commandBuffer, slot, 1);
+    common::beginPass(c.run, sync.commandBuffer, 2);
+    VkDescriptorSet shadows = c.shadowPass.readSets[slot];
+    recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView, {&shadows, 1});
+    common::endPass(c.run, sync.commandBuffer, slot, 2);
+    common::beginPass(c.run, sync.commandBuffer, 3);
+    common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
+    common::endPass(c.run, sync.commandBuffer, slot, 3);
+    if (c.gui.enabled) {
+        common::beginPass(c.run, sync.commandBuffer, 4);
+        common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
+        common::endPass(c.run, sync.commandBuffer, slot, 4);
+    }
+    VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+}
+//< record-frame
+
 // The shadow controls of the overlay: the book's cascade debug view (a switch in its settings
 // file), where the last cascade ends, whether cascades are drawn only when they changed; and per
 // cascade, the slice it covers, its texel in the world and how often it was drawn.
@@ -124,8 +227,9 @@ void overlayWidgets(common::Gui& gui, const common::RunControl& run, int* view, 
 // --book-scene: the book's chapter 16 changes chapter 15's scene (its Main.java): the camera at
 // (-5, 5, 0), turned 90 degrees about y (looking along +x) and 20 down; zNear 0.5 and zFar 50; the
 // sun straight down at intensity 8; no point light, and no marker for it; and a tree at the
-// origin, scaled 0.005, which the book ships in its own converted format only
-// (booksamples/chapter-16/resources/models/tree/tree.json, common/model/book_model.hpp).
+// origin, scaled 0.005, which Main.java loads in the book's converted format
+// (booksamples/chapter-16/resources/models/tree/tree.json, common/model/book_model.hpp); the clone
+// keeps the tree.obj it was converted from beside it, read where the converted files are missing.
 void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bookScene) {
     scene.camera.position = {-5.0f, 5.0f, 0.0f};
     scene.camera.yaw = 90.0f;
@@ -144,9 +248,12 @@ void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bo
         std::filesystem::is_directory(given, ec)
             ? given / "booksamples"
             : given.parent_path().parent_path().parent_path().parent_path().parent_path();
-    std::filesystem::path tree = samples / "chapter-16" / "resources" / "models" / "tree" / "tree.json";
+    std::filesystem::path treeDir = samples / "chapter-16" / "resources" / "models" / "tree";
+    std::filesystem::path tree = treeDir / "tree.json";
+    if (!std::filesystem::is_regular_file(tree, ec)) tree = treeDir / "tree.obj";
     if (!std::filesystem::is_regular_file(tree, ec)) {
-        common::warn("the book's tree is not at " + common::utf8(tree) + ": the scene without it");
+        common::warn("the book's tree is not at " + common::utf8(treeDir / "tree.json") + " (nor tree.obj)" +
+                     ": the scene without it");
         return;
     }
     common::ModelInstance treeInstance{.file = tree};
@@ -155,45 +262,12 @@ void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bo
 }
 //< book-scene
 
-//> chapter-state
-// Everything the chapter makes, in the order setUp() makes it (tearDown() destroys it in
-// reverse), and what the frames change.
-struct Chapter {
-    common::Scene scene;
-    common::Target target;
-    common::Instance instance;
-    common::Device device;
-    std::vector<common::FrameSync> frames;
-    common::GpuScene gpuScene;
-    common::PipelineCache pipelineCache;
-    ScenePass scenePass;
-    ShadowPass shadowPass;
-    LightPass lightPass;
-    common::PostPass postPass;
-    common::Gui gui;  // --gui: Dear ImGui's context and input (common/app/gui.cpp) and its pass
-    common::GuiPass guiPass;
-    common::RunControl run;  // --frames, --resize, --benchmark (each pass timed), --screenshot
-    // What the frames change.
-    common::Camera camera;
-    common::CameraInput cameraInput;
-    common::LightControls lightControls;
-    LightView lightView;
-    bool fxaa = false;
-    bool genericPipelines = false;         // --pipelines generic
-    CascadeSettings cascadeSettings;       // --cascades, --shadow-map-size
-    bool fitFar = true;                    // --shadow-far scene
-    float cameraStep = 0.0f;               // --camera-motion: metres forward per frame
-    std::vector<Cascade> cascades;         // this frame's
-    double passesMs = 0.0;                 // how long createPasses took at start-up (pipelines, mostly)
-    std::vector<uint64_t> firstFrameCost;  // fragments bound: the view, then each cascade
-};
-//< chapter-state
-
 //> passes
 // The passes, in the order a frame records them.
 void createPasses(Chapter& c, uint32_t framesInFlight) {
     // Pipelines made for this scene: one per material class its materials have, and the light
-    // pass's for its lights of each kind (unless --pipelines generic).
+    // pass's for its lights of each kind (unless --pipelines generic). The scene shaders are
+    // chapter-15's, compiled into chapter-16's folder (CMakeLists.txt).
     c.scenePass =
         createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight,
                         kBookGBuffer, {"chapter-16/scene.vert", "chapter-16/scene.frag"}, c.genericPipelines);
@@ -244,22 +318,6 @@ void reloadShaders(Chapter& c, const common::ShaderReload& reload, uint32_t fram
     common::finishShaderReload();
 }
 //< passes
-
-// The cascades for a frame's camera and sun, over the view from near to where the scene ends
-// (--shadow-far scene) or to the far plane; none without a directional light.
-std::vector<Cascade> frameCascades(Chapter& c, const glm::mat4& view) {
-    if (c.lightControls.sun < 0) return {};
-    float far = c.scene.camera.far;
-    if (c.fitFar) far = fittedFar(view, c.gpuScene.boundsMin, c.gpuScene.boundsMax, c.scene.camera.near, far);
-    c.cascadeSettings.castersMin = c.gpuScene.boundsMin;  // the casters: the scene, marker included
-    c.cascadeSettings.castersMax = c.gpuScene.boundsMax;
-    CascadeCamera camera{.view = view,
-                         .fovY = glm::radians(c.scene.camera.fov),
-                         .aspect = float(c.target.extent.width) / float(c.target.extent.height),
-                         .near = c.scene.camera.near,
-                         .far = far};
-    return computeCascades(camera, c.scene.lights[size_t(c.lightControls.sun)].direction, c.cascadeSettings);
-}
 
 //> setup
 void setUp(Chapter& c, const common::Options& options) {
@@ -366,56 +424,6 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
         c.lightView.view = (c.lightView.view + 1) % int(kChapter.views.size());
     if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
 }
-
-//> update-frame
-// This frame's uniforms: the camera, the cascades, the lights (they may have moved), the scene info.
-void updateFrame(Chapter& c, uint32_t slot) {
-    glm::mat4 view = common::viewMatrix(c.camera);
-    glm::mat4 projection = common::projectionMatrix(c.scene.camera.fov, c.target.extent, c.scene.camera.near,
-                                                    c.scene.camera.far);
-    setCamera(c.scenePass, slot, projection, view);
-    // The cascades for this frame's camera and sun, over the view from near to where the scene
-    // ends (--shadow-far scene) or to the far plane. Without a directional light there are none:
-    // every pixel's visibility is 1.
-    c.cascades = frameCascades(c, view);
-    // Which cascades the shadow pass draws: those whose view changed, or all when geometry moved.
-    updateCascades(c.shadowPass, slot, c.cascades, view, c.lightControls.markerMoves);
-    updateLights(c.lightPass, slot, shaderLights(c.scene),
-                 {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
-}
-//< update-frame
-
-//> record-frame
-// The frame's passes into one command buffer, each labelled for graphics debuggers and timed for
-// --benchmark.
-void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t frame, uint32_t imageIndex,
-                 ImDrawData* overlay) {
-    VK_CHECK(vkResetCommandPool(c.device.handle, sync.commandPool, 0));
-    VkCommandBufferBeginInfo beginInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
-    common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
-    common::beginPass(c.run, sync.commandBuffer, 0);
-    recordShadowPass(sync.commandBuffer, c.shadowPass, c.scenePass, c.gpuScene, slot);
-    common::endPass(c.run, sync.commandBuffer, slot, 0);
-    common::beginPass(c.run, sync.commandBuffer, 1);
-    recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
-    common::endPass(c.run, sync.commandBuffer, slot, 1);
-    common::beginPass(c.run, sync.commandBuffer, 2);
-    VkDescriptorSet shadows = c.shadowPass.readSets[slot];
-    recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView, {&shadows, 1});
-    common::endPass(c.run, sync.commandBuffer, slot, 2);
-    common::beginPass(c.run, sync.commandBuffer, 3);
-    common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
-    common::endPass(c.run, sync.commandBuffer, slot, 3);
-    if (c.gui.enabled) {
-        common::beginPass(c.run, sync.commandBuffer, 4);
-        common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
-        common::endPass(c.run, sync.commandBuffer, slot, 4);
-    }
-    VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
-}
-//< record-frame
 
 //> frame-loop
 void frameLoop(Chapter& c, const common::Options& options) {

@@ -14,58 +14,6 @@
 #include "common/vk/descriptors.hpp"
 #include "common/vk/texture.hpp"
 
-//> layered-image
-// A 2D image with one layer per cascade (arrayLayers) and a view of type 2D_ARRAY over all of them:
-// the shadow pass renders into every layer at once, the light pass samples it as sampler2DArray.
-LayeredImage createLayeredImage(const common::Device& device, uint32_t size, uint32_t layers, VkFormat format,
-                                VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* name) {
-    LayeredImage image;
-    VkImageCreateInfo imageInfo{
-        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-        .imageType = VK_IMAGE_TYPE_2D,
-        .format = format,
-        .extent = {size, size, 1},
-        .mipLevels = 1,
-        .arrayLayers = layers,
-        .samples = VK_SAMPLE_COUNT_1_BIT,
-        .tiling = VK_IMAGE_TILING_OPTIMAL,
-        .usage = usage,
-        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
-    };
-    VK_CHECK(vkCreateImage(device.handle, &imageInfo, nullptr, &image.handle));
-    VkMemoryRequirements requirements;
-    vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
-    VkMemoryAllocateInfo allocInfo{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex =
-            common::findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-    };
-    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
-    VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
-    VkImageViewCreateInfo viewInfo{
-        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
-        .image = image.handle,
-        .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY,
-        .format = format,
-        .subresourceRange = {aspect, 0, 1, 0, layers},
-    };
-    VK_CHECK(vkCreateImageView(device.handle, &viewInfo, nullptr, &image.view));
-    common::nameObject(device.handle, image.handle, name);
-    common::nameObject(device.handle, image.memory, name);
-    common::nameObject(device.handle, image.view, name);
-    return image;
-}
-//< layered-image
-
-void destroyLayeredImage(const common::Device& device, LayeredImage& image) {
-    vkDestroyImageView(device.handle, image.view, nullptr);
-    vkDestroyImage(device.handle, image.handle, nullptr);
-    vkFreeMemory(device.handle, image.memory, nullptr);
-    image = {};
-}
-
 //> shadow-pipeline
 // The scene's triangles through a geometry shader into every cascade's layer. Written out here,
 // as chapter-06 writes out its pipeline, for what this chapter adds: the geometry stage and depth
@@ -164,14 +112,7 @@ VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDesc
         {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
         {VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t)},
     }};
-    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = uint32_t(layouts.size()),
-                                          .pSetLayouts = layouts.data(),
-                                          .pushConstantRangeCount = uint32_t(pushConstants.size()),
-                                          .pPushConstantRanges = pushConstants.data()};
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &layout));
-    return layout;
+    return common::createPipelineLayout(device, layouts, pushConstants, "shadow");
 }
 
 CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
@@ -203,12 +144,16 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     // The scene pass's depth format (D32_SFLOAT, as the book's; X8_D24 on a device without it): the
     // depth only orders the casters, the moments keep their depth in 32-bit floats.
     pass.depthFormat = scenePass.formats.depth;
-    pass.moments = createLayeredImage(device, settings.mapSize, settings.count, kMomentsFormat,
-                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                      VK_IMAGE_ASPECT_COLOR_BIT, "shadow moments");
-    pass.depth = createLayeredImage(device, settings.mapSize, settings.count, pass.depthFormat,
-                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
-                                    "shadow depth");
+    // A layer per cascade and a 2D_ARRAY view over them (common/vk/image.cpp, createLayeredImage):
+    // the pass renders into every layer at once, the light pass samples them as a sampler2DArray.
+    VkExtent2D mapExtent{settings.mapSize, settings.mapSize};
+    pass.moments =
+        common::createLayeredImage(device, mapExtent, settings.count, kMomentsFormat,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                   VK_IMAGE_ASPECT_COLOR_BIT, "shadow moments");
+    pass.depth = common::createLayeredImage(device, mapExtent, settings.count, pass.depthFormat,
+                                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                            VK_IMAGE_ASPECT_DEPTH_BIT, "shadow depth");
 
     pass.cascadesLayout = common::createDescriptorSetLayout(
         device, {common::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_GEOMETRY_BIT)},
@@ -223,7 +168,7 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * framesInFlight},
                                       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight}},
                                      "shadow");
-    // The moments are read as they are, one texel per sample (the book filters nothing).
+    // The moments are read as they are, one texel per sample (the book blurs nothing either).
     pass.sampler =
         common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
     VkMemoryPropertyFlags hostVisible =
@@ -244,7 +189,6 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     }
 
     pass.pipelineLayout = createShadowPipelineLayout(device, pass.cascadesLayout, scenePass);
-    common::nameObject(device.handle, pass.pipelineLayout, "shadow");
     pass.opaque = makeShadowPipeline(device, cache, pass, false);
     pass.cutout = makeShadowPipeline(device, cache, pass, true);
     return pass;
@@ -392,7 +336,7 @@ void destroyShadowPass(const common::Device& device, ShadowPass& pass) {
     for (common::Buffer& buffer : pass.cascades) common::destroyBuffer(device, buffer);
     vkDestroyDescriptorSetLayout(device.handle, pass.readLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.cascadesLayout, nullptr);
-    destroyLayeredImage(device, pass.depth);
-    destroyLayeredImage(device, pass.moments);
+    common::destroyImage(device, pass.depth);
+    common::destroyImage(device, pass.moments);
     pass = {};
 }

@@ -1,7 +1,7 @@
 // chapter-16: the shadow pass -- the scene's depth, seen from the directional light, into one layer
 // per cascade of a layered image, in one pass: a geometry shader sends each triangle to every
 // cascade (gl_Layer). As the book's ShadowRender, a variance shadow map: each texel holds the
-// depth's first two moments (R32G32_SFLOAT), beside a D32_SFLOAT depth buffer.
+// depth's first two moments (R32G32_SFLOAT), beside a depth buffer of the scene pass's format.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -17,6 +17,7 @@
 #include "common/shaders/shader_watch.hpp"
 #include "common/vk/buffer.hpp"
 #include "common/vk/device.hpp"
+#include "common/vk/image.hpp"
 #include "common/vk/pipeline.hpp"
 
 inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
@@ -33,18 +34,6 @@ struct CascadeUniform {
     uint32_t redraw;  // bit i: cascade i is drawn this frame (the others keep their layer)
     int32_t padding[2];
 };
-
-// A layered image: one layer per cascade, a 2D_ARRAY view over all of them.
-struct LayeredImage {
-    VkImage handle = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-};
-
-// A size x size image of `layers` layers for `usage`, and a 2D_ARRAY view of `aspect` over them.
-LayeredImage createLayeredImage(const common::Device& device, uint32_t size, uint32_t layers, VkFormat format,
-                                VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* name);
-void destroyLayeredImage(const common::Device& device, LayeredImage& image);
 
 // The shaders of a shadow pipeline, chapter-16's by default: the model matrix, then the geometry
 // shader sending each triangle to every cascade's layer, then the moments. (chapter-15-lab's
@@ -77,8 +66,8 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
 
 struct ShadowPass {
     CascadeSettings settings;
-    LayeredImage moments;  // R32G32_SFLOAT: depth, depth^2
-    LayeredImage depth;    // D32_SFLOAT (the scene pass's format)
+    common::Image moments;  // R32G32_SFLOAT: depth, depth^2; a layer per cascade
+    common::Image depth;    // the scene pass's depth format (D32_SFLOAT, or X8_D24)
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0: the cascades (geometry stage)
     VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set: moments + cascades

@@ -3,7 +3,7 @@
 // The Vulkan loader dlclose()s the driver (lavapipe) and the layers at vkDestroyInstance, before
 // LeakSanitizer looks for leaks at exit. Anything those libraries leaked would then be reported
 // with "<unknown module>" frames: impossible to attribute, so impossible to suppress by library
-// in tests/sanitizer/lsan.supp. This definition interposes the C library's dlclose for the whole
+// in tests/reliability/sanitizer/lsan.supp. This definition interposes the C library's dlclose for the whole
 // process (the loader's reference binds to the executable's symbol first) and leaves every
 // library loaded until exit, which is all a short-lived program loses by it.
 extern "C" int dlclose(void*) {

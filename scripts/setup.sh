@@ -26,8 +26,8 @@ packages=(
     libimgui-dev libcli11-dev
     libshaderc-dev glslang-dev libspirv-cross-c-shared-dev   # shaders compiled at run time, live reload
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
-    clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/fuzz/), symbolized reports
-    gdb python3                                 # tests: a run killed mid-save (tests/cache_crash.sh), docs checks
+    clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/reliability/fuzz/), symbolized reports
+    gdb python3                                 # tests: a run killed mid-save (tests/reliability/cache_crash.sh), docs checks
     libembree-dev                               # tests: the shadow study's reference (rays through a BVH)
     libgl1 libegl1 libopengl0                   # scripts/gpu_package.sh: GLVND, which NVIDIA's driver loads
 )

@@ -102,7 +102,7 @@ case "$command" in
         # Wine process stays up between them, so each may start a wineserver as the last one's is
         # exiting, and lose it ("wine client error: recvmsg: Connection reset by peer"). One
         # persistent wineserver for the whole build (ended after it; the tests keep theirs up with
-        # a display, tests/wine_display.sh) leaves nothing to race with.
+        # a display, tests/desktops/wine_display.sh) leaves nothing to race with.
         prefix=$root/build-windows/wine-prefix
         VKBOOK_WINEPREFIX=$prefix "$root/cmake/toolchains/wine-run.sh" cmd.exe /c exit  # makes the prefix
         WINEPREFIX=$prefix wineserver -w

@@ -13,7 +13,7 @@ if [ -z "${VKBOOK_WINEPREFIX:-}" ]; then
     VKBOOK_WINEPREFIX=$dir/wine-prefix
 fi
 WINEPREFIX=$VKBOOK_WINEPREFIX
-# The X display the Windows tests share (tests/wine_display.sh starts it): Wine's Vulkan needs
+# The X display the Windows tests share (tests/desktops/wine_display.sh starts it): Wine's Vulkan needs
 # one even to render headless, and one display for all keeps Wine's desktop process on a server
 # that outlives every test.
 if [ -f "$WINEPREFIX.display" ]; then

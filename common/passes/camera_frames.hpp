@@ -18,7 +18,7 @@ namespace common {
 
 // The camera as the scene passes of chapters 14 and 15 read it: set 0, binding 0, the twin of
 // `uniform CameraUniform` in shaders/chapter-14/scene.vert and shaders/chapter-15/scene.vert
-// (std140: two column-major mat4, 128 bytes; tests/layout_test.cpp checks it on the GPU).
+// (std140: two column-major mat4, 128 bytes; tests/chapters/layout_test.cpp checks it on the GPU).
 struct CameraUniform {
     glm::mat4 projection;
     glm::mat4 view;

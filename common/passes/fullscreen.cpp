@@ -52,15 +52,7 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
     FullscreenPipeline result;
     VkPushConstantRange range{
         .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = 0, .size = pushConstantSize};
-    VkPipelineLayoutCreateInfo layoutInfo{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-        .setLayoutCount = uint32_t(setLayouts.size()),
-        .pSetLayouts = setLayouts.data(),
-        .pushConstantRangeCount = pushConstantSize ? 1u : 0u,
-        .pPushConstantRanges = &range,
-    };
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &result.layout));
-    nameObject(device.handle, result.layout, fragment);
+    result.layout = createPipelineLayout(device, setLayouts, {&range, pushConstantSize ? 1u : 0u}, fragment);
 
     result.fragment = fragment;
     result.outputFormat = outputFormat;

@@ -140,13 +140,7 @@ GuiPass createGuiPass(const common::Device& device, VkPipelineCache cache, VkFor
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(GuiTransform)};
-    VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = 1,
-                                          .pSetLayouts = &pass.setLayout,
-                                          .pushConstantRangeCount = 1,
-                                          .pPushConstantRanges = &push};
-    VK_CHECK(vkCreatePipelineLayout(device.handle, &layoutInfo, nullptr, &pass.pipelineLayout));
-    nameObject(device.handle, pass.pipelineLayout, "gui");
+    pass.pipelineLayout = createPipelineLayout(device, {&pass.setLayout, 1}, {&push, 1}, "gui");
     pass.pipeline = createGuiPipeline(device, cache, pass.pipelineLayout, format);
     pass.format = format;
     pass.frames.resize(framesInFlight);

@@ -83,7 +83,7 @@ struct Scene {
 
 // What a scene file may hold. Every model is a draw call recorded each frame, every light is shaded
 // at every pixel unless culled (chapter-15 --light-culling tiled): 100,000 of each still renders
-// (tests/hostile.cmake), and the
+// (tests/reliability/hostile.cmake), and the
 // lights buffer (32 bytes a light) stays far below the smallest maxStorageBufferRange (128 MiB).
 inline constexpr size_t kMaxSceneModels = 100000;
 inline constexpr size_t kMaxSceneLights = 100000;

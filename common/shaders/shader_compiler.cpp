@@ -189,7 +189,7 @@ ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
     std::optional<fs::file_time_type> time = modificationTime(source.glsl);  // before reading
     std::string text = readInputFile(source.glsl);
     compilation.files.push_back({source.glsl, time});
-    // A test's slow compile (tests/live_reload.sh, "during-compile"): an edit saved while a
+    // A test's slow compile (tests/chapters/live_reload.sh, "during-compile"): an edit saved while a
     // compile runs must be compiled next.
     if (const char* delay = std::getenv("VKBOOK_TEST_COMPILE_DELAY_MS"); delay && !preprocessOnly)
         std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(delay)));

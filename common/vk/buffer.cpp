@@ -9,13 +9,6 @@
 
 namespace common {
 
-uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropertyFlags required) {
-    for (uint32_t i = 0; i < device.memory.memoryTypeCount; ++i)
-        if ((typeBits & (1u << i)) && (device.memory.memoryTypes[i].propertyFlags & required) == required)
-            return i;
-    throw Failure("no Vulkan memory type has the properties this resource needs");
-}
-
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
                     VkMemoryPropertyFlags memoryFlags, const std::string& name) {
     Buffer buffer;
@@ -31,15 +24,7 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device.handle, buffer.handle, &requirements);
-    // SHORTCUT: one allocation per buffer, as the book does. A real engine sub-allocates large
-    // blocks (e.g. with the Vulkan Memory Allocator); maxMemoryAllocationCount can be as low as 4096.
-    VkMemoryAllocateInfo allocInfo{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, memoryFlags),
-    };
-    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &buffer.memory));
-    nameObject(device.handle, buffer.memory, name);
+    buffer.memory = allocateMemory(device, requirements, memoryFlags, name);
     VK_CHECK(vkBindBufferMemory(device.handle, buffer.handle, buffer.memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device.handle, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/vk/device.hpp"
+#include "common/vk/memory.hpp"
 
 namespace common {
 
@@ -18,9 +19,6 @@ struct Buffer {
     VkDeviceSize size = 0;
     void* mapped = nullptr;  // persistently mapped when the memory is host-visible
 };
-
-// The first memory type allowed by `typeBits` that has all of `required`; throws if none.
-uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropertyFlags required);
 
 // `name`: what graphics debuggers and validation messages call it (common/vk/debug_names.hpp).
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,

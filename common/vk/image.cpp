@@ -8,30 +8,36 @@
 namespace common {
 
 VkImageView createImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect,
-                            uint32_t mipLevels) {
+                            uint32_t mipLevels, VkImageViewType type, uint32_t layers) {
     VkImageViewCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
         .image = image,
-        .viewType = VK_IMAGE_VIEW_TYPE_2D,
+        .viewType = type,
         .format = format,
         .subresourceRange = {.aspectMask = aspect,
                              .baseMipLevel = 0,
                              .levelCount = mipLevels,
                              .baseArrayLayer = 0,
-                             .layerCount = 1},
+                             .layerCount = layers},
     };
     VkImageView view = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device.handle, &info, nullptr, &view));
     return view;
 }
 
-Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels,
-                  VkImageCreateFlags flags, const void* next) {
+namespace {
+
+// createImage and createLayeredImage: the image, its memory, its view. They differ only in the
+// array layers and the view's type.
+Image makeImage(const Device& device, VkExtent2D extent, uint32_t layers, VkImageViewType viewType,
+                VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, const std::string& name,
+                uint32_t mipLevels, VkImageCreateFlags flags, const void* next) {
     Image image;
     image.mipLevels = mipLevels;
+    image.layers = layers;
     image.format = format;
     image.extent = extent;
+    //> layered-image
     VkImageCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
         .pNext = next,
@@ -40,7 +46,7 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
         .format = format,
         .extent = {extent.width, extent.height, 1},
         .mipLevels = mipLevels,
-        .arrayLayers = 1,
+        .arrayLayers = layers,  // chapter-16's shadow map: a layer per cascade
         .samples = VK_SAMPLE_COUNT_1_BIT,
         .tiling = VK_IMAGE_TILING_OPTIMAL,
         .usage = usage,
@@ -51,18 +57,28 @@ Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkIm
     nameObject(device.handle, image.handle, name);
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
-    VkMemoryAllocateInfo allocInfo{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex =
-            findMemoryType(device, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-    };
-    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &image.memory));
-    nameObject(device.handle, image.memory, name);
+    image.memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
-    image.view = createImageView(device, image.handle, format, aspect, mipLevels);
+    // A 2D_ARRAY view over every layer: what a sampler2DArray reads and a layered pass draws into.
+    image.view = createImageView(device, image.handle, format, aspect, mipLevels, viewType, layers);
+    //< layered-image
     nameObject(device.handle, image.view, name);
     return image;
+}
+
+}  // namespace
+
+Image createImage(const Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                  VkImageAspectFlags aspect, const std::string& name, uint32_t mipLevels,
+                  VkImageCreateFlags flags, const void* next) {
+    return makeImage(device, extent, 1, VK_IMAGE_VIEW_TYPE_2D, format, usage, aspect, name, mipLevels, flags,
+                     next);
+}
+
+Image createLayeredImage(const Device& device, VkExtent2D extent, uint32_t layers, VkFormat format,
+                         VkImageUsageFlags usage, VkImageAspectFlags aspect, const std::string& name) {
+    return makeImage(device, extent, layers, VK_IMAGE_VIEW_TYPE_2D_ARRAY, format, usage, aspect, name, 1, 0,
+                     nullptr);
 }
 
 void destroyImage(const Device& device, Image& image) {

@@ -20,7 +20,7 @@ namespace {
 // has no Windows build of the validation layer), but the Linux loader that winevulkan calls into
 // can load the Linux validation layer itself (VK_LOADER_LAYERS_ENABLE=*validation in the
 // environment Wine was started from), and its messages reach our messenger all the same. That is
-// how the Windows build is tested with --validation (tests/windows.cmake).
+// how the Windows build is tested with --validation (tests/desktops/windows.cmake).
 bool runningUnderWine() {
 #if defined(_WIN32)
     HMODULE ntdll = GetModuleHandleW(L"ntdll.dll");

@@ -128,6 +128,22 @@ void destroyPipelineCache(const Device& device, PipelineCache& cache) {
     cache = {};
 }
 
+VkPipelineLayout createPipelineLayout(const Device& device, std::span<const VkDescriptorSetLayout> sets,
+                                      std::span<const VkPushConstantRange> pushConstants,
+                                      const std::string& name) {
+    VkPipelineLayoutCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+        .setLayoutCount = uint32_t(sets.size()),
+        .pSetLayouts = sets.data(),
+        .pushConstantRangeCount = uint32_t(pushConstants.size()),
+        .pPushConstantRanges = pushConstants.data(),
+    };
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &layout));
+    nameObject(device.handle, layout, name);
+    return layout;
+}
+
 VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module,
                                             const VkSpecializationInfo* specialization) {
     return {

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -34,6 +35,12 @@ PipelineCache loadPipelineCache(const Device& device, std::string_view name);
 // Writes the cache atomically (temporary file, then rename); a failure is only a warning.
 void savePipelineCache(const Device& device, const PipelineCache& cache);
 void destroyPipelineCache(const Device& device, PipelineCache& cache);
+
+// A pipeline layout: the descriptor set layouts, set 0 first, and the push-constant ranges, named
+// `name` (chapter-06 and chapter-10 write VkPipelineLayoutCreateInfo out).
+VkPipelineLayout createPipelineLayout(const Device& device, std::span<const VkDescriptorSetLayout> sets,
+                                      std::span<const VkPushConstantRange> pushConstants,
+                                      const std::string& name);
 
 // `specialization`, when given, sets the stage's constant_id constants (it must outlive pipeline creation).
 VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module,

@@ -11,6 +11,7 @@
 
 #include "common/core/check.hpp"
 #include "common/core/files.hpp"
+#include "common/vk/barriers.hpp"
 #include "common/vk/buffer.hpp"
 #include "common/vk/commands.hpp"
 #include "common/vk/formats.hpp"
@@ -51,22 +52,6 @@ bool decodeTexel(VkFormat format, const uint8_t* texel, uint8_t rgb[3]) {
     }
 }
 
-VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
-                                   VkAccessFlags srcAccess, VkAccessFlags dstAccess,
-                                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT) {
-    return {
-        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-        .srcAccessMask = srcAccess,
-        .dstAccessMask = dstAccess,
-        .oldLayout = from,
-        .newLayout = to,
-        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .image = image,
-        .subresourceRange = {aspect, 0, 1, 0, 1},
-    };
-}
-
 }  // namespace
 
 std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D extent, VkImageLayout layout,
@@ -84,8 +69,8 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
                                    VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
                                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     VkImageMemoryBarrier toTransfer =
-        layoutBarrier(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT,
-                      VK_ACCESS_TRANSFER_READ_BIT, aspect);
+        layoutBarrier(image, aspect, 1, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     vkCmdPipelineBarrier(cmd, writers, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
                          &toTransfer);
     VkBufferImageCopy region{
@@ -93,8 +78,8 @@ std::vector<uint8_t> readImage(const Device& device, VkImage image, VkExtent2D e
         .imageExtent = {extent.width, extent.height, 1},
     };
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle, 1, &region);
-    VkImageMemoryBarrier back = layoutBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                                              VK_ACCESS_TRANSFER_READ_BIT, 0, aspect);
+    VkImageMemoryBarrier back = layoutBarrier(image, aspect, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                                              VK_ACCESS_TRANSFER_READ_BIT, 0);
     VkBufferMemoryBarrier toHost{
         .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER,
         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,

@@ -17,25 +17,11 @@
 #include "common/core/check.hpp"
 #include "common/core/checked.hpp"
 #include "common/core/files.hpp"
+#include "common/vk/barriers.hpp"
 #include "common/vk/debug_names.hpp"
 
 namespace common {
 namespace {
-
-VkImageMemoryBarrier textureBarrier(VkImage image, uint32_t mipLevels, VkImageLayout from, VkImageLayout to,
-                                    VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
-    return {
-        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-        .srcAccessMask = srcAccess,
-        .dstAccessMask = dstAccess,
-        .oldLayout = from,
-        .newLayout = to,
-        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .image = image,
-        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mipLevels, 0, 1},
-    };
-}
 
 // One mip level from the one above when both sides are even: each texel the mean of a 2x2 block,
 // colour weighted by alpha where it is coverage (`weighted`: a transparent texel's colour does
@@ -296,14 +282,14 @@ Image uploadMipChain(const Device& device, StagingBatch& batch, const MipChain& 
 
     VkCommandBuffer cmd = batch.commandBuffer;
     VkImageMemoryBarrier toTransfer =
-        textureBarrier(image.handle, mipLevels, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
+        layoutBarrier(image.handle, VK_IMAGE_ASPECT_COLOR_BIT, mipLevels, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toTransfer);
     vkCmdCopyBufferToImage(cmd, staging.handle, image.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, mipLevels,
                            chain.regions.data());
-    VkImageMemoryBarrier toShader = textureBarrier(
-        image.handle, mipLevels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    VkImageMemoryBarrier toShader = layoutBarrier(
+        image.handle, VK_IMAGE_ASPECT_COLOR_BIT, mipLevels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &toShader);

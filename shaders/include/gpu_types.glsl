@@ -1,5 +1,5 @@
 // Structs that C++ writes and chapter-15's shaders read. Their C++ twins are in
-// chapter-15/gpu_types.hpp, next to this file's name; the layout test (tests/layout_test.cpp)
+// chapter-15/gpu_types.hpp, next to this file's name; the layout test (tests/chapters/layout_test.cpp)
 // checks that both sides agree on every size and offset.
 #ifndef GPU_TYPES_GLSL
 #define GPU_TYPES_GLSL

@@ -1,6 +1,6 @@
 #version 450
 // The layout test: reads the structs of gpu_types.glsl from buffers C++ filled and writes every
-// field, in declaration order, as a float. tests/layout_test.cpp compares them with the values it
+// field, in declaration order, as a float. tests/chapters/layout_test.cpp compares them with the values it
 // wrote through the C++ twins (chapter-15/gpu_types.hpp, chapter-15-lab/light_culling.hpp).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require

@@ -1,7 +1,7 @@
 #version 450
 // The numeric test of the shading math: the functions of pbr.glsl -- the very file chapter-15's
 // light pass includes -- evaluated on a table of inputs, written out for comparison with their
-// fp64 twins in tests/pbr_reference.cpp (tests/numeric/pbr_numeric_test.cpp).
+// fp64 twins in tests/accuracy/pbr_reference.cpp (tests/accuracy/pbr_numeric_test.cpp).
 #extension GL_GOOGLE_include_directive : require
 #include "pbr.glsl"
 

@@ -3,7 +3,7 @@
 //
 // The CPU reference renderer for chapter-15's deferred lighting. It reads a G-buffer that
 // chapter-15 --dump wrote (position, albedo, normal, pbr, coverage as fp32 PFM files), shades every
-// pixel in double precision with tests/pbr_reference.cpp -- the fp64 twin of the shader's math --
+// pixel in double precision with tests/accuracy/pbr_reference.cpp -- the fp64 twin of the shader's math --
 // using the lights, ambient light and camera of SCENE.json, and compares GPU light outputs
 // (light.pfm of chapter-15 --dump) with the result.
 //
@@ -32,8 +32,8 @@
 
 #include "common/core/check.hpp"
 #include "common/scene/scene.hpp"
+#include "tests/accuracy/pbr_reference.hpp"
 #include "tests/accuracy/pfm.hpp"
-#include "tests/pbr_reference.hpp"
 
 namespace {
 

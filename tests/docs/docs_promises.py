@@ -31,7 +31,7 @@ import sys
 PROMISE = re.compile(r"\b(refused|refuses|rejects|never|always|every|everything|cannot|can't|won't|must not|"
                      r"exits? (with )?(code )?[0-9])\b", re.IGNORECASE)
 CITATION = re.compile(r"<!-- tests?:\s+([^>]*?)\s*-->")
-VISIBLE_CITATION = re.compile(r"\(tests?:\s")
+VISIBLE_CITATION = re.compile(r"\(tests?:\s|\btests?:\s+[\w*-]+\.[\w*]")
 NO_TEST = re.compile(r"<!-- no test: [^>]*[a-z][^>]*-->")
 ATTACHED = re.compile(r"<!-- (no test|tests?): [^>]*-->")
 

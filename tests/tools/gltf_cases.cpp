@@ -1,8 +1,8 @@
-// gltf_cases DIR: writes the glTF files of tests/gltf.cmake into DIR. Good ones, each made to show
-// one rule of the glTF 2.0 specification in a picture (cases/ and the scenes naming them), the
-// same model as .gltf + .bin, as one .gltf with data: URIs and as .glb (same/), and hostile ones
-// (hostile/), each breaking one rule a loader must not trust, and a stand-in for a clone of the
-// book's repository (book/) for --book-scene. Deterministic: the same bytes on every run.
+// gltf_cases DIR: writes the glTF files of tests/reliability/gltf.cmake into DIR. Good ones, each made to
+// show one rule of the glTF 2.0 specification in a picture (cases/ and the scenes naming them), the same
+// model as .gltf + .bin, as one .gltf with data: URIs and as .glb (same/), and hostile ones (hostile/), each
+// breaking one rule a loader must not trust, and a stand-in for a clone of the book's repository (book/) for
+// --book-scene. Deterministic: the same bytes on every run.
 #include <stb_image_write.h>
 
 #include <cmath>
@@ -721,7 +721,7 @@ void writeHostile(const fs::path& dir) {
     // One triangle more than the vertex budget: 5,592,406 flat triangles bake 16,777,218 vertices.
     make("budget_plus_one.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 2796203, gltf::kTriangles); });
     // One triangle less: the largest flat-shaded model the budget admits (its peak memory is
-    // tests/extremes.cmake's).
+    // tests/reliability/extremes.cmake's).
     make("budget_inside.gltf", [&](gltf::File& f) { sparsePositions(f, 3 * 2796202, gltf::kTriangles); });
     // Accessor counts at the limit and one past it (an accessor no mesh uses is checked too).
     for (uint64_t count : {33554432ull, 33554433ull})
@@ -871,12 +871,10 @@ void bookQuad(BookMesh& mesh, vec3 corner, vec3 u, vec3 v, glm::vec2 uvScale) {
     mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
 }
 
-// DIR/tree.json, tree.vtx, tree.idx, tree_mat.json, trunk.png, leaf.png: a stand-in for the book's
-// chapter-16 tree in its units (the book scales it by 0.005): a trunk 100 x 1000 x 100 and a flat
-// crown 800 x 800 at height 900 whose leaf texture is a checker of opaque and transparent
-// squares (the shadow it casts is that checker).
-void writeBookTree(const fs::path& dir) {
-    fs::create_directories(dir);
+// The stand-in for the book's chapter-16 tree, in its units (the book scales it by 0.005): a trunk
+// 100 x 1000 x 100 and a flat crown 800 x 800 at height 900 whose leaf texture is a checker of
+// opaque and transparent squares (the shadow it casts is that checker).
+std::pair<BookMesh, BookMesh> bookTreeMeshes() {
     BookMesh trunk{.material = "tree-mat-1"}, crown{.material = "tree-mat-2"};
     const float h = 50, top = 1000;
     bookQuad(trunk, {-h, 0, h}, {2 * h, 0, 0}, {0, top, 0}, {1, 1});       // +z face
@@ -884,6 +882,29 @@ void writeBookTree(const fs::path& dir) {
     bookQuad(trunk, {h, 0, h}, {0, 0, -2 * h}, {0, top, 0}, {1, 1});       // +x
     bookQuad(trunk, {-h, 0, -h}, {0, 0, 2 * h}, {0, top, 0}, {1, 1});      // -x
     bookQuad(crown, {-400, 900, 400}, {800, 0, 0}, {0, 0, -800}, {1, 1});  // facing up
+    return {trunk, crown};
+}
+
+// DIR/trunk.png and leaf.png: the tree's textures, 8 x 8 texels.
+void writeBookTreeTextures(const fs::path& dir) {
+    std::vector<uint8_t> bark(8 * 8 * 3), leaf(8 * 8 * 4);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            uint8_t* b = &bark[size_t(y * 8 + x) * 3];
+            b[0] = 110, b[1] = 80, b[2] = 50;
+            uint8_t* l = &leaf[size_t(y * 8 + x) * 4];
+            l[0] = 60, l[1] = 150, l[2] = 50;
+            l[3] = ((x / 2 + y / 2) % 2) ? 255 : 0;  // 2 x 2 texel squares, every other one transparent
+        }
+    writePng(dir / "trunk.png", 8, 8, 3, bark);
+    writePng(dir / "leaf.png", 8, 8, 4, leaf);
+}
+
+// DIR/tree.json, tree.vtx, tree.idx, tree_mat.json and the textures: the tree in the book's
+// converted format, as its chapter-16 Main.java loads it.
+void writeBookTree(const fs::path& dir) {
+    fs::create_directories(dir);
+    auto [trunk, crown] = bookTreeMeshes();
     std::vector<uint8_t> vtx, idx;
     auto put = [](std::vector<uint8_t>& out, uint32_t bits) {
         for (int shift : {24, 16, 8, 0}) out.push_back(uint8_t(bits >> shift));
@@ -924,24 +945,51 @@ void writeBookTree(const fs::path& dir) {
               json::array({material("tree-mat-1", "resources\\models\\tree\\trunk.png"),
                            material("tree-mat-2", "resources\\models\\tree\\leaf.png")})
                   .dump(2));
-    std::vector<uint8_t> bark(8 * 8 * 3), leaf(8 * 8 * 4);
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            uint8_t* b = &bark[size_t(y * 8 + x) * 3];
-            b[0] = 110, b[1] = 80, b[2] = 50;
-            uint8_t* l = &leaf[size_t(y * 8 + x) * 4];
-            l[0] = 60, l[1] = 150, l[2] = 50;
-            l[3] = ((x / 2 + y / 2) % 2) ? 255 : 0;  // 2 x 2 texel squares, every other one transparent
+    writeBookTreeTextures(dir);
+}
+
+// DIR/tree.obj, tree.mtl and the textures: the same tree as the OBJ the book's clone keeps beside
+// its converted files (booksamples/chapter-16/resources/models/tree/tree.obj), for a clone whose
+// converted files are missing.
+void writeBookTreeObj(const fs::path& dir) {
+    fs::create_directories(dir);
+    auto [trunk, crown] = bookTreeMeshes();
+    std::string obj = "mtllib tree.mtl\n";
+    uint32_t base = 1;
+    for (const BookMesh* mesh : {&trunk, &crown}) {
+        size_t count = mesh->vertices.size() / 14;
+        for (size_t k = 0; k < count; ++k) {
+            const float* v = &mesh->vertices[k * 14];
+            obj +=
+                "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+            obj +=
+                "vn " + std::to_string(v[3]) + " " + std::to_string(v[4]) + " " + std::to_string(v[5]) + "\n";
+            obj += "vt " + std::to_string(v[12]) + " " + std::to_string(v[13]) + "\n";
         }
-    writePng(dir / "trunk.png", 8, 8, 3, bark);
-    writePng(dir / "leaf.png", 8, 8, 4, leaf);
+        obj += std::string("usemtl ") + (mesh == &trunk ? "trunk" : "leaf") + "\n";
+        for (size_t i = 0; i + 2 < mesh->indices.size(); i += 3) {
+            obj += "f";
+            for (int c = 0; c < 3; ++c) {
+                std::string n = std::to_string(base + mesh->indices[i + size_t(c)]);
+                obj += " " + n + "/" + n + "/" + n;
+            }
+            obj += "\n";
+        }
+        base += uint32_t(count);
+    }
+    writeText(dir / "tree.obj", obj);
+    writeText(dir / "tree.mtl",
+              "newmtl trunk\nKd 1 1 1\nmap_Kd trunk.png\n\nnewmtl leaf\nKd 1 1 1\nmap_Kd leaf.png\n");
+    writeBookTreeTextures(dir);
 }
 
 // DIR/booksamples/chapter-15/resources/models/sponza/Sponza.gltf, where the book keeps Sponza: a
 // floor and four walls of Sponza's extent (x -15..14, y -1..11.5, z -9.5..9), under one node
 // scaled 0.008 like the real file's, each face its own grey, so that the book's camera (at
 // (0, 5, 0), looking along +x and down) and lights show in one picture.
-void writeBookClone(const fs::path& dir, bool tree = true) {
+// tree: the chapter-16 tree in the converted format, as OBJ only, or none.
+enum class BookTree { Converted, Obj, None };
+void writeBookClone(const fs::path& dir, BookTree tree = BookTree::Converted) {
     fs::path models = dir / "booksamples" / "chapter-15" / "resources" / "models" / "sponza";
     fs::create_directories(models);
     gltf::File file;
@@ -985,7 +1033,9 @@ void writeBookClone(const fs::path& dir, bool tree = true) {
     file.node({{"mesh", file.mesh(primitives)}, {"scale", {0.008, 0.008, 0.008}}});
     file.scene({0});
     file.writeGltf(models / "Sponza.gltf");
-    if (tree) writeBookTree(dir / "booksamples" / "chapter-16" / "resources" / "models" / "tree");
+    fs::path treeDir = dir / "booksamples" / "chapter-16" / "resources" / "models" / "tree";
+    if (tree == BookTree::Converted) writeBookTree(treeDir);
+    if (tree == BookTree::Obj) writeBookTreeObj(treeDir);
 }
 
 // The book's converted format broken one rule at a time (DIR/NAME/tree.json, with the stand-in
@@ -1061,7 +1111,7 @@ void writeBookModelHostile(const fs::path& dir) {
     fs::remove(missing / "tree.idx");
 }
 
-// ---- Work, numbers and mirrors at the extremes (tests/extremes.cmake) -------------------------
+// ---- Work, numbers and mirrors at the extremes (tests/reliability/extremes.cmake) -------------------------
 
 // Writes a model in the book's converted format: NAME.json naming `meshes` (ranges of NAME.vtx
 // and NAME.idx), NAME_mat.json with `materials`.
@@ -1355,7 +1405,8 @@ int main(int argc, char** argv) {
         writeShadows(dir / "shadows");
         writeHostile(dir / "hostile");
         writeBookClone(dir / "book");
-        writeBookClone(dir / "book-without-tree", false);
+        writeBookClone(dir / "book-without-tree", BookTree::None);
+        writeBookClone(dir / "book-obj-tree", BookTree::Obj);
         writeBookModelHostile(dir / "book-hostile");
         writeExtremes(dir / "extremes");
         return 0;

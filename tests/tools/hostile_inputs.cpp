@@ -1,7 +1,7 @@
-// Writes the hostile inputs of tests/hostile.cmake into one directory: binary garbage, huge lines,
-// odd encodings, images whose header lies, scenes with huge counts. They are generated at test
-// time rather than committed (binary or large); tests/data/README.md lists each with the
-// behaviour it must produce.
+// Writes the hostile inputs of tests/reliability/hostile.cmake into one directory: binary garbage, huge
+// lines, odd encodings, images whose header lies, scenes with huge counts. They are generated at test time
+// rather than committed (binary or large); tests/data/README.md lists each with the behaviour it must
+// produce.
 #include <stb_image_write.h>
 #include <sys/stat.h>
 

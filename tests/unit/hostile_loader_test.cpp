@@ -1,4 +1,4 @@
-// Unit tests of the loaders on hostile input (tests/hostile.cmake has the whole-program ones):
+// Unit tests of the loaders on hostile input (tests/reliability/hostile.cmake has the whole-program ones):
 // concave polygons triangulated correctly, byte order marks, binary data, the scene limits.
 #include <gtest/gtest.h>
 
