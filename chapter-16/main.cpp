@@ -249,8 +249,10 @@ void useBookChapter16Scene(common::Scene& scene, const std::filesystem::path& bo
             ? given / "booksamples"
             : given.parent_path().parent_path().parent_path().parent_path().parent_path();
     std::filesystem::path treeDir = samples / "chapter-16" / "resources" / "models" / "tree";
+    // The converted files whole (the JSON and its vertex and index files), else the OBJ.
     std::filesystem::path tree = treeDir / "tree.json";
-    if (!std::filesystem::is_regular_file(tree, ec)) tree = treeDir / "tree.obj";
+    for (const char* part : {"tree.json", "tree.vtx", "tree.idx"})
+        if (!std::filesystem::is_regular_file(treeDir / part, ec)) tree = treeDir / "tree.obj";
     if (!std::filesystem::is_regular_file(tree, ec)) {
         common::warn("the book's tree is not at " + common::utf8(treeDir / "tree.json") + " (nor tree.obj)" +
                      ": the scene without it");

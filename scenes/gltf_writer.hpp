@@ -1,5 +1,5 @@
 // A small glTF 2.0 writer for the files we generate: the default scene's glTF form
-// (generate_default_scene), the glTF test cases (tests/unit/gltf_test.cpp, tests/gltf_cases.cpp).
+// (generate_default_scene), the glTF test cases (tests/unit/gltf_test.cpp, tests/tools/gltf_cases.cpp).
 // It writes what the glTF 2.0 specification asks (accessor min/max for POSITION, 4-byte aligned
 // views, padded GLB chunks) as .gltf + .bin, as one .gltf with data: URIs, or as .glb; the
 // JSON stays open to callers, which is how the tests write files that break the rules.

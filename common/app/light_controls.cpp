@@ -25,7 +25,12 @@ LightControls findControlledLights(const Scene& scene) {
             }
             float ahead = glm::dot(light.direction, controls.sunHeading);
             float angle = glm::degrees(std::atan2(light.direction.y, ahead));
-            controls.sunAngle = angle < 0.0f ? angle + 360.0f : angle;
+            // Into the controls' 180..360: a sun along the horizon ahead is 360, not 0; one that
+            // points up (outside the range) starts at the nearer horizon.
+            if (angle < 0.0f) angle += 360.0f;
+            if (angle <= 90.0f) angle = 360.0f;
+            if (angle < 180.0f) angle = 180.0f;
+            controls.sunAngle = angle;
         }
         if (light.type == Light::Type::Point && controls.point < 0) controls.point = i;
     }

@@ -2,8 +2,8 @@
 #include "common/vk/image.hpp"
 
 #include "common/core/check.hpp"
-#include "common/vk/buffer.hpp"
 #include "common/vk/debug_names.hpp"
+#include "common/vk/memory.hpp"
 
 namespace common {
 
@@ -59,7 +59,8 @@ Image makeImage(const Device& device, VkExtent2D extent, uint32_t layers, VkImag
     vkGetImageMemoryRequirements(device.handle, image.handle, &requirements);
     image.memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     VK_CHECK(vkBindImageMemory(device.handle, image.handle, image.memory, 0));
-    // A 2D_ARRAY view over every layer: what a sampler2DArray reads and a layered pass draws into.
+    // A layered image gets a 2D_ARRAY view over all its layers: what a sampler2DArray reads and a
+    // layered pass draws into (the other images, a 2D view).
     image.view = createImageView(device, image.handle, format, aspect, mipLevels, viewType, layers);
     //< layered-image
     nameObject(device.handle, image.view, name);

@@ -24,7 +24,9 @@ VkDeviceMemory allocateMemory(const Device& device, const VkMemoryRequirements& 
         .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, flags),
     };
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VK_CHECK(vkAllocateMemory(device.handle, &allocInfo, nullptr, &memory));
+    // VK_CHECK's report, naming the resource: which allocation ran out is what a reader needs.
+    if (VkResult result = vkAllocateMemory(device.handle, &allocInfo, nullptr, &memory); result != VK_SUCCESS)
+        throwVkError(result, ("vkAllocateMemory for \"" + name + "\"").c_str(), __FILE__, __LINE__);
     nameObject(device.handle, memory, name);
     return memory;
 }

@@ -19,8 +19,8 @@ layout(std430, set = TILE_SET, binding = 4) readonly buffer TileLightIndices {
     uint tileLightIndices[];
 };
 
-// `sunVisibility` is chapter-15's parameter for chapter-16's shadows; the tiled path has none.
-vec3 shadeLights(ivec2 pixel, SurfaceSample s, vec3 N, vec3 V, float sunVisibility) {
+// `sunLight` is chapter-15's parameter for chapter-16's shadows; the tiled path has none.
+vec3 shadeLights(ivec2 pixel, SurfaceSample s, vec3 N, vec3 V, float sunLight) {
     vec3 color = vec3(0.0);
     for (uint i = 0u; i < tileView.unboundedLights; ++i) color += shadeLight(i, s, N, V);
     uvec2 tile = uvec2(pixel) / LIGHT_TILE_SIZE;

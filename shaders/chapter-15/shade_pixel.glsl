@@ -2,9 +2,9 @@
 // asks for. Needs readGBuffer() and shadeLights() declared first (light_shading.glsl).
 
 //> shade-pixel
-// `uv`: the pixel's texel centre (0..1); `pixel`: its integer coordinates; `sunVisibility`:
+// `uv`: the pixel's texel centre (0..1); `pixel`: its integer coordinates; `sunLight`:
 // how much of the sun reaches the pixel (1.0 without shadows; light_loop.glsl).
-vec4 shadePixel(vec2 uv, ivec2 pixel, float sunVisibility) {
+vec4 shadePixel(vec2 uv, ivec2 pixel, float sunLight) {
     SurfaceSample s = readGBuffer(uv);
     if (show.view == 1) {
         vec3 world = s.position + scene.cameraPosition;
@@ -28,7 +28,7 @@ vec4 shadePixel(vec2 uv, ivec2 pixel, float sunVisibility) {
         // Ambient light, darkened by the surface's occlusion (glTF applies occlusion maps to
         // indirect light only: the lights are not).
         vec3 color = scene.ambientColor * scene.ambientIntensity * s.albedo * s.pbr.r;
-        return vec4(color + shadeLights(pixel, s, N, V, sunVisibility), 1.0);
+        return vec4(color + shadeLights(pixel, s, N, V, sunLight), 1.0);
     }
 }
 //< shade-pixel

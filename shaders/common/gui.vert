@@ -1,5 +1,5 @@
 #version 450
-// The GUI pass (common/gui_pass.cpp): Dear ImGui's vertices -- a 2D
+// The GUI pass (common/passes/gui_pass.cpp): Dear ImGui's vertices -- a 2D
 // position in window points, a font-atlas coordinate and an 8-bit colour -- to clip space with the
 // scale and translation in the push constants.
 #extension GL_GOOGLE_include_directive : require
@@ -7,7 +7,7 @@
 
 //> gui-vert
 // True only where the presented image has no _UNORM view and the hardware sRGB-encodes what we
-// write: ImGui's colours are decoded first (common/gui_pass.cpp says why this is the exception).
+// write: ImGui's colours are decoded first (common/passes/gui_pass.cpp says why this is the exception).
 layout(constant_id = 0) const bool DECODE_SRGB = false;
 
 layout(location = 0) in vec2 inPosition;

@@ -1,5 +1,5 @@
 #version 450
-// The post pass (common/post_pass.cpp, chapters 14 and 15): the light output into the presentation image -- optionally
+// The post pass (common/passes/post_pass.cpp, chapters 14 and 15): the light output into the presentation image -- optionally
 // anti-aliased with FXAA, clamped to the displayable range, sRGB-encoded when the target format
 // does not do it in hardware. Both choices are specialization constants: fixed when the pipeline
 // is created, so the shader compiler removes the branches.

@@ -1,5 +1,5 @@
 // The sRGB transfer function (IEC 61966-2-1) both ways. A pass that writes a presented image
-// encodes with it when the image's format does not (a _UNORM format: common/formats.hpp); the GUI
+// encodes with it when the image's format does not (a _UNORM format: common/vk/formats.hpp); the GUI
 // decodes Dear ImGui's sRGB-authored colours with it where it must blend in linear light.
 #ifndef SRGB_GLSL
 #define SRGB_GLSL

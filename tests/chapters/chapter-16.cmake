@@ -226,9 +226,13 @@ chapter_test(chapter-16.book-scene-without-tree WORKDIR /
 # A clone whose tree is the tree.obj the book converted, without the converted files: the same
 # scene, the tree read from the OBJ (two draws more, ten triangles).
 chapter_test(chapter-16.book-scene-obj-tree WORKDIR /
-    COMMAND ${CH16_RUN} --headless --width 320 --height 180 --book-scene
-            ${CMAKE_CURRENT_BINARY_DIR}/gltf/book-obj-tree
+    COMMAND ${CH16_RUN} --headless --width 640 --height 360 --book-scene
+            ${CMAKE_CURRENT_BINARY_DIR}/gltf/book-obj-tree --screenshot ${TEST_OUT}/chapter-16-book-scene-obj-tree.png
     EXPECT_STDOUT "chapter-16: 7 draws, 650 triangles" QUIET_STDERR)
+set_tests_properties(chapter-16.book-scene-obj-tree PROPERTIES FIXTURES_SETUP ch16-book-obj)
+add_test(NAME chapter-16.book-scene-obj-tree-image COMMAND image_compare ${TEST_OUT}/chapter-16-book-scene-obj-tree.png
+    --size 640 360 --golden ${GOLDEN}/chapter-16-book-scene.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-16.book-scene-obj-tree-image PROPERTIES FIXTURES_REQUIRED ch16-book-obj)
 # The Sponza.gltf given as a relative path, from its own directory: the tree found all the same.
 chapter_test(chapter-16.book-scene-relative
     WORKDIR ${CMAKE_CURRENT_BINARY_DIR}/gltf/book/booksamples/chapter-15/resources/models/sponza

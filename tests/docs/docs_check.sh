@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # docs.options and docs.file-lines: what in the docs can be checked against the code mechanically.
 #
-#   tests/docs_check.sh options ROOT PROGRAM...   every option a program's --help lists is in one of
+#   tests/docs/docs_check.sh options ROOT PROGRAM...   every option a program's --help lists is in one of
 #                                                 the README's option tables marked as that
 #                                                 program's (<!-- options-for: ... -->), and every
 #                                                 program a table is marked for has each of its
 #                                                 options
-#   tests/docs_check.sh file-lines ROOT           every FILE:LINE a page quotes (docs/*.md, the
+#   tests/docs/docs_check.sh file-lines ROOT           every FILE:LINE a page quotes (docs/*.md, the
 #                                                 READMEs) names a file of the repository that has
 #                                                 that line
-#   tests/docs_check.sh counts ROOT BUILD         every count of tests a page marks, as
+#   tests/docs/docs_check.sh counts ROOT BUILD         every count of tests a page marks, as
 #                                                 "N tests<!-- ctest: REGEX -->", is what
 #                                                 `ctest -N -R REGEX` counts in BUILD
 #

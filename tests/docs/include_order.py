@@ -18,8 +18,38 @@ import re
 import sys
 import tempfile
 
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+# Quoted includes, and bracketed ones that name a file of ours (common/ and the chapters are on an
+# include path, so <common/...> would compile too).
+INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<((?:common|chapter-[\w-]+)/[^>]+)>)', re.M)
 SOURCE = (".hpp", ".cpp", ".h")
+
+
+def includes(text):
+    return [quoted or bracketed for quoted, bracketed in INCLUDE.findall(text)]
+
+
+def find_circles(graph, problems):
+    """Reports each circle among the modules of `graph` (module -> modules it includes) once."""
+    state, stack, seen_cycles = {}, [], set()
+
+    def visit(m):
+        state[m] = 1
+        stack.append(m)
+        for n in sorted(graph.get(m, ())):
+            if state.get(n) == 1:
+                cycle = stack[stack.index(n):]
+                key = frozenset(cycle)
+                if key not in seen_cycles:
+                    seen_cycles.add(key)
+                    problems.append("include circle: " + " -> ".join(cycle + [n]))
+            elif state.get(n) is None:
+                visit(n)
+        stack.pop()
+        state[m] = 2
+
+    for m in sorted(graph):
+        if state.get(m) is None:
+            visit(m)
 
 
 def folder_order(root):
@@ -53,7 +83,7 @@ def check(root):
             module = os.path.splitext(rel)[0]
             graph.setdefault(module, set())
             text = open(os.path.join(root, rel), encoding="utf-8").read()
-            for inc in INCLUDE.findall(text):
+            for inc in includes(text):
                 if inc.startswith("chapter-"):
                     problems.append(f"{rel}: includes {inc}: common never includes a chapter")
                     continue
@@ -71,27 +101,7 @@ def check(root):
                 target = os.path.splitext(inc)[0]
                 if target != module:
                     graph[module].add(target)
-    # Circles among modules (depth-first search; each circle reported once by its members).
-    state, stack, seen_cycles = {}, [], set()
-
-    def visit(m):
-        state[m] = 1
-        stack.append(m)
-        for n in sorted(graph.get(m, ())):
-            if state.get(n) == 1:
-                cycle = stack[stack.index(n):]
-                key = frozenset(cycle)
-                if key not in seen_cycles:
-                    seen_cycles.add(key)
-                    problems.append("include circle: " + " -> ".join(cycle + [n]))
-            elif state.get(n) is None:
-                visit(n)
-        stack.pop()
-        state[m] = 2
-
-    for m in sorted(graph):
-        if state.get(m) is None:
-            visit(m)
+    find_circles(graph, problems)
     # Chapters.
     for chapter in sorted(os.listdir(root)):
         cdir = os.path.join(root, chapter)
@@ -99,41 +109,52 @@ def check(root):
             continue
         number = chapter_number(chapter)
         study = not re.fullmatch(r"chapter-\d+", chapter)
-        for name in sorted(os.listdir(cdir)):
-            path = os.path.join(cdir, name)
-            if name == "CMakeLists.txt":
+        chapter_graph = {}
+        for dirpath, dirnames, filenames in os.walk(cdir):
+            dirnames.sort()
+            for name in sorted(filenames):
+                path = os.path.join(dirpath, name)
+                rel = os.path.relpath(path, root).replace(os.sep, "/")
+                here = os.path.dirname(path)
+                if name == "CMakeLists.txt" or name.endswith(".cmake"):
+                    text = open(path, encoding="utf-8").read()
+                    for m in re.finditer(r"\b(?:target_)?include_directories\(([^)]*)\)", text):
+                        dirs = re.split(r"\b(?:PRIVATE|PUBLIC|INTERFACE|SYSTEM|BEFORE|AFTER)\b", m.group(1))[-1]
+                        if "chapter-" in dirs or "CHAPTER_" in dirs:
+                            problems.append(f"{rel}: puts another chapter's folder on the include path; "
+                                            f"include its files as \"chapter-NN/FILE\"")
+                    continue
+                if not name.endswith(SOURCE):
+                    continue
+                module = os.path.splitext(rel)[0]
+                chapter_graph.setdefault(module, set())
                 text = open(path, encoding="utf-8").read()
-                for m in re.finditer(r"target_include_directories\(([^)]*)\)", text):
-                    dirs = re.split(r"\b(?:PRIVATE|PUBLIC|INTERFACE)\b", m.group(1), maxsplit=1)[-1]
-                    if "chapter-" in dirs or "CHAPTER_" in dirs:
-                        problems.append(f"{chapter}/CMakeLists.txt: puts another chapter's folder on the "
-                                        f"include path; include its files as \"chapter-NN/FILE\"")
-                continue
-            if not name.endswith(SOURCE):
-                continue
-            text = open(path, encoding="utf-8").read()
-            for inc in INCLUDE.findall(text):
-                ip = inc.split("/")
-                if ip[0] == "common":
+                for inc in includes(text):
+                    ip = inc.split("/")
+                    if ip[0] == "common":
+                        if not os.path.isfile(os.path.join(root, inc)):
+                            problems.append(f"{rel}: includes {inc}, which does not exist")
+                        continue
+                    if not ip[0].startswith("chapter-"):
+                        if not os.path.isfile(os.path.join(here, inc)):
+                            problems.append(f'{rel}: includes "{inc}", not a file of {chapter}/: '
+                                            f'name the chapter it comes from')
+                        else:
+                            target = os.path.splitext(os.path.relpath(os.path.join(here, inc), root))[0]
+                            if target.replace(os.sep, "/") != module:
+                                chapter_graph[module].add(target.replace(os.sep, "/"))
+                        continue
                     if not os.path.isfile(os.path.join(root, inc)):
-                        problems.append(f"{chapter}/{name}: includes {inc}, which does not exist")
-                    continue
-                if len(ip) == 1:
-                    if not os.path.isfile(os.path.join(cdir, inc)):
-                        problems.append(f'{chapter}/{name}: includes "{inc}", not a file of {chapter}/: '
-                                        f'name the chapter it comes from')
-                    continue
-                if ip[0].startswith("chapter-") and os.path.isfile(os.path.join(root, inc)):
+                        problems.append(f"{rel}: includes {inc}, which does not exist")
+                        continue
                     other = chapter_number(ip[0])
                     if ip[0] == chapter:
-                        problems.append(f"{chapter}/{name}: includes its own {inc} by the chapter's name")
+                        problems.append(f"{rel}: includes its own {inc} by the chapter's name")
                     elif not re.fullmatch(r"chapter-\d+", ip[0]):
-                        problems.append(f"{chapter}/{name}: includes {inc}: a chapter never includes a study")
+                        problems.append(f"{rel}: includes {inc}: a chapter never includes a study")
                     elif not study and other is not None and number is not None and other >= number:
-                        problems.append(f"{chapter}/{name}: includes {inc}, a later chapter's")
-                    continue
-                problems.append(f"{chapter}/{name}: includes {inc}, which is neither its own, common's "
-                                f"nor an earlier chapter's file")
+                        problems.append(f"{rel}: includes {inc}, a later chapter's")
+        find_circles(chapter_graph, problems)
     return problems
 
 
@@ -163,6 +184,22 @@ def self_test():
         "a later chapter's file": ({"chapter-10/y.cpp": '#include "chapter-16/main.cpp"\n'}, "later chapter"),
         "an include path": ({"chapter-16/CMakeLists.txt":
                              "target_include_directories(chapter-16 PRIVATE ../chapter-10)\n"}, "include path"),
+        "a directory-wide include path": ({"chapter-16/CMakeLists.txt": "include_directories(../chapter-10)\n"},
+                                          "include path"),
+        "a bracketed upward include": ({"common/core/g.hpp": "#include <common/vk/b.hpp>\n"}, "comes after"),
+        "a circle of three": ({"common/vk/p.hpp": '#include "common/vk/q.hpp"\n',
+                               "common/vk/q.hpp": '#include "common/vk/r.hpp"\n',
+                               "common/vk/r.hpp": '#include "common/vk/p.hpp"\n'}, "circle"),
+        "a missing file in common": ({"common/vk/h.cpp": '#include "common/vk/none.hpp"\n'}, "does not exist"),
+        "a folder not in the table": ({"common/vk/i.cpp": '#include "common/extra/x.hpp"\n',
+                                       "common/extra/x.hpp": ""}, "not in"),
+        "a chapter including a study": ({"chapter-16/j.cpp": '#include "chapter-15-lab/k.hpp"\n',
+                                         "chapter-15-lab/k.hpp": ""}, "never includes a study"),
+        "a chapter naming itself": ({"chapter-10/l.cpp": '#include "chapter-10/pass.hpp"\n'}, "its own"),
+        "a chapter's missing file": ({"chapter-10/m.cpp": '#include "chapter-06/none.hpp"\n'}, "does not exist"),
+        "a file in a chapter's subfolder": ({"chapter-10/sub/n.cpp": '#include "pass.hpp"\n'}, "name the chapter"),
+        "a circle in a chapter": ({"chapter-10/s.hpp": '#include "t.hpp"\n', "chapter-10/t.hpp": '#include "s.hpp"\n'},
+                                  "circle"),
     }
     failed = 0
     for what, (extra, expect) in cases.items():

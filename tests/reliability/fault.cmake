@@ -63,6 +63,14 @@ fault_test(fault.layer-bad-spec FAULT vkAllocateMemory EXPECT_EXIT 0
     COMMAND $<TARGET_FILE:chapter-06> --device llvmpipe --validation --headless --width 64 --height 36
     EXPECT_STDERR "^VK_LAYER_VKBOOK_fault_injection: VKBOOK_FAULT='vkAllocateMemory' is not <call>:<n>\n$")
 
+# The messages: the plain-words cause, then the call that failed (as VK_CHECK names it).
+set(OOM "out of GPU memory: vkAllocateMemory\\(device.handle, &allocInfo, nullptr, &")
+set(OOM_NAMED "out of GPU memory: vkAllocateMemory for \"")  # common's allocations name their resource
+set(HOST_OOM "out of memory: ")
+set(LOST "the GPU was lost \\(driver crash, GPU reset or device removed\\): ")
+set(LOST_END "failed with VK_ERROR_DEVICE_LOST \\([a-z_]+\\.cpp:[0-9]+\\)\n$")
+set(FRAME_WAIT "vkWaitForFences\\(c\\.device\\.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX\\) ${LOST_END}")
+
 # Without --validation nothing lies between the layer and the loader (or Mesa's device-select
 # layer), whose lookups answer from the instance's dispatch table, by then the layer's own
 # functions: the layer looks up what it passes down when the instance is made, never calls itself.
@@ -71,14 +79,7 @@ fault_test(fault.layer-without-validation FAULT vkAllocateMemory:1000000 EXPECT_
     QUIET_STDERR)
 fault_test(fault.layer-without-validation-oom FAULT vkAllocateMemory:1
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --headless --width 320 --height 180
-    EXPECT_STDERR "^chapter-15: error: out of GPU memory: vkAllocateMemory\\(device.handle, &allocInfo, nullptr, &memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
-
-# The messages: the plain-words cause, then the call that failed (as VK_CHECK names it).
-set(OOM "out of GPU memory: vkAllocateMemory\\(device.handle, &allocInfo, nullptr, &")
-set(HOST_OOM "out of memory: ")
-set(LOST "the GPU was lost \\(driver crash, GPU reset or device removed\\): ")
-set(LOST_END "failed with VK_ERROR_DEVICE_LOST \\([a-z_]+\\.cpp:[0-9]+\\)\n$")
-set(FRAME_WAIT "vkWaitForFences\\(c\\.device\\.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX\\) ${LOST_END}")
+    EXPECT_STDERR "^chapter-15: error: ${OOM_NAMED}offscreen target 0\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
 
 # Headless, with validation (a faulted call never reaches the validation layer, which sits below
 # ours, and after a failure a chapter makes no more Vulkan calls: it stays quiet).
@@ -105,16 +106,16 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
     set(run $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --headless --width 320 --height 180)
     set(name fault.chapter-${number})
     fault_test(${name}.oom-first-allocation FAULT vkAllocateMemory:1 COMMAND ${run}
-        EXPECT_STDERR "^chapter-${number}: error: ${OOM}memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
+        EXPECT_STDERR "^chapter-${number}: error: ${OOM_NAMED}offscreen target 0\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
     if(number STREQUAL "06")  # no G-buffer: the vertex buffer
         fault_test(${name}.oom-vertex-buffer FAULT vkAllocateMemory:${gbuffer} COMMAND ${run}
             EXPECT_STDERR "^chapter-06: error: ${OOM}buffer.memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(buffer.cpp:[0-9]+\\)\n$")
     else()
         fault_test(${name}.oom-gbuffer FAULT vkAllocateMemory:${gbuffer} COMMAND ${run}
-            EXPECT_STDERR "^chapter-${number}: error: ${OOM}memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
+            EXPECT_STDERR "^chapter-${number}: error: ${OOM_NAMED}G-buffer [a-z]+\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
     endif()
     fault_test(${name}.oom-during-resize FAULT vkAllocateMemory:${resize} COMMAND ${run} --frames 4 --resize 200x100
-        EXPECT_STDERR "^chapter-${number}: error: ${OOM}memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
+        EXPECT_STDERR "^chapter-${number}: error: ${OOM_NAMED}(offscreen target [0-9]+|G-buffer [a-z]+)\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
     fault_test(${name}.lost-at-first-submit FAULT vkQueueSubmit:1 COMMAND ${run}
         EXPECT_STDERR "^chapter-${number}: error: ${LOST}vkQueueSubmit\\(device.queue, 1, &submit, done\\) ${LOST_END}")
     fault_test(${name}.lost-at-frame-3-submit FAULT ${submit} COMMAND ${run} --frames 5
@@ -122,11 +123,10 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
     fault_test(${name}.lost-at-frame-3-wait FAULT vkWaitForFences:${wait} COMMAND ${run} --frames 5
         EXPECT_STDERR "^chapter-${number}: error: ${LOST}${FRAME_WAIT}")
 endforeach()
-# chapter-16's own allocations: the shadow map's moments (its layered image, written out in
-# shadow_pass.cpp), after the G-buffer.
+# chapter-16's own allocations: the shadow map's moments (its layered image), after the G-buffer.
 fault_test(fault.chapter-16.oom-shadow-map FAULT vkAllocateMemory:56
     COMMAND $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless --width 320 --height 180
-    EXPECT_STDERR "^chapter-16: error: ${OOM}image.memory\\) failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(shadow_pass.cpp:[0-9]+\\)\n$")
+    EXPECT_STDERR "^chapter-16: error: ${OOM_NAMED}shadow moments\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
 fault_test(fault.chapter-06.host-oom-create-buffer FAULT vkCreateBuffer:1
     COMMAND $<TARGET_FILE:chapter-06> --device llvmpipe --validation --headless
     EXPECT_STDERR "^chapter-06: error: ${HOST_OOM}vkCreateBuffer\\(.*\\) failed with VK_ERROR_OUT_OF_HOST_MEMORY \\(buffer.cpp:[0-9]+\\)\n$")

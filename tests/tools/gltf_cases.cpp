@@ -964,7 +964,8 @@ void writeBookTreeObj(const fs::path& dir) {
                 "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
             obj +=
                 "vn " + std::to_string(v[3]) + " " + std::to_string(v[4]) + " " + std::to_string(v[5]) + "\n";
-            obj += "vt " + std::to_string(v[12]) + " " + std::to_string(v[13]) + "\n";
+            // The converted format keeps v top-down (its generator wrote 1 - v); OBJ counts it up.
+            obj += "vt " + std::to_string(v[12]) + " " + std::to_string(1.0f - v[13]) + "\n";
         }
         obj += std::string("usemtl ") + (mesh == &trunk ? "trunk" : "leaf") + "\n";
         for (size_t i = 0; i + 2 < mesh->indices.size(); i += 3) {

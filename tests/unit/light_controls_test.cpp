@@ -54,4 +54,20 @@ TEST(LightControls, ASunStraightDownTurnsInTheBooksPlane) {
     expectParallel(scene.lights[0].direction, {0.0f, 0.0f, 1.0f});
 }
 
+TEST(LightControls, ASunAlongOrAboveTheHorizonStartsInTheControlsRange) {
+    // Along the horizon ahead: 360, not 0, so the first touch does not swing it to the far horizon.
+    for (glm::vec3 direction : {glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(1.0f, 0.0f, 0.0f)}) {
+        common::Scene scene = sceneWithSun(direction);
+        common::LightControls controls = common::findControlledLights(scene);
+        EXPECT_EQ(controls.sunAngle, 360.0f);
+        common::setSunAngle(controls, scene, controls.sunAngle);
+        expectParallel(scene.lights[0].direction, direction);
+    }
+    // Pointing up, outside the controls' range: it starts at the nearer horizon.
+    common::Scene up = sceneWithSun({0.0f, 1.0f, 1.0f});
+    EXPECT_EQ(common::findControlledLights(up).sunAngle, 360.0f);
+    common::Scene upBehind = sceneWithSun({0.0f, 1.0f, -1.0f});
+    EXPECT_EQ(common::findControlledLights(upBehind).sunAngle, 180.0f);
+}
+
 }  // namespace

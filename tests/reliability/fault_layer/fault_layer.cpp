@@ -799,9 +799,16 @@ VKAPI_ATTR VkResult VKAPI_CALL queuePresent(VkQueue queue, const VkPresentInfoKH
 template <typename Function>
 Function nextInstanceCall(VkPhysicalDevice physical, const char* name) {
     const InstanceData& data = instanceData(physical);
-    PFN_vkVoidFunction call = data.calls.at(name);
-    if (auto khr = data.calls.find(std::string(name) + "KHR"); call == nullptr && khr != data.calls.end())
-        call = khr->second;  // a Vulkan 1.0 instance: the extension's form
+    auto found = data.calls.find(name);
+    PFN_vkVoidFunction call = found != data.calls.end() ? found->second : nullptr;
+    if (call == nullptr)  // a Vulkan 1.0 instance: the extension's form
+        if (auto khr = data.calls.find(std::string(name) + "KHR"); khr != data.calls.end())
+            call = khr->second;
+    if (call ==
+        nullptr) {  // kInstanceCalls lacks the name, or getInstanceProcAddr gave out a wrapper it should not
+        std::fprintf(stderr, "VK_LAYER_VKBOOK_fault_injection: no next %s\n", name);
+        std::abort();
+    }
     return reinterpret_cast<Function>(call);
 }
 
@@ -1025,7 +1032,14 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getInstanceProcAddr(VkInstance instance
          reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceMemoryProperties2)},
         {"vkGetPhysicalDeviceFeatures2KHR", reinterpret_cast<PFN_vkVoidFunction>(getPhysicalDeviceFeatures2)},
     };
-    if (auto found = physicalDeviceCalls.find(name); found != physicalDeviceCalls.end()) return found->second;
+    // Ours only where the layers below have the call (a Vulkan 1.0 instance may lack the "2"
+    // queries): an application's null check then stays true to the device.
+    if (auto found = physicalDeviceCalls.find(name); found != physicalDeviceCalls.end()) {
+        if (instance == VK_NULL_HANDLE) return nullptr;
+        const InstanceData& data = instanceData(instance);
+        auto next = data.calls.find(name);
+        return next != data.calls.end() && next->second != nullptr ? found->second : nullptr;
+    }
     if (PFN_vkVoidFunction ours = interceptedDeviceCall(name)) return ours;
     if (instance == VK_NULL_HANDLE) return nullptr;
     return instanceData(instance).next(instance, name);
