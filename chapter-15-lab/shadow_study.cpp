@@ -151,12 +151,15 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
          common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+         common::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         // chapter-16's moving casters' map (shadows.glsl): the study has none, the moments
+         // stand in (never read: the uniform's `moving` is 0).
+         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "light: shadow study");
     study.descriptorPool =
         common::createDescriptorPool(device, 2 * framesInFlight,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * framesInFlight},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * framesInFlight}},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * framesInFlight}},
                                      "shadow study");
     study.momentsSampler =
         common::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f);
@@ -195,6 +198,8 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
                                       buffer, sizeof(CascadeUniform));
         common::writeImageDescriptor(device, study.readSets.back(), 2, study.depthSampler, study.depth.view,
                                      VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+        common::writeImageDescriptor(device, study.readSets.back(), 3, study.momentsSampler,
+                                     study.moments.view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     }
 
     study.pipelineLayout =
@@ -207,8 +212,7 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
 
 void updateShadowStudy(ShadowStudy& study, uint32_t frame, const std::vector<Cascade>& cascades,
                        const glm::mat4& cameraView) {
-    CascadeUniform uniform =
-        cascadeUniform(cascades, cameraView, (1u << cascades.size()) - 1u);  // all, always
+    CascadeUniform uniform = cascadeUniform(cascades, cameraView);  // every layer at its first texel
     std::memcpy(study.cascades[frame].mapped, &uniform, sizeof(uniform));
 }
 
@@ -270,8 +274,10 @@ void recordShadowStudy(VkCommandBuffer cmd, const ShadowStudy& study, const Scen
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.pipelineLayout, 0, 2,
                                 shared.data(), 0, nullptr);
         // chapter-16's draws; a pass per cascade tells the vertex shader its cascade as the
-        // instance index.
-        recordShadowDraws(cmd, study.pipelineLayout, study.opaque, study.cutout, scenePass, scene, pass);
+        // instance index, chapter-16's geometry shader takes it as the layers to draw (all).
+        bool geometry = study.options.layers == ShadowLayers::GeometryShader;
+        recordShadowDraws(cmd, study.pipelineLayout, study.opaque, study.cutout, scenePass, scene,
+                          geometry ? (1u << count) - 1u : pass);
         common::vk13.CmdEndRendering(cmd);
     }
 

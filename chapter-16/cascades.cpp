@@ -74,30 +74,39 @@ std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 ligh
         cascade.center = center;
         cascade.radius = radius;
 
-        // Texel snapping: the sphere's centre, in the light's view, rounded to whole texels (depth
-        // too). The box around it is the sphere's square plus one texel on every side -- the
-        // rounding moves it by at most half a texel -- so every fixed point of the world falls on
-        // the same place of a texel wherever the camera is, and while the camera moves within a
-        // texel the cascade's matrix does not change at all (the shadow pass can keep the layer).
-        // The book rounds the origin's position in the light's view in world units, which does
-        // not snap to texels. Depth: 0 at the box's side toward the light, 1 at the far side;
-        // casters between the light and the box are kept by depth clamping (the shadow pipeline).
+        // Texel snapping: the sphere's centre, in the light's view, rounded to whole texels. The
+        // box around it is the sphere's square plus one texel on every side -- the rounding moves
+        // it by at most half a texel -- so every fixed point of the world falls on the same place
+        // of a texel wherever the camera is, and while the camera moves within a texel the
+        // cascade's matrix does not change at all (the shadow pass can keep the layer). The book
+        // rounds the origin's position in the light's view in world units, which does not snap
+        // to texels.
         float texel = 2.0f * radius / float(settings.mapSize - 2);  // a texel's size in the world
-        float half = radius + texel;
+        float half = radius + texel;                                // mapSize / 2 texels
         glm::vec3 c = glm::vec3(lightView * glm::vec4(center, 1.0f));
-        c = glm::round(c / texel) * texel;
+        glm::vec2 index = glm::round(glm::vec2(c) / texel);  // whole texels
+        c = glm::vec3(index * texel, c.z);
         cascade.texel = texel;
         cascade.view = lightView;
-        // The view looks along -z: the box spans z from c.z + half (toward the light) to c.z - half.
-        float near = -c.z - half;
+        cascade.origin = glm::i64vec2(std::llround(double(index.x)), std::llround(double(index.y))) -
+                         int64_t(settings.mapSize / 2);
+        // Depth: 0 at the window's side toward the light, 1 at its far side; the view looks along
+        // -z, so the sphere spans distances -c.z - half to -c.z + half. The window is the
+        // sphere's extent plus a step (half of half), starting on a multiple of that step: as
+        // the camera moves, the window moves only when the sphere leaves it, and a cascade
+        // redrawn for its scrolling keeps the same depths for the same casters. Casters between
+        // the light and the window are kept by depth clamping (the shadow pipeline).
+        double step = 0.5 * double(half);
+        double nearest = std::floor((double(-c.z) - double(half)) / step) * step;
+        float near = float(nearest), far = float(nearest + 2.0 * double(half) + step);
         if (settings.reachCasters)
             for (int k = 0; k < 8; ++k) {
-                glm::vec3 corner((k & 1) ? settings.castersMax.x : settings.castersMin.x,
-                                 (k & 2) ? settings.castersMax.y : settings.castersMin.y,
-                                 (k & 4) ? settings.castersMax.z : settings.castersMin.z);
+                glm::vec3 corner = common::boxCorner(k, settings.castersMin, settings.castersMax);
                 near = std::min(near, -(lightView * glm::vec4(corner, 1.0f)).z - texel);
             }
-        cascade.projection = glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, near, -c.z + half);
+        cascade.depthNear = near;
+        cascade.depthFar = far;
+        cascade.projection = glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, near, far);
         cascade.viewProjection = cascade.projection * cascade.view;
     }
     return cascades;

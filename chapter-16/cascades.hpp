@@ -42,6 +42,13 @@ struct Cascade {
     glm::vec3 center{0.0f};  // the slice's bounding sphere, world space
     float radius = 0.0f;
     float texel = 0.0f;  // a shadow-map texel's size in the world
+    // The box in whole texels of the light's view: its first column and row (x, y of the light's
+    // view divided by `texel`). Two cascades with the same view, texel and depth window whose
+    // origins differ by (dx, dy) see the same world shifted by whole texels (shadow_cache.hpp).
+    glm::i64vec2 origin{0};
+    // The box's depth window: distances along the light from the light view's origin (near: depth
+    // 0, far: depth 1). It moves in steps, not with every texel the camera moves (computeCascades).
+    float depthNear = 0.0f, depthFar = 0.0f;
 };
 
 // count + 1 view distances, near first and far last, each split between a logarithmic and a
@@ -61,7 +68,9 @@ std::vector<glm::vec3> sliceCorners(const CascadeCamera& camera, float from, flo
 // projection keeps its size while the camera turns), its centre rounded to whole texels in the
 // light's view: every fixed point of the world falls on the same place of a texel whatever the
 // camera's position (shadow edges stay still as the camera moves), and a camera that moves less
-// than a texel gets the very same matrices (the shadow pass keeps what it drew).
+// than a texel gets the very same matrices (the shadow pass keeps what it drew). The depth window
+// holds the sphere with half a radius to spare, placed on a grid of half radii along the light:
+// it stays put while the camera moves within a step, so the depths a cascade keeps stay valid.
 std::vector<Cascade> computeCascades(const CascadeCamera& camera, glm::vec3 lightDirection,
                                      const CascadeSettings& settings);
 

@@ -17,6 +17,7 @@
 // chapter in four steps: set up, the frame loop, the report, tear down.
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -72,11 +73,18 @@ const common::ChapterInfo kChapter{
       {"scene", "view"},
       "where the last cascade ends: where the scene's bounds end (in steps), or the view's far plane"},
      {"shadow-redraw",
-      {"changed", "always"},
-      "draw a cascade again only when what it sees changed, or every frame"},
+      {"scrolled", "scrolled-together", "changed", "always"},
+      "what a frame draws of the shadow map: only the bands a cascade's move exposed, moving casters "
+      "drawn apart (scrolled); the same with moving casters in the cached map (scrolled-together); a "
+      "cascade whole when what it sees changed (changed); every cascade every frame (always)"},
      {"camera-motion",
-      {"still", "walk", "creep"},
-      "(testing, benchmarks) move the camera forward every frame: walk 2 cm, creep 0.1 mm"}},
+      {"still", "walk", "creep", "turn", "jump"},
+      "(testing, benchmarks) move the camera every frame: walk 2 cm forward, creep 0.1 mm, turn 0.5 "
+      "degrees about y, jump: walk, and every 8th frame 5 m forward or back"},
+     {"light-motion",
+      {"still", "walk"},
+      "(testing, benchmarks) move the point light (and its marker) 2 cm a frame along the camera's "
+      "forward direction"}},
 };
 
 //> chapter-state
@@ -103,11 +111,14 @@ struct Chapter {
     common::LightControls lightControls;
     LightView lightView;
     bool fxaa = false;
-    bool genericPipelines = false;         // --pipelines generic
-    CascadeSettings cascadeSettings;       // --cascades, --shadow-map-size
-    bool fitFar = true;                    // --shadow-far scene
-    float cameraStep = 0.0f;               // --camera-motion: metres forward per frame
-    std::vector<Cascade> cascades;         // this frame's
+    bool genericPipelines = false;                 // --pipelines generic
+    CascadeSettings cascadeSettings;               // --cascades, --shadow-map-size
+    bool fitFar = true;                            // --shadow-far scene
+    ShadowRedraw redraw = ShadowRedraw::Scrolled;  // --shadow-redraw
+    uint32_t cameraMotion = 0;                     // --camera-motion: still, walk, creep, turn, jump
+    bool lightWalks = false;                       // --light-motion walk
+    uint32_t farSteps[2]{};                        // how often the fitted far plane stepped up and down
+    std::vector<Cascade> cascades;                 // this frame's
     double passesMs = 0.0;                 // how long createPasses took at start-up (pipelines, mostly)
     std::vector<uint64_t> firstFrameCost;  // fragments bound: the view, then each cascade
 };
@@ -139,9 +150,13 @@ void updateFrame(Chapter& c, uint32_t slot) {
     // The cascades for this frame's camera and sun, over the view from near to where the scene
     // ends (--shadow-far scene) or to the far plane. Without a directional light there are none:
     // every pixel's visibility is 1.
+    // What the shadow pass draws of them (shadow_cache.hpp): what the cascades' moves exposed and
+    // where casters moved, unless --shadow-redraw says more.
+    float lastFar = c.cascades.empty() ? 0.0f : c.cascades.back().splitFar;
     c.cascades = frameCascades(c, view);
-    // Which cascades the shadow pass draws: those whose view changed, or all when geometry moved.
-    updateCascades(c.shadowPass, slot, c.cascades, view, c.lightControls.markerMoves);
+    if (lastFar > 0.0f && !c.cascades.empty() && c.cascades.back().splitFar != lastFar)
+        ++c.farSteps[c.cascades.back().splitFar > lastFar ? 0 : 1];
+    updateCascades(c.device, c.shadowPass, slot, c.cascades, view, c.gpuScene);
     updateLights(c.lightPass, slot, shaderLights(c.scene),
                  {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
 }
@@ -184,9 +199,9 @@ void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t fr
 // cascade, the slice it covers, its texel in the world and how often it was drawn.
 struct ShadowControls {
     bool* fitFar;
-    bool* redrawAlways;
+    ShadowRedraw* redraw;
     const std::vector<Cascade>& cascades;
-    const ShadowPass& pass;
+    ShadowPass& pass;
 };
 
 void shadowWidgets(int* view, const ShadowControls& shadows) {
@@ -195,12 +210,18 @@ void shadowWidgets(int* view, const ShadowControls& shadows) {
     bool debug = *view == 7;
     if (ImGui::Checkbox("show cascades", &debug)) *view = debug ? 7 : 0;
     ImGui::Checkbox("fit last cascade to the scene", shadows.fitFar);
-    ImGui::Checkbox("draw every cascade every frame", shadows.redrawAlways);
+    int form = int(*shadows.redraw);
+    if (ImGui::Combo("redraw", &form, "scrolled\0scrolled-together\0changed\0always\0")) {
+        *shadows.redraw = ShadowRedraw(form);
+        invalidateShadowCache(shadows.pass, *shadows.redraw);
+    }
+    const ShadowCache& cache = shadows.pass.cache;
     for (size_t i = 0; i < shadows.cascades.size(); ++i) {
         const Cascade& cascade = shadows.cascades[i];
-        ImGui::Text("cascade %zu: %.2f..%.2f m, texel %.1f mm, drawn %llu times", i, cascade.splitNear,
-                    cascade.splitFar, cascade.texel * 1000.0f,
-                    static_cast<unsigned long long>(shadows.pass.redraws[i]));
+        ImGui::Text("cascade %zu: %.2f..%.2f m, texel %.1f mm, drawn in %llu frames (%llu whole)", i,
+                    cascade.splitNear, cascade.splitFar, cascade.texel * 1000.0f,
+                    static_cast<unsigned long long>(cache.redraws[i]),
+                    static_cast<unsigned long long>(cache.wholeRedraws[i]));
     }
 }
 
@@ -273,8 +294,8 @@ void createPasses(Chapter& c, uint32_t framesInFlight) {
     c.scenePass =
         createScenePass(c.device, c.pipelineCache.handle, c.target.extent, c.gpuScene, framesInFlight,
                         kBookGBuffer, {"chapter-16/scene.vert", "chapter-16/scene.frag"}, c.genericPipelines);
-    c.shadowPass =
-        createShadowPass(c.device, c.pipelineCache.handle, c.cascadeSettings, c.scenePass, framesInFlight);
+    c.shadowPass = createShadowPass(c.device, c.pipelineCache.handle, c.cascadeSettings, c.redraw,
+                                    c.scenePass, c.gpuScene, framesInFlight);
     c.lightPass =
         createLightPass(c.device, c.pipelineCache.handle, c.target.extent, c.scenePass.gbuffer,
                         framesInFlight, uint32_t(c.scene.lights.size()),
@@ -366,11 +387,11 @@ void setUp(Chapter& c, const common::Options& options) {
     // No depth clamping on this device: the cascades reach toward the sun as far as the scene does
     // (its bounds, updateFrame).
     c.cascadeSettings.reachCasters = !c.device.depthClamp;
-    const float kCameraSteps[] = {0.0f, 0.02f, 1e-4f};
-    c.cameraStep = kCameraSteps[chosen("camera-motion")];
+    c.cameraMotion = chosen("camera-motion");
+    c.lightWalks = chosen("light-motion") == 1;
+    c.redraw = ShadowRedraw(chosen("shadow-redraw"));
     double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
-    c.shadowPass.redrawAlways = chosen("shadow-redraw") == 1;
     c.passesMs = common::millisecondsSinceStart() - passesStart;
     std::vector<std::string> passes{"shadow", "scene", "light", "post"};
     if (c.gui.enabled) passes.push_back("gui");
@@ -401,6 +422,7 @@ void setUp(Chapter& c, const common::Options& options) {
 bool recreateTarget(Chapter& c) {
     if (!common::recreateTargetImages(c.target, c.device)) return false;
     resizeScenePass(c.device, c.scenePass, c.target.extent);
+    invalidateShadowCache(c.shadowPass, c.redraw);  // every cascade drawn whole again
     resizeLightPass(c.device, c.lightPass, c.target.extent, c.scenePass.gbuffer);
     common::resizePostPass(c.device, c.postPass, c.lightPass.output);
     // The window may have moved to a screen with other formats: what writes the image follows.
@@ -427,6 +449,34 @@ void handleInput(Chapter& c, double& lastTime, common::KeyPress& viewKey, common
     if (common::pressedOnce(c.target.window, fxaaKey) && keys) c.fxaa = !c.fxaa;
 }
 
+// --camera-motion and --light-motion: the camera and the point light moved by fixed steps each
+// frame, for the tests and benchmarks of the shadow cache.
+void moveForTesting(Chapter& c, uint32_t frame) {
+    glm::vec3 forward = common::cameraForward(c.camera);
+    switch (c.cameraMotion) {
+        case 1:
+            c.camera.position += forward * 0.02f;
+            break;  // walk
+        case 2:
+            c.camera.position += forward * 1e-4f;
+            break;  // creep
+        case 3:
+            c.camera.yaw += 0.5f;
+            break;  // turn
+        case 4:     // jump
+            c.camera.position += forward * 0.02f;
+            if (frame % 8 == 7) c.camera.position += forward * (frame % 16 == 7 ? 5.0f : -5.0f);
+            break;
+        default:
+            break;
+    }
+    if (c.lightWalks && c.lightControls.point >= 0) {
+        glm::vec3 step = glm::normalize(glm::vec3(forward.x, 0.0f, forward.z) + glm::vec3(1e-6f, 0.0f, 0.0f));
+        glm::vec3 position = c.scene.lights[size_t(c.lightControls.point)].position + step * 0.02f;
+        common::placePointLight(c.lightControls, c.scene, c.gpuScene, position);
+    }
+}
+
 //> frame-loop
 void frameLoop(Chapter& c, const common::Options& options) {
     double lastTime = glfwGetTime();
@@ -438,7 +488,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         common::FrameSync& sync = c.frames[slot];
         ImDrawData* overlay = common::drawGui(c.gui, c.target, frame, [&] {
             overlayWidgets(c.gui, c.run, &c.lightView.view, &c.fxaa, c.lightControls, c.scene, c.gpuScene,
-                           {&c.fitFar, &c.shadowPass.redrawAlways, c.cascades, c.shadowPass});
+                           {&c.fitFar, &c.redraw, c.cascades, c.shadowPass});
         });
         handleInput(c, lastTime, viewKey, fxaaKey);
 
@@ -454,7 +504,7 @@ void frameLoop(Chapter& c, const common::Options& options) {
         VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
         if (c.gui.enabled) common::updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
-        if (c.cameraStep > 0.0f) c.camera.position += common::cameraForward(c.camera) * c.cameraStep;
+        moveForTesting(c, frame);
         updateFrame(c, slot);
         recordFrame(c, sync, slot, frame, imageIndex, overlay);
 
@@ -489,16 +539,23 @@ void frameLoop(Chapter& c, const common::Options& options) {
 
 // A row per cascade for --benchmark's report (the shadow pass draws them all at once, so the GPU
 // times them together, on the "shadow" row): the slice it covers, its texel's size in the world,
-// and in how many frames it was drawn.
+// in how many frames it was drawn (and drawn whole), and what it cost a frame on average: texels
+// cleared and drawn, draws and triangles submitted.
 std::vector<std::pair<std::string, std::string>> describeCascades(const Chapter& c) {
     std::vector<std::pair<std::string, std::string>> rows;
+    const ShadowCache& cache = c.shadowPass.cache;
+    double frames = double(std::max<uint64_t>(cache.frames, 1));
     for (size_t i = 0; i < c.cascades.size(); ++i) {
         const Cascade& cascade = c.cascades[i];
-        char text[160];
-        std::snprintf(text, sizeof(text), "%.2f..%.2f m, texel %.2f mm, drawn in %llu of %llu frames",
-                      cascade.splitNear, cascade.splitFar, cascade.texel * 1000.0f,
-                      static_cast<unsigned long long>(c.shadowPass.redraws[i]),
-                      static_cast<unsigned long long>(c.shadowPass.frames));
+        char text[256];
+        std::snprintf(
+            text, sizeof(text),
+            "%.2f..%.2f m, texel %.2f mm, drawn in %llu of %llu frames (%llu whole); a frame: "
+            "%.0f texels, %.1f draws, %.0f triangles",
+            cascade.splitNear, cascade.splitFar, cascade.texel * 1000.0f,
+            static_cast<unsigned long long>(cache.redraws[i]), static_cast<unsigned long long>(cache.frames),
+            static_cast<unsigned long long>(cache.wholeRedraws[i]), double(cache.texels[i]) / frames,
+            double(cache.draws[i]) / frames, double(cache.triangles[i]) / frames);
         rows.push_back({"shadow_cascade_" + std::to_string(i), text});
     }
     return rows;
@@ -550,12 +607,30 @@ void report(Chapter& c, const common::Options& options) {
         bound += (bound.empty() ? "" : ", ") + std::to_string(fragments);
     info.push_back({"first_frame_fragments_bound", bound + " (the view, then each cascade)"});
     common::reportRun(c.run, c.device, info);
-    // How often each cascade was drawn: once for a still camera, more as it moves.
-    std::string drawn;
-    for (uint32_t i = 0; i < c.cascadeSettings.count; ++i)
-        drawn += (i ? ", " : "") + std::to_string(c.shadowPass.redraws[i]);
-    std::printf("chapter-16: cascades drawn %s times in %llu frames\n", drawn.c_str(),
-                static_cast<unsigned long long>(c.shadowPass.frames));
+    // How often each cascade was drawn (anything: whole, bands, moving casters), and drawn whole:
+    // once for a still camera, more as it moves; then what a frame drew of each, on average.
+    const ShadowCache& cache = c.shadowPass.cache;
+    std::string drawn, whole, texels, draws;
+    double frames = double(std::max<uint64_t>(cache.frames, 1));
+    auto append = [](std::string& list, const char* format, double value) {
+        char text[64];
+        std::snprintf(text, sizeof(text), format, value);
+        if (!list.empty()) list += ", ";
+        list += text;
+    };
+    for (uint32_t i = 0; i < c.cascadeSettings.count; ++i) {
+        append(drawn, "%.0f", double(cache.redraws[i]));
+        append(whole, "%.0f", double(cache.wholeRedraws[i]));
+        append(texels, "%.0f", double(cache.texels[i]) / frames);
+        append(draws, "%.1f", double(cache.draws[i]) / frames);
+    }
+    std::printf("chapter-16: cascades drawn %s times in %llu frames (whole %s)\n", drawn.c_str(),
+                static_cast<unsigned long long>(cache.frames), whole.c_str());
+    std::printf("chapter-16: a frame drew %s texels and %s draws per cascade; %llu draws culled\n",
+                texels.c_str(), draws.c_str(), static_cast<unsigned long long>(cache.culled));
+    if (c.farSteps[0] + c.farSteps[1] > 0)
+        std::printf("chapter-16: the fitted far plane stepped up %u and down %u times\n", c.farSteps[0],
+                    c.farSteps[1]);
     if (c.gui.enabled)
         std::printf("chapter-16: GUI buffers grew %u times, to %zu vertices and %zu indices\n",
                     c.guiPass.growths, c.guiPass.largestVertices, c.guiPass.largestIndices);

@@ -115,8 +115,7 @@ VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDesc
     return common::createPipelineLayout(device, layouts, pushConstants, "shadow");
 }
 
-CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
-                              uint32_t redraw) {
+CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView) {
     CascadeUniform uniform{};
     for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
         uniform.viewProjection[i] = cascades[i].viewProjection;
@@ -125,13 +124,12 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
     }
     uniform.cameraView = cameraView;
     uniform.count = int32_t(cascades.size());
-    uniform.redraw = redraw;
     return uniform;
 }
 
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
-                            const CascadeSettings& settings, const ScenePass& scenePass,
-                            uint32_t framesInFlight) {
+                            const CascadeSettings& settings, ShadowRedraw redraw, const ScenePass& scenePass,
+                            const common::GpuScene& scene, uint32_t framesInFlight) {
     VkFormatProperties properties;
     vkGetPhysicalDeviceFormatProperties(device.physical, kMomentsFormat, &properties);
     VkFormatFeatureFlags needed =
@@ -141,6 +139,7 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
             "this device cannot render to and sample R32G32_SFLOAT, the shadow map's format");
     ShadowPass pass;
     pass.settings = settings;
+    pass.cache = createShadowCache(redraw, settings.mapSize, settings.count, scene.draws.size());
     // The scene pass's depth format (D32_SFLOAT, as the book's; X8_D24 on a device without it): the
     // depth only orders the casters, the moments keep their depth in 32-bit floats.
     pass.depthFormat = scenePass.formats.depth;
@@ -161,12 +160,13 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     pass.readLayout = common::createDescriptorSetLayout(
         device,
         {common::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
-         common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)},
+         common::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
+         common::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)},
         "light: shadows");
     pass.descriptorPool =
         common::createDescriptorPool(device, 2 * framesInFlight,
                                      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * framesInFlight},
-                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight}},
+                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * framesInFlight}},
                                      "shadow");
     // The moments are read as they are, one texel per sample (the book blurs nothing either).
     pass.sampler =
@@ -186,6 +186,10 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                                      VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
         common::writeBufferDescriptor(device, pass.readSets.back(), 1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       pass.cascades.back().handle, sizeof(CascadeUniform));
+        // The moving casters' map, until there is one: the moments (the light pass reads binding 3
+        // only for a cascade whose bit is set in `moving`).
+        common::writeImageDescriptor(device, pass.readSets.back(), 3, pass.sampler, pass.moments.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     }
 
     pass.pipelineLayout = createShadowPipelineLayout(device, pass.cascadesLayout, scenePass);
@@ -194,63 +198,82 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     return pass;
 }
 
+namespace {
+
+// The moving casters' map, the first time a caster moves: a second image as the moments (the
+// fault layer's out-of-memory test fails this allocation), named in the light pass's sets once no
+// frame in flight reads them.
+void makeMovingMap(const common::Device& device, ShadowPass& pass) {
+    VK_CHECK(vkDeviceWaitIdle(device.handle));
+    VkExtent2D mapExtent{pass.settings.mapSize, pass.settings.mapSize};
+    pass.movingMoments =
+        common::createLayeredImage(device, mapExtent, pass.settings.count, kMomentsFormat,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                   VK_IMAGE_ASPECT_COLOR_BIT, "shadow moments: moving casters");
+    for (VkDescriptorSet set : pass.readSets)
+        common::writeImageDescriptor(device, set, 3, pass.sampler, pass.movingMoments.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    pass.movingDefined = false;
+}
+
+}  // namespace
+
 //> redraw
-uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
-                        const glm::mat4& cameraView, uint64_t geometryVersion) {
-    if (geometryVersion != pass.drawnGeometry || pass.redrawAlways) pass.held = 0;
-    pass.redraw = 0;
-    for (size_t i = 0; i < cascades.size() && i < kMaxCascades; ++i) {
-        // The same matrix to the bit (computeCascades snaps it, so a camera moving within a texel
-        // gives the same one) over the same geometry: the layer already holds this cascade.
-        bool same = (pass.held >> i & 1u) &&
-                    std::memcmp(&pass.drawnWith[i], &cascades[i].viewProjection, sizeof(glm::mat4)) == 0;
-        if (same) continue;
-        pass.redraw |= 1u << i;
-        pass.drawnWith[i] = cascades[i].viewProjection;
-        ++pass.redraws[i];
+void updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
+                    const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
+                    const common::GpuScene& scene) {
+    // Where every draw is now, for the plan's culling and for noticing which moved.
+    std::vector<CasterInput> casters;
+    casters.reserve(scene.draws.size());
+    for (const common::Draw& draw : scene.draws) {
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        casters.push_back({draw.model, mesh.boundsMin, mesh.boundsMax, mesh.indexCount / 3});
     }
-    // The first frame clears every layer, whatever there is to draw (no sun: no cascades, every
-    // pixel's visibility 1); the light pass reads them all.
-    if (pass.frames == 0) pass.redraw = (1u << pass.settings.count) - 1u;
-    pass.held = (1u << cascades.size()) - 1u;
-    pass.drawnGeometry = geometryVersion;
-    ++pass.frames;
-    CascadeUniform uniform = cascadeUniform(cascades, cameraView, pass.redraw);
+    pass.plan = planShadows(pass.cache, cascades, casters);
+    if (!pass.plan.moving.empty() && pass.movingMoments.handle == VK_NULL_HANDLE) makeMovingMap(device, pass);
+    CascadeUniform uniform = cascadeUniform(cascades, cameraView);
+    uniform.moving = pass.plan.movingLayers;
+    for (uint32_t i = 0; i < kMaxCascades; ++i)
+        uniform.layerOffset[i] = glm::ivec4(pass.plan.layerOffset[i], 0, 0);
     std::memcpy(pass.cascades[frame].mapped, &uniform, sizeof(uniform));
-    return pass.redraw;
 }
 //< redraw
 
-//> record-shadow
-void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
-                      const common::GpuScene& scene, uint32_t frame) {
-    if (pass.redraw == 0) return;  // every layer holds its cascade: nothing to draw
+void invalidateShadowCache(ShadowPass& pass, ShadowRedraw redraw) {
+    pass.cache.form = redraw;
+    pass.cache.valid = false;
+}
+
+namespace {
+
+// One rendering into `moments` (every layer; the depth image beside it): first `clears` (colour to
+// "nothing", depth to 1), then each batch's scissor cleared in its layers and its draws drawn.
+void recordShadowRendering(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
+                           const common::GpuScene& scene, uint32_t frame, const common::Image& moments,
+                           VkImageLayout before, const std::vector<std::pair<uint32_t, TexelRect>>& clears,
+                           const std::vector<ShadowBatch>& batches, bool clearBatches) {
+    VkPipelineStageFlags2 depthStages =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     // The moments to ATTACHMENT_OPTIMAL once earlier frames' light passes have read them, keeping
-    // the layers not drawn again (the first time, from UNDEFINED: every layer is drawn).
-    VkImageLayout momentsBefore = pass.frames > 1 && pass.redraw != (1u << pass.settings.count) - 1u
-                                      ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
-                                      : VK_IMAGE_LAYOUT_UNDEFINED;
+    // what the layers hold (UNDEFINED the first time: every layer is then cleared).
     std::array<VkImageMemoryBarrier2, 2> init{
-        common::imageBarrier(pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, momentsBefore,
+        common::imageBarrier(moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, before,
                              VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                              VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                              VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT),
         // The previous drawing's depth writes made available before this one's clear writes again.
         common::imageBarrier(
             pass.depth.handle, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
-            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            depthStages,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
     common::pipelineBarrier(cmd, init.data(), uint32_t(init.size()));
 
-    // Every layer at once: layerCount is the cascade count, and gl_Layer picks each triangle's
-    // (the geometry shader skips the cascades not drawn this frame, whose layers are loaded and
-    // kept). The layers drawn are cleared first.
+    // Every layer at once: layerCount is the cascade count; the geometry shader sends each draw to
+    // the layers its firstInstance names. What is not cleared and drawn is loaded and kept.
     uint32_t size = pass.settings.mapSize;
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = pass.moments.view,
+                                    .imageView = moments.view,
                                     .imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
                                     .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
@@ -266,54 +289,103 @@ void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePa
                               .pColorAttachments = &color,
                               .pDepthAttachment = &depth};
     common::vk13.CmdBeginRendering(cmd, &rendering);
-    std::array<VkClearAttachment, 2> clears{
+    std::array<VkClearAttachment, 2> clearValues{
         VkClearAttachment{
             VK_IMAGE_ASPECT_COLOR_BIT, 0, {.color = {{1.0f, 1.0f, 0.0f, 0.0f}}}},  // nothing: far
         VkClearAttachment{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}}};
-    for (uint32_t layer = 0; layer < pass.settings.count; ++layer) {
-        if ((pass.redraw >> layer & 1u) == 0) continue;
-        VkClearRect rect{{{0, 0}, {size, size}}, layer, 1};
-        vkCmdClearAttachments(cmd, uint32_t(clears.size()), clears.data(), 1, &rect);
-    }
-    VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    VkRect2D scissor{{0, 0}, {size, size}};
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    auto clear = [&](const TexelRect& r, uint32_t layer) {
+        VkClearRect rect{{{r.x0, r.y0}, {uint32_t(r.x1 - r.x0), uint32_t(r.y1 - r.y0)}}, layer, 1};
+        vkCmdClearAttachments(cmd, uint32_t(clearValues.size()), clearValues.data(), 1, &rect);
+    };
+    for (const auto& [layer, rect] : clears) clear(rect, layer);
     std::array<VkDescriptorSet, 2> shared{pass.cascadesSets[frame], scenePass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelineLayout, 0, 2, shared.data(), 0,
                             nullptr);
-    recordShadowDraws(cmd, pass.pipelineLayout, pass.opaque, pass.cutout, scenePass, scene);
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const ShadowBatch& batch : batches) {
+        if (clearBatches)
+            for (uint32_t layer = 0; layer < pass.settings.count; ++layer)
+                if (batch.layers >> layer & 1u) clear(batch.scissor, layer);
+        if (batch.draws.empty()) continue;
+        // The box's texel (0, 0) where the layer holds it; drawing only inside the scissor.
+        VkViewport viewport{
+            float(batch.viewport.x), float(batch.viewport.y), float(size), float(size), 0.0f, 1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        const TexelRect& r = batch.scissor;
+        VkRect2D scissor{{r.x0, r.y0}, {uint32_t(r.x1 - r.x0), uint32_t(r.y1 - r.y0)}};
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        for (const ShadowDraw& draw : batch.draws)
+            recordShadowDraw(cmd, pass.pipelineLayout, pass.opaque, pass.cutout, bound, scenePass, scene,
+                             draw.draw, draw.layers);
+    }
     common::vk13.CmdEndRendering(cmd);
 
     // The moments to READ_ONLY_OPTIMAL for the light pass's fragment shader.
     VkImageMemoryBarrier2 finish = common::imageBarrier(
-        pass.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
+        moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     common::pipelineBarrier(cmd, &finish, 1);
 }
+
+}  // namespace
+
+//> record-shadow
+void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
+                      const common::GpuScene& scene, uint32_t frame) {
+    const ShadowPlan& plan = pass.plan;
+    // The cached map: the layers and bands this frame draws (nothing when nothing changed).
+    if (!plan.cached.empty()) {
+        recordShadowRendering(
+            cmd, pass, scenePass, scene, frame, pass.moments,
+            pass.momentsDefined ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, {},
+            plan.cached, true);
+        pass.momentsDefined = true;
+    }
+    // The moving casters' map: cleared where it held casters, then this frame's moving casters.
+    if (pass.movingMoments.handle == VK_NULL_HANDLE ||
+        (plan.moving.empty() && plan.movingClears.empty() && pass.movingDefined))
+        return;
+    std::vector<std::pair<uint32_t, TexelRect>> clears = plan.movingClears;
+    if (!pass.movingDefined) {  // its first frame: every layer cleared whole
+        int32_t size = int32_t(pass.settings.mapSize);
+        clears.clear();
+        for (uint32_t layer = 0; layer < pass.settings.count; ++layer)
+            clears.push_back({layer, {0, 0, size, size}});
+    }
+    recordShadowRendering(cmd, pass, scenePass, scene, frame, pass.movingMoments,
+                          pass.movingDefined ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+                          clears, plan.moving, false);
+    pass.movingDefined = true;
+}
 //< record-shadow
 
 //> shadow-draws
+void recordShadowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
+                      VkPipeline& bound, const ScenePass& scenePass, const common::GpuScene& scene,
+                      uint32_t drawIndex, uint32_t firstInstance) {
+    const common::Draw& draw = scene.draws[drawIndex];
+    VkPipeline pipeline = scene.materials[draw.material].alphaTested ? cutout : opaque;
+    if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
+    const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+    VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
+                            &scenePass.materialTextureSets[draw.material], 0, nullptr);
+    DrawConstants constants{draw.model, {}};
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t),
+                       &draw.material);
+    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
+}
+
 void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
                        const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance) {
     VkPipeline bound = VK_NULL_HANDLE;
-    for (const common::Draw& draw : scene.draws) {
-        VkPipeline pipeline = scene.materials[draw.material].alphaTested ? cutout : opaque;
-        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
-        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        VkDeviceSize offset = 0;
-        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
-        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
-                                &scenePass.materialTextureSets[draw.material], 0, nullptr);
-        DrawConstants constants{draw.model, {}};
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t),
-                           &draw.material);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
-    }
+    for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i)
+        recordShadowDraw(cmd, layout, opaque, cutout, bound, scenePass, scene, i, firstInstance);
 }
 //< shadow-draws
 
@@ -324,7 +396,7 @@ void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, 
     common::replacePipeline(swap, pass.opaque,
                             [&] { return makeShadowPipeline(device, cache, pass, false); });
     common::replacePipeline(swap, pass.cutout, [&] { return makeShadowPipeline(device, cache, pass, true); });
-    pass.held = 0;  // drawn again with the new shaders
+    pass.cache.valid = false;  // drawn again with the new shaders
 }
 
 void destroyShadowPass(const common::Device& device, ShadowPass& pass) {
@@ -336,6 +408,7 @@ void destroyShadowPass(const common::Device& device, ShadowPass& pass) {
     for (common::Buffer& buffer : pass.cascades) common::destroyBuffer(device, buffer);
     vkDestroyDescriptorSetLayout(device.handle, pass.readLayout, nullptr);
     vkDestroyDescriptorSetLayout(device.handle, pass.cascadesLayout, nullptr);
+    if (pass.movingMoments.handle != VK_NULL_HANDLE) common::destroyImage(device, pass.movingMoments);
     common::destroyImage(device, pass.depth);
     common::destroyImage(device, pass.moments);
     pass = {};

@@ -19,20 +19,23 @@
 #include "common/vk/device.hpp"
 #include "common/vk/image.hpp"
 #include "common/vk/pipeline.hpp"
+#include "shadow_cache.hpp"
 
 inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
 
 // What the geometry shader and the light pass read about the cascades (std140): each cascade's
 // light view-projection, where each cascade's slice ends (view distance), how many there are,
-// and the camera's view matrix (the light pass picks a cascade by view depth).
+// the camera's view matrix (the light pass picks a cascade by view depth), and where each
+// cascade's box starts in its layer (shadow_cache.hpp: the layers are addressed toroidally).
 struct CascadeUniform {
     glm::mat4 viewProjection[kMaxCascades];
     glm::vec4 splitFar;   // x, y, z, w: cascades 0..3
     glm::vec4 texelSize;  // a texel's size in the world, per cascade
     glm::mat4 cameraView;
     int32_t count;
-    uint32_t redraw;  // bit i: cascade i is drawn this frame (the others keep their layer)
+    uint32_t moving;  // bit i: the moving casters' map holds casters of cascade i
     int32_t padding[2];
+    glm::ivec4 layerOffset[kMaxCascades];  // x, y: the texel where the box's first texel lies
 };
 
 // The shaders of a shadow pipeline, chapter-16's by default: the model matrix, then the geometry
@@ -49,20 +52,25 @@ struct ShadowPipelineShaders {
 // `alphaTest`: the cut-outs' pipeline (constant_id 0 ALPHA_TEST); `layout` as ShadowPass's.
 VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,
                                 VkFormat depthFormat, const ShadowPipelineShaders& shaders, bool alphaTest);
-// The scene's draws into a shadow map, inside a rendering: each with its material's pipeline
-// (cut-out or opaque), its mesh, its textures (set 2) and its model matrix and material (push
-// constants); sets 0 and 1 bound by the caller. `firstInstance` reaches the vertex shader as
-// gl_InstanceIndex (chapter-15-lab's pass per cascade: the cascade).
+// One of the scene's draws into a shadow map, inside a rendering: with its material's pipeline
+// (cut-out or opaque; `bound` the one bound last), its mesh, its textures (set 2) and its model
+// matrix and material (push constants); sets 0 and 1 bound by the caller. `firstInstance`
+// reaches the vertex shader as gl_InstanceIndex: chapter-16's the layers the geometry shader sends
+// the draw to (bit i: cascade i), chapter-15-lab's pass per cascade its cascade.
+void recordShadowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
+                      VkPipeline& bound, const ScenePass& scenePass, const common::GpuScene& scene,
+                      uint32_t draw, uint32_t firstInstance);
+// Every draw of the scene so (chapter-15-lab's study, which draws every cascade whole).
 void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,
-                       const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance = 0);
+                       const ScenePass& scenePass, const common::GpuScene& scene, uint32_t firstInstance);
 
 // The shadow pipelines' layout: set 0 `cascades` (the cascade uniform), sets 1 and 2 the scene
 // pass's materials and textures, and the scene pass's push constants.
 VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDescriptorSetLayout cascades,
                                             const ScenePass& scenePass);
-// The cascade uniform for `cascades`, the camera's view and the cascades to draw (bits).
-CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
-                              uint32_t redraw);
+// The cascade uniform for `cascades` and the camera's view; each box at its layer's first texel
+// and no moving casters' map (shadow_pass.cpp adds them for chapter-16's cache).
+CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::mat4& cameraView);
 
 struct ShadowPass {
     CascadeSettings settings;
@@ -79,30 +87,32 @@ struct ShadowPass {
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline opaque = VK_NULL_HANDLE;  // constant_id 0 ALPHA_TEST off
     VkPipeline cutout = VK_NULL_HANDLE;
-    // What each layer holds, so that a cascade is drawn again only when what it sees changed.
-    bool redrawAlways = false;            // --shadow-redraw always: every cascade every frame
-    uint32_t held = 0;                    // bit i: layer i holds cascade i as drawnWith[i] says
-    glm::mat4 drawnWith[kMaxCascades]{};  // the matrix each layer was drawn with
-    uint64_t drawnGeometry = 0;           // the scene's geometry version it was drawn from
-    uint32_t redraw = 0;                  // this frame's cascades to draw (updateCascades)
-    uint64_t redraws[kMaxCascades]{};     // how many frames drew each cascade
-    uint64_t frames = 0;                  // frames updateCascades saw
+    // What each layer holds and what this frame draws (shadow_cache.hpp): --shadow-redraw.
+    ShadowCache cache;
+    ShadowPlan plan;
+    bool momentsDefined = false;  // the moments hold what an earlier frame drew (else UNDEFINED)
+    // The moving casters' map, made the first time a caster moves (--shadow-redraw scrolled), as
+    // `moments`; until then the light pass's binding 3 names `moments` (never read).
+    common::Image movingMoments;
+    bool movingDefined = false;
 };
 
 // Throws Failure when the device cannot render to and sample R32G32_SFLOAT; `scenePass` lends its materials
 // and textures sets.
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
-                            const CascadeSettings& settings, const ScenePass& scenePass,
-                            uint32_t framesInFlight);
-// This frame's cascades into frame slot `frame`'s uniform, and which of them the shadow pass
-// draws: those whose matrix differs from the one their layer was drawn with, or all of them when
-// the scene's geometry moved (`geometryVersion` differs from the last drawing's), after a shader
-// reload, or with redrawAlways. Returns the mask (0: the pass records nothing this frame).
-uint32_t updateCascades(ShadowPass& pass, uint32_t frame, const std::vector<Cascade>& cascades,
-                        const glm::mat4& cameraView, uint64_t geometryVersion);
-void recordShadowPass(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
+                            const CascadeSettings& settings, ShadowRedraw redraw, const ScenePass& scenePass,
+                            const common::GpuScene& scene, uint32_t framesInFlight);
+// This frame's cascades into frame slot `frame`'s uniform, and what the shadow pass draws of
+// them (planShadows, shadow_cache.hpp) for the scene's draws where they are now. Makes the moving
+// casters' map the first time the plan needs it (after waiting for the device).
+void updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
+                    const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
+                    const common::GpuScene& scene);
+void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame);
 void destroyShadowPass(const common::Device& device, ShadowPass& pass);
+// Every layer drawn whole next frame (a resize; a change of --shadow-redraw in the overlay).
+void invalidateShadowCache(ShadowPass& pass, ShadowRedraw redraw);
 // Live reload: new pipelines into `swap` when the reload changed a shadow shader (every cascade is
 // then drawn again).
 void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,

@@ -50,7 +50,6 @@ void placePointLight(LightControls& controls, Scene& scene, GpuScene& gpuScene, 
     light.position = position;
     controls.moved = true;
     if (light.marker < 0) return;
-    ++controls.markerMoves;
     Transform transform = scene.models[size_t(light.marker)].transform;
     transform.position = light.position;
     glm::mat4 matrix = transform.matrix();

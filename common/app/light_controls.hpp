@@ -25,7 +25,6 @@ struct LightControls {
     float sunAngle = 270.0f;
     glm::vec3 sunHeading{0.0f, 0.0f, 1.0f};  // unit, horizontal; (0, 0, 1) for a sun with none
     bool moved = false;                      // a light changed this frame
-    uint64_t markerMoves = 0;                // the point light's marker moved (the scene's geometry changed)
 };
 
 // The help lines of these keys, for the overlay's timings window.

@@ -17,6 +17,6 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(lightOutput);
     if (pixel.x >= size.x || pixel.y >= size.y) return;  // the last row and column of groups overhang
-    imageStore(lightOutput, pixel, shadePixel((vec2(pixel) + 0.5) / vec2(size), pixel, 1.0));
+    imageStore(lightOutput, pixel, shadePixel(readGBuffer((vec2(pixel) + 0.5) / vec2(size)), pixel, 1.0));
 }
 //< light-comp

@@ -14,10 +14,10 @@ layout(location = 0) out vec4 outColor;
 
 void main() {
     float visibility = 1.0;
+    SurfaceSample s = readGBuffer(inUv);
 #ifdef SUN_SHADOWS
     // --shadows: the sun's visibility at the pixel first (chapter-16's light pass); view 6, the
     // visibility alone.
-    SurfaceSample s = readGBuffer(inUv);
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
     visibility = s.surface && cascades.count > 0 ? labSunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
@@ -26,6 +26,6 @@ void main() {
         return;
     }
 #endif
-    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy), visibility);
+    outColor = shadePixel(s, ivec2(gl_FragCoord.xy), visibility);
 }
 //< light-frag

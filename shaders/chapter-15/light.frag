@@ -11,6 +11,6 @@ layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy), 1.0);  // no shadows: the sun reaches every pixel
+    outColor = shadePixel(readGBuffer(inUv), ivec2(gl_FragCoord.xy), 1.0);  // no shadows: the sun reaches every pixel
 }
 //< light-frag

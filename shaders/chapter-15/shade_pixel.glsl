@@ -2,10 +2,9 @@
 // asks for. Needs readGBuffer() and shadeLights() declared first (light_shading.glsl).
 
 //> shade-pixel
-// `uv`: the pixel's texel centre (0..1); `pixel`: its integer coordinates; `sunLight`:
-// how much of the sun reaches the pixel (1.0 without shadows; light_loop.glsl).
-vec4 shadePixel(vec2 uv, ivec2 pixel, float sunLight) {
-    SurfaceSample s = readGBuffer(uv);
+// `s`: what the G-buffer holds at the pixel (readGBuffer); `pixel`: its integer coordinates;
+// `sunLight`: how much of the sun reaches the pixel (1.0 without shadows; light_loop.glsl).
+vec4 shadePixel(SurfaceSample s, ivec2 pixel, float sunLight) {
     if (show.view == 1) {
         vec3 world = s.position + scene.cameraPosition;
         return vec4(s.surface ? clamp((world - show.boundsMin.xyz) / (show.boundsMax.xyz - show.boundsMin.xyz), 0.0, 1.0)

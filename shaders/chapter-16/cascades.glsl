@@ -11,7 +11,8 @@ struct Cascades {
     vec4 texelSize;                     // a texel's size in the world, per cascade
     mat4 cameraView;                    // world -> the camera's view
     int count;
-    uint redraw;                        // bit i: cascade i is drawn this frame
+    uint moving;                        // bit i: the moving casters' map holds casters of cascade i
+    ivec4 layerOffset[MAX_CASCADES];    // xy: where each box's first texel lies in its layer
 };
 
 #endif

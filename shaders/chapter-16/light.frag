@@ -24,14 +24,14 @@ void main() {
     if (show.view == 6) {  // --view shadow-map: each cascade's layer side by side, depth as grey
         float x = inUv.x * float(cascades.count);
         int layer = min(int(x), cascades.count - 1);
-        outColor = vec4(vec3(textureLod(shadowMoments, vec3(fract(x), inUv.y, float(layer)), 0.0).r), 1.0);
+        outColor = vec4(vec3(shadowMomentsAt(vec2(fract(x), inUv.y), layer).r), 1.0);
         return;
     }
     if (show.view == 8) {  // --view visibility: the sun's visibility alone, white where it reaches
         outColor = vec4(vec3(visibility), 1.0);
         return;
     }
-    outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy), visibility);
+    outColor = shadePixel(s, ivec2(gl_FragCoord.xy), visibility);
     // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from.
     if (show.view == 7 && s.surface && cascades.count > 0) outColor.rgb *= kCascadeColors[cascade];
 }

@@ -11,6 +11,7 @@ layout(triangles, invocations = MAX_CASCADES) in;
 layout(triangle_strip, max_vertices = 3) out;
 
 layout(location = 0) in vec2 inUv[];
+layout(location = 1) flat in uint inLayers[];  // the cascades this draw goes to (a bit each)
 layout(location = 0) out vec2 outUv;
 
 layout(std140, set = 0, binding = 0) uniform CascadeBlock {
@@ -18,8 +19,9 @@ layout(std140, set = 0, binding = 0) uniform CascadeBlock {
 };
 
 void main() {
-    // Past the scene's cascades, or a cascade whose layer already holds what it sees: nothing.
-    if (gl_InvocationID >= cascades.count || (cascades.redraw >> gl_InvocationID & 1u) == 0u) return;
+    // Past the scene's cascades, or a cascade the draw does not go to (its layer holds what it
+    // sees, or the draw's bounds miss the cascade's box): nothing.
+    if (gl_InvocationID >= cascades.count || (inLayers[0] >> gl_InvocationID & 1u) == 0u) return;
     for (int i = 0; i < 3; ++i) {
         outUv = inUv[i];
         gl_Layer = gl_InvocationID;

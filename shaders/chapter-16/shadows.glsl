@@ -7,6 +7,23 @@ layout(set = 3, binding = 0) uniform sampler2DArray shadowMoments;
 layout(std140, set = 3, binding = 1) uniform CascadeBlock {
     Cascades cascades;
 };
+layout(set = 3, binding = 3) uniform sampler2DArray movingMoments;  // the moving casters' map
+
+// The moments at `uv` of cascade `cascade`'s box (0..1 across it, clamped to its edge texels).
+// The layers are addressed toroidally (chapter-16/shadow_cache.hpp): the box's texel t lies at
+// (t + layerOffset) modulo the map. Where the moving casters' map holds casters of this cascade,
+// the nearer occluder of the two maps -- what one map with every caster drawn would hold.
+vec2 shadowMomentsAt(vec2 uv, int cascade) {
+    ivec2 size = textureSize(shadowMoments, 0).xy;
+    ivec2 texel = clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - 1);
+    ivec3 place = ivec3((texel + cascades.layerOffset[cascade].xy) & (size - 1), cascade);  // sizes: 2^k
+    vec2 moments = texelFetch(shadowMoments, place, 0).rg;
+    if ((cascades.moving >> cascade & 1u) != 0u) {
+        vec2 moving = texelFetch(movingMoments, place, 0).rg;
+        if (moving.x < moments.x) moments = moving;
+    }
+    return moments;
+}
 
 // The cascade whose slice holds a point at view distance `distance`: the first that ends beyond it.
 int cascadeOf(float distance) {
@@ -35,7 +52,7 @@ float sunVisibility(vec3 world, vec3 N, int cascade) {
     vec3 offset = world + N * (1.5 * cascades.texelSize[cascade]);
     vec4 clip = cascades.viewProjection[cascade] * vec4(offset, 1.0);
     vec2 uv = clip.xy * 0.5 + 0.5;  // the shadow pass's viewport is not flipped: y down
-    vec2 moments = textureLod(shadowMoments, vec3(uv, float(cascade)), 0.0).rg;
+    vec2 moments = shadowMomentsAt(uv, cascade);
     return chebyshevUpperBound(moments, clip.z);
 }
 //< shadows
