@@ -285,6 +285,7 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
     for (uint32_t i = 0; i < cache.count; ++i) {
         if (plan.texels[i] > 0) ++cache.redraws[i];
         if (whole >> i & 1u) ++cache.wholeRedraws[i];
+        if (plan.movingLayers >> i & 1u) ++cache.movingFrames[i];
         cache.texels[i] += plan.texels[i];
         cache.draws[i] += plan.draws[i];
         cache.triangles[i] += plan.triangles[i];

@@ -125,6 +125,7 @@ struct ShadowCache {
     uint64_t draws[kMaxCascades]{};
     uint64_t triangles[kMaxCascades]{};
     uint64_t culled = 0;  // draws not submitted to a cascade being drawn, for being outside it
+    uint64_t movingFrames[kMaxCascades]{};  // frames whose moving casters reached each cascade
 };
 
 ShadowCache createShadowCache(ShadowRedraw form, uint32_t mapSize, uint32_t count, size_t draws);

@@ -138,6 +138,114 @@ add_test(NAME chapter-16.walk-same-image COMMAND image_compare ${TEST_OUT}/chapt
     --size 320 180 --golden ${TEST_OUT}/chapter-16-walk-always.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-16.walk-same-image PROPERTIES FIXTURES_REQUIRED "ch16-walk-changed;ch16-walk-always")
 
+# Scrolled cascades (chapter-16/shadow_cache.cpp, the default --shadow-redraw): a cascade that
+# moved by whole texels keeps what it still covers and draws only the exposed bands. After 60
+# frames of walking (2 cm a frame), turning (0.5 degrees), creeping (0.1 mm) and jumping (5 m
+# forward or back every 8th frame, more than the first cascades' width: drawn whole), the frame
+# is the one drawing every cascade every frame gives, to the bit; the scrolled runs draw few
+# cascades whole (the first frame, a jump, a step of the fitted far plane or of a depth window).
+# The jump's walk steps the fitted far plane up and down.
+foreach(case "walk;whole 1, 1, 1" "turn;whole [1-9], [1-9], [1-9]" "creep;whole 1, 1, 1"
+             "jump;whole 8, 8, 8\\).*the fitted far plane stepped up [1-9] and down [1-9] times")
+    list(GET case 0 motion)
+    list(GET case 1 expected)
+    foreach(redraw scrolled always)
+        if(redraw STREQUAL "always")
+            set(expected "whole 60, 60, 60")
+        endif()
+        chapter_test(chapter-16.scroll-${motion}-${redraw} WORKDIR /
+            COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 60 --camera-motion ${motion}
+                    --shadow-redraw ${redraw} --screenshot ${TEST_OUT}/chapter-16-scroll-${motion}-${redraw}.png
+            EXPECT_STDOUT "cascades drawn [0-9, ]+ times in 60 frames \\(${expected}" QUIET_STDERR)
+        set_tests_properties(chapter-16.scroll-${motion}-${redraw} PROPERTIES FIXTURES_SETUP ch16-scroll-${motion}-${redraw})
+    endforeach()
+    add_test(NAME chapter-16.scroll-${motion}-same-image COMMAND image_compare
+        ${TEST_OUT}/chapter-16-scroll-${motion}-scrolled.png --size 320 180
+        --golden ${TEST_OUT}/chapter-16-scroll-${motion}-always.png --max-diff 0 --max-fraction 0)
+    set_tests_properties(chapter-16.scroll-${motion}-same-image PROPERTIES
+        FIXTURES_REQUIRED "ch16-scroll-${motion}-scrolled;ch16-scroll-${motion}-always")
+endforeach()
+
+# Along the light: the sun and the camera straight down (shadows/sun_down.json), the camera
+# walking down -- the cascades' depth windows step (drawn whole) where their boxes do not move.
+foreach(case "scrolled;whole [2-9], [2-9], [2-9]" "always;whole 100, 100, 100")
+    list(GET case 0 redraw)
+    list(GET case 1 expected)
+    chapter_test(chapter-16.along-light-${redraw} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 100 --camera-motion walk
+                --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/sun_down.json --shadow-redraw ${redraw}
+                --screenshot ${TEST_OUT}/chapter-16-along-light-${redraw}.png
+        EXPECT_STDOUT "chapter-16: 2 draws.*in 100 frames \\(${expected}\\)" QUIET_STDERR)
+    set_tests_properties(chapter-16.along-light-${redraw} PROPERTIES FIXTURES_REQUIRED gltf-cases
+        FIXTURES_SETUP ch16-along-light-${redraw})
+endforeach()
+add_test(NAME chapter-16.along-light-same-image COMMAND image_compare
+    ${TEST_OUT}/chapter-16-along-light-scrolled.png --size 320 180
+    --golden ${TEST_OUT}/chapter-16-along-light-always.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.along-light-same-image PROPERTIES
+    FIXTURES_REQUIRED "ch16-along-light-scrolled;ch16-along-light-always")
+
+# Moving casters: the point light and its marker walk toward the camera (5 cm a frame) from the
+# last cascade into the middle one, while the camera walks. Every form draws the frame that
+# drawing everything every frame does, to the bit: scrolled (the marker drawn apart, into the
+# moving casters' map, in the cascades it reaches), scrolled-together (its old and new place
+# redrawn in the cached map), changed (every cascade whole). The marker's shadow moved: the image
+# is not the one with the light still.
+foreach(redraw scrolled scrolled-together changed always still)
+    set(options --light-motion walk --shadow-redraw ${redraw})
+    set(expected "chapter-16: 19 draws")
+    if(redraw STREQUAL "still")
+        set(options)
+    elseif(redraw STREQUAL "scrolled")
+        set(expected "moving casters drawn apart in 0, [1-9][0-9]*, [1-9][0-9]* frames")
+    endif()
+    chapter_test(chapter-16.moving-caster-${redraw} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 120 --camera-motion walk ${options}
+                --screenshot ${TEST_OUT}/chapter-16-moving-caster-${redraw}.png
+        EXPECT_STDOUT "${expected}" QUIET_STDERR)
+    set_tests_properties(chapter-16.moving-caster-${redraw} PROPERTIES
+        FIXTURES_SETUP ch16-moving-caster-${redraw})
+    if(NOT redraw MATCHES "^(always|still)$")
+        add_test(NAME chapter-16.moving-caster-${redraw}-same-image COMMAND image_compare
+            ${TEST_OUT}/chapter-16-moving-caster-${redraw}.png --size 320 180
+            --golden ${TEST_OUT}/chapter-16-moving-caster-always.png --max-diff 0 --max-fraction 0)
+        set_tests_properties(chapter-16.moving-caster-${redraw}-same-image PROPERTIES
+            FIXTURES_REQUIRED "ch16-moving-caster-${redraw};ch16-moving-caster-always")
+    endif()
+endforeach()
+add_test(NAME chapter-16.moving-caster-shadow-moved COMMAND image_compare
+    ${TEST_OUT}/chapter-16-moving-caster-scrolled.png --size 320 180
+    --golden ${TEST_OUT}/chapter-16-moving-caster-still.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.moving-caster-shadow-moved PROPERTIES WILL_FAIL TRUE
+    FIXTURES_REQUIRED "ch16-moving-caster-scrolled;ch16-moving-caster-still")
+
+# A resize mid-walk (--resize at frame 30 of 60): every cascade drawn whole again after it, and
+# the frame the always-redrawn one.
+foreach(case "scrolled;whole 2, 2, 2" "always;whole 60, 60, 60")
+    list(GET case 0 redraw)
+    list(GET case 1 expected)
+    chapter_test(chapter-16.resize-walk-${redraw} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 60 --resize 400x240
+                --camera-motion walk --shadow-redraw ${redraw}
+                --screenshot ${TEST_OUT}/chapter-16-resize-walk-${redraw}.png
+        EXPECT_STDOUT "in 60 frames \\(${expected}\\)" QUIET_STDERR)
+    set_tests_properties(chapter-16.resize-walk-${redraw} PROPERTIES FIXTURES_SETUP ch16-resize-walk-${redraw})
+endforeach()
+add_test(NAME chapter-16.resize-walk-same-image COMMAND image_compare
+    ${TEST_OUT}/chapter-16-resize-walk-scrolled.png --size 400 240
+    --golden ${TEST_OUT}/chapter-16-resize-walk-always.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.resize-walk-same-image PROPERTIES
+    FIXTURES_REQUIRED "ch16-resize-walk-scrolled;ch16-resize-walk-always")
+
+# A reload of the shadow shader mid-walk (tests/chapters/shadow_reload_walk.sh: an edit that
+# changes the code, not what it computes): the layers drawn whole with the new pipelines, and the
+# last frame the always-redrawn one.
+chapter_test(chapter-16.reload-walk WORKDIR /
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/chapters/shadow_reload_walk.sh ${PROJECT_SOURCE_DIR}/shaders ${CH16}
+            $<TARGET_FILE:image_compare> ${TEST_OUT}/chapter-16-reload-walk
+    EXPECT_STDOUT "shadow_reload_walk: ok")
+set_tests_properties(chapter-16.reload-walk PROPERTIES TIMEOUT 300)
+
 # The box over the plane seen with near 0.01 and far 1000 (a scene much smaller than the view;
 # extreme logarithmic splits), with the last cascade ending where the scene does and at the far
 # plane: the shadow exactly where it was. The box scenes' camera is 10 above the plane, so the
@@ -245,12 +353,12 @@ add_test(NAME chapter-16.book-scene-image COMMAND image_compare ${TEST_OUT}/chap
     --size 640 360 --golden ${GOLDEN}/chapter-16-book-scene.png --max-diff 5 --max-fraction 0.001)
 set_tests_properties(chapter-16.book-scene-image PROPERTIES FIXTURES_REQUIRED ch16-book)
 
-# A scene without a sun: the first frame clears the layers (the light pass reads them), and no
-# cascade is ever drawn; finite output, validation clean.
+# A scene without a sun: the first frame clears the layers (the light pass reads them: counted as
+# drawn whole once), and nothing is ever drawn into them; finite output, validation clean.
 chapter_test(chapter-16.no-sun WORKDIR /
     COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 5 --check-output
             --scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/shadows/no_sun.json
-    EXPECT_STDOUT "cascades drawn 0, 0, 0 times in 5 frames.*light output 320x180: 0 NaN, 0 infinite, 0 negative"
+    EXPECT_STDOUT "cascades drawn 1, 1, 1 times in 5 frames \\(whole 1, 1, 1\\).*0.0, 0.0, 0.0 draws per cascade.*light output 320x180: 0 NaN, 0 infinite, 0 negative"
     QUIET_STDERR)
 set_tests_properties(chapter-16.no-sun PROPERTIES FIXTURES_REQUIRED gltf-cases)
 

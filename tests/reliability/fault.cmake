@@ -138,6 +138,12 @@ fault_test(fault.chapter-15.benchmark-lost-at-query-results FAULT vkGetQueryPool
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 320 --height 180
             --benchmark --warmup 1 --frames 4
     EXPECT_STDERR "^chapter-15: error: ${LOST}vkGetQueryPoolResults ${LOST_END}")
+# The moving casters' map (chapter-16/shadow_pass.cpp), made mid-run the first time a caster moves
+# (--light-motion walk: the point light's marker): one line naming it, exit code 1.
+fault_test(fault.chapter-16.oom-moving-casters FAULT vkAllocateMemory:65
+    COMMAND $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless --width 320 --height 180
+            --frames 3 --light-motion walk
+    EXPECT_STDERR "^chapter-16: error: ${OOM_NAMED}shadow moments: moving casters\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
 
 # In a window (Xvfb): the device lost at frame 3's vkAcquireNextImageKHR and at its
 # vkQueuePresentKHR, and out of memory while the swapchain's images are rebuilt after a resize.
