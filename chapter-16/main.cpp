@@ -39,6 +39,7 @@
 #include "common/core/files.hpp"
 #include "common/core/report.hpp"
 #include "common/model/load_model.hpp"
+#include "common/passes/fullscreen.hpp"
 #include "common/passes/gui_pass.hpp"
 #include "common/passes/post_pass.hpp"
 #include "common/scene/camera.hpp"
@@ -156,7 +157,11 @@ void updateFrame(Chapter& c, uint32_t slot) {
     c.cascades = frameCascades(c, view);
     if (lastFar > 0.0f && !c.cascades.empty() && c.cascades.back().splitFar != lastFar)
         ++c.farSteps[c.cascades.back().splitFar > lastFar ? 0 : 1];
-    updateCascades(c.device, c.shadowPass, slot, c.cascades, view, c.gpuScene);
+    // The first time a caster moves, the light pipeline is made again to read the moving casters'
+    // map too (until then a still scene pays nothing for it).
+    if (updateCascades(c.device, c.shadowPass, slot, c.cascades, view, c.gpuScene))
+        common::respecializeFullscreenPipeline(c.device, c.pipelineCache.handle, c.lightPass.pipeline,
+                                               kMovingCastersConstant, VK_TRUE);
     updateLights(c.lightPass, slot, shaderLights(c.scene),
                  {c.camera.position, c.scene.ambientIntensity, c.scene.ambientColor, 0u});
 }

@@ -219,7 +219,7 @@ void makeMovingMap(const common::Device& device, ShadowPass& pass) {
 }  // namespace
 
 //> redraw
-void updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
+bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
                     const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
                     const common::GpuScene& scene) {
     // Where every draw is now, for the plan's culling and for noticing which moved.
@@ -230,12 +230,14 @@ void updateCascades(const common::Device& device, ShadowPass& pass, uint32_t fra
         casters.push_back({draw.model, mesh.boundsMin, mesh.boundsMax, mesh.indexCount / 3});
     }
     pass.plan = planShadows(pass.cache, cascades, casters);
-    if (!pass.plan.moving.empty() && pass.movingMoments.handle == VK_NULL_HANDLE) makeMovingMap(device, pass);
+    bool made = !pass.plan.moving.empty() && pass.movingMoments.handle == VK_NULL_HANDLE;
+    if (made) makeMovingMap(device, pass);
     CascadeUniform uniform = cascadeUniform(cascades, cameraView);
     uniform.moving = pass.plan.movingLayers;
     for (uint32_t i = 0; i < kMaxCascades; ++i)
         uniform.layerOffset[i] = glm::ivec4(pass.plan.layerOffset[i], 0, 0);
     std::memcpy(pass.cascades[frame].mapped, &uniform, sizeof(uniform));
+    return made;
 }
 //< redraw
 

@@ -22,6 +22,9 @@
 #include "shadow_cache.hpp"
 
 inline constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;
+// The light shader's specialisation constant MOVING_CASTERS (shadows.glsl): whether it reads the
+// moving casters' map.
+inline constexpr uint32_t kMovingCastersConstant = 5;
 
 // What the geometry shader and the light pass read about the cascades (std140): each cascade's
 // light view-projection, where each cascade's slice ends (view distance), how many there are,
@@ -104,8 +107,9 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const common::GpuScene& scene, uint32_t framesInFlight);
 // This frame's cascades into frame slot `frame`'s uniform, and what the shadow pass draws of
 // them (planShadows, shadow_cache.hpp) for the scene's draws where they are now. Makes the moving
-// casters' map the first time the plan needs it (after waiting for the device).
-void updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
+// casters' map the first time the plan needs it, after waiting for the device: returns true then
+// (the light pipeline is to read it from now on: kMovingCastersConstant).
+bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
                     const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
                     const common::GpuScene& scene);
 void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,

@@ -1,6 +1,9 @@
 // Full-screen pipelines.
 #include "common/passes/fullscreen.hpp"
 
+#include <algorithm>
+#include <cstring>
+
 #include "common/core/check.hpp"
 #include "common/core/files.hpp"
 #include "common/shaders/shader_watch.hpp"
@@ -64,6 +67,21 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
     }
     result.pipeline = makePipeline(device, cache, result);
     return result;
+}
+
+void respecializeFullscreenPipeline(const Device& device, VkPipelineCache cache, FullscreenPipeline& pipeline,
+                                    uint32_t id, uint32_t value) {
+    auto entry = std::find_if(pipeline.constants.begin(), pipeline.constants.end(),
+                              [&](const VkSpecializationMapEntry& e) { return e.constantID == id; });
+    if (entry == pipeline.constants.end()) {
+        pipeline.constants.push_back({id, uint32_t(pipeline.constantData.size()), sizeof(uint32_t)});
+        pipeline.constantData.resize(pipeline.constantData.size() + sizeof(uint32_t));
+        entry = pipeline.constants.end() - 1;
+    }
+    std::memcpy(pipeline.constantData.data() + entry->offset, &value, sizeof(uint32_t));
+    VkPipeline made = makePipeline(device, cache, pipeline);
+    vkDestroyPipeline(device.handle, pipeline.pipeline, nullptr);
+    pipeline.pipeline = made;
 }
 
 void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline) {

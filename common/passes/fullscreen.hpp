@@ -33,6 +33,11 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
                                             uint32_t pushConstantSize,
                                             const VkSpecializationInfo* specialization = nullptr);
 void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline);
+// The pipeline made again with the 32-bit specialisation constant `id` set to `value` (added
+// when it has no such constant), for the rest of the run and its reloads; the old one destroyed
+// at once: the caller has waited for the device.
+void respecializeFullscreenPipeline(const Device& device, VkPipelineCache cache, FullscreenPipeline& pipeline,
+                                    uint32_t id, uint32_t value);
 
 // Live reload: when `reload` changed fullscreen.vert or the pipeline's fragment shader, a new
 // pipeline from the new code into `swap` (same layout, format and constants).

@@ -13,26 +13,32 @@ layout(location = 0) in vec2 inUv;
 
 layout(location = 0) out vec4 outColor;
 
-const vec3 kCascadeColors[4] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.25, 1.0),
-                                      vec3(1.0, 1.0, 0.25));
-
 void main() {
     SurfaceSample s = readGBuffer(inUv);
     vec3 world = s.position + scene.cameraPosition;
     int cascade = cascadeOf(-(cascades.cameraView * vec4(world, 1.0)).z);
-    float visibility = s.surface && cascades.count > 0 ? sunVisibility(world, surfaceNormal(s.normal), cascade) : 1.0;
-    if (show.view == 6) {  // --view shadow-map: each cascade's layer side by side, depth as grey
-        float x = inUv.x * float(cascades.count);
-        int layer = min(int(x), cascades.count - 1);
-        outColor = vec4(vec3(shadowMomentsAt(vec2(fract(x), inUv.y), layer).r), 1.0);
+    // One read of the shadow map per pixel: at the surface point, or with --view shadow-map (6)
+    // at the pixel's place in its cascade's layer, the layers side by side (depth as grey). (A
+    // second read in a branch of its own costs every pixel on a CPU driver, taken or not.)
+    bool showMap = show.view == 6 && cascades.count > 0;
+    float x = inUv.x * float(cascades.count);
+    int layer = showMap ? min(int(x), cascades.count - 1) : cascade;
+    vec3 coord = showMap ? vec3(fract(x), inUv.y, 0.0) : shadowCoord(world, surfaceNormal(s.normal), cascade);
+    vec2 moments = shadowMomentsAt(coord.xy, layer);
+    if (showMap) {
+        outColor = vec4(vec3(moments.r), 1.0);
         return;
     }
+    float visibility = s.surface && cascades.count > 0 ? chebyshevUpperBound(moments, coord.z) : 1.0;
     if (show.view == 8) {  // --view visibility: the sun's visibility alone, white where it reaches
         outColor = vec4(vec3(visibility), 1.0);
         return;
     }
     outColor = shadePixel(s, ivec2(gl_FragCoord.xy), visibility);
-    // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from.
-    if (show.view == 7 && s.surface && cascades.count > 0) outColor.rgb *= kCascadeColors[cascade];
+    // --view cascades (7): the final image tinted by the cascade each pixel takes its shadow from:
+    // red, green, blue, yellow.
+    if (show.view == 7 && s.surface && cascades.count > 0)
+        outColor.rgb *= vec3(cascade == 0 || cascade == 3 ? 1.0 : 0.25, cascade == 1 || cascade == 3 ? 1.0 : 0.25,
+                             cascade == 2 ? 1.0 : 0.25);
 }
 //< light-frag
