@@ -124,6 +124,11 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
     }
     uniform.cameraView = cameraView;
     uniform.count = int32_t(cascades.size());
+    // The light's view looks along the light: its third row is minus that direction.
+    if (!cascades.empty()) {
+        const glm::mat4& view = cascades[0].view;
+        uniform.toSun = glm::vec4(view[0][2], view[1][2], view[2][2], 0.0f);
+    }
     return uniform;
 }
 

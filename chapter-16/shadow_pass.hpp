@@ -39,6 +39,7 @@ struct CascadeUniform {
     uint32_t moving;  // bit i: the moving casters' map holds casters of cascade i
     int32_t padding[2];
     glm::ivec4 layerOffset[kMaxCascades];  // x, y: the texel where the box's first texel lies
+    glm::vec4 toSun;                       // xyz: unit vector toward the sun, world space
 };
 
 // The shaders of a shadow pipeline, chapter-16's by default: the model matrix, then the geometry
