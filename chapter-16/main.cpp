@@ -84,8 +84,7 @@ const common::ChapterInfo kChapter{
       "degrees about y, jump: walk, and every 8th frame 5 m forward or back"},
      {"light-motion",
       {"still", "walk"},
-      "(testing, benchmarks) move the point light (and its marker) 2 cm a frame along the camera's "
-      "forward direction"}},
+      "(testing, benchmarks) move the point light (and its marker) 5 cm a frame toward the camera, level"}},
 };
 
 //> chapter-state

@@ -168,7 +168,12 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
         const ShadowCache::Held& held = cache.held[i];
         glm::i64vec2 shift = cascades[i].origin - held.origin;
         bool far = shift.x <= -n || shift.x >= n || shift.y <= -n || shift.y >= n;
-        if (!sameKey(held, cascades[i]) || far || (!scrolls && shift != glm::i64vec2(0))) whole |= 1u << i;
+        // Past 2^22 texels from the light view's origin a float no longer holds the box's edge to
+        // a small fraction of a texel: such a cascade is drawn whole whenever it moves.
+        const int64_t kScrollLimit = int64_t(1) << 22;
+        bool exact = std::abs(cascades[i].origin.x) < kScrollLimit && std::abs(cascades[i].origin.y) < kScrollLimit;
+        bool scrolled = scrolls && exact;
+        if (!sameKey(held, cascades[i]) || far || (!scrolled && shift != glm::i64vec2(0))) whole |= 1u << i;
     }
     for (uint32_t i = count; i < kMaxCascades; ++i) cache.held[i].valid = false;
 
