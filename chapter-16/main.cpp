@@ -83,8 +83,9 @@ const common::ChapterInfo kChapter{
       "(testing, benchmarks) move the camera every frame: walk 2 cm forward, creep 0.1 mm, turn 0.5 "
       "degrees about y, jump: walk, and every 8th frame 5 m forward or back"},
      {"light-motion",
-      {"still", "walk"},
-      "(testing, benchmarks) move the point light (and its marker) 5 cm a frame toward the camera, level"}},
+      {"still", "walk", "walk-stop"},
+      "(testing, benchmarks) move the point light (and its marker) 5 cm a frame toward the camera, "
+      "level; walk-stop: for the first 30 frames only"}},
 };
 
 //> chapter-state
@@ -116,7 +117,7 @@ struct Chapter {
     bool fitFar = true;                            // --shadow-far scene
     ShadowRedraw redraw = ShadowRedraw::Scrolled;  // --shadow-redraw
     uint32_t cameraMotion = 0;                     // --camera-motion: still, walk, creep, turn, jump
-    bool lightWalks = false;                       // --light-motion walk
+    uint32_t lightMotion = 0;                      // --light-motion: still, walk, walk-stop
     uint32_t farSteps[2]{};                        // how often the fitted far plane stepped up and down
     std::vector<Cascade> cascades;                 // this frame's
     double passesMs = 0.0;                 // how long createPasses took at start-up (pipelines, mostly)
@@ -391,7 +392,7 @@ void setUp(Chapter& c, const common::Options& options) {
     // (its bounds, updateFrame).
     c.cascadeSettings.reachCasters = !c.device.depthClamp;
     c.cameraMotion = chosen("camera-motion");
-    c.lightWalks = chosen("light-motion") == 1;
+    c.lightMotion = chosen("light-motion");
     c.redraw = ShadowRedraw(chosen("shadow-redraw"));
     double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
@@ -473,7 +474,8 @@ void moveForTesting(Chapter& c, uint32_t frame) {
         default:
             break;
     }
-    if (c.lightWalks && c.lightControls.point >= 0) {
+    bool lightWalks = c.lightMotion == 1 || (c.lightMotion == 2 && frame < 30);
+    if (lightWalks && c.lightControls.point >= 0) {
         glm::vec3 step = glm::normalize(glm::vec3(forward.x, 0.0f, forward.z) + glm::vec3(1e-6f, 0.0f, 0.0f));
         glm::vec3 position = c.scene.lights[size_t(c.lightControls.point)].position - step * 0.05f;
         common::placePointLight(c.lightControls, c.scene, c.gpuScene, position);

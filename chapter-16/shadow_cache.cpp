@@ -140,7 +140,9 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
     const int32_t n = cache.mapSize;
     const uint32_t count = uint32_t(std::min<size_t>(cascades.size(), cache.count));
     if (cache.models.size() != casters.size()) {  // another scene: nothing held is known
+        std::vector<std::pair<uint32_t, TexelRect>> movingDrawn = std::move(cache.movingDrawn);
         cache = createShadowCache(cache.form, uint32_t(n), cache.count, casters.size());
+        cache.movingDrawn = std::move(movingDrawn);  // still to be cleared in the moving map
     }
     bool scrolls = cache.form == ShadowRedraw::Scrolled || cache.form == ShadowRedraw::ScrolledTogether;
     bool apart = cache.form == ShadowRedraw::Scrolled;
@@ -168,10 +170,11 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
         const ShadowCache::Held& held = cache.held[i];
         glm::i64vec2 shift = cascades[i].origin - held.origin;
         bool far = shift.x <= -n || shift.x >= n || shift.y <= -n || shift.y >= n;
-        // Past 2^22 texels from the light view's origin a float no longer holds the box's edge to
-        // a small fraction of a texel: such a cascade is drawn whole whenever it moves.
-        const int64_t kScrollLimit = int64_t(1) << 22;
-        bool exact = std::abs(cascades[i].origin.x) < kScrollLimit && std::abs(cascades[i].origin.y) < kScrollLimit;
+        // Past 2^18 texels from the light view's origin a float holds the box's edge to no better
+        // than 1/64 texel: such a cascade is drawn whole whenever it moves.
+        const int64_t kScrollLimit = int64_t(1) << 18;
+        bool exact =
+            std::abs(cascades[i].origin.x) < kScrollLimit && std::abs(cascades[i].origin.y) < kScrollLimit;
         bool scrolled = scrolls && exact;
         if (!sameKey(held, cascades[i]) || far || (!scrolled && shift != glm::i64vec2(0))) whole |= 1u << i;
     }
@@ -214,14 +217,16 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
                                          wrap(cascades[i].origin.y - held.base.y, n));
     }
 
-    // The layers drawn whole: one batch, each draw into the layers whose box it reaches.
+    // The layers drawn whole: one batch, each draw into the layers whose box it reaches (with
+    // Always, the book's way, into every layer: no culling, the reference the others must match).
     if (whole != 0) {
         ShadowBatch batch{{0, 0, n, n}, {0, 0}, whole, {}};
+        bool cull = cache.form != ShadowRedraw::Always;
         for (uint32_t d : cachedDraws) {
             uint32_t layers = 0;
             for (uint32_t i = 0; i < count; ++i) {
                 if ((whole >> i & 1u) == 0) continue;
-                if (casterTexels(cascades[i], bounds[d], n).empty()) {
+                if (cull && casterTexels(cascades[i], bounds[d], n).empty()) {
                     ++cache.culled;
                     continue;
                 }

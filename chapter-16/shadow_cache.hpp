@@ -8,8 +8,9 @@
 //     offset (layerOffset) to the place it reads.
 //   static and moving casters apart: a draw whose model moved is drawn every frame into a second
 //     image (the moving casters'), only in the cascades its bounds touch, and the light pass takes
-//     the nearer of the two maps' occluders; the cached map keeps the static casters and is never
-//     drawn again for a moving one. A draw that stops moving for kSettleFrames goes back into it.
+//     the nearer of the two maps' occluders; the cached map keeps the static casters and never
+//     holds a moving one (where a draw starts moving, that place is redrawn without it once). A
+//     draw that stops moving for kSettleFrames goes back into it.
 //   culling: every draw's bounds in the light's view, against each cascade's box and band, before
 //     recording; a draw is submitted only where it can cover a texel being drawn.
 // Plain planning on the CPU (shadow_pass.cpp records the plan); tests/unit/shadow_cache_test.cpp.

@@ -121,6 +121,13 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
         uniform.viewProjection[i] = cascades[i].viewProjection;
         uniform.splitFar[int(i)] = cascades[i].splitFar;
         uniform.texelSize[int(i)] = cascades[i].texel;
+        // The book's variance floor, 0.00002, is in depths over a range as deep as the box is
+        // wide (2 (radius + texel)); the depth window is deeper (computeCascades: a step to
+        // spare, or reaching the casters), and a depth difference smaller by that ratio: the
+        // floor smaller by its square keeps the bound the book's for the same occluders.
+        float scale =
+            2.0f * (cascades[i].radius + cascades[i].texel) / (cascades[i].depthFar - cascades[i].depthNear);
+        uniform.varianceFloor[int(i)] = 0.00002f * scale * scale;
     }
     uniform.cameraView = cameraView;
     uniform.count = int32_t(cascades.size());

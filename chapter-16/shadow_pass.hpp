@@ -40,6 +40,7 @@ struct CascadeUniform {
     int32_t padding[2];
     glm::ivec4 layerOffset[kMaxCascades];  // x, y: the texel where the box's first texel lies
     glm::vec4 toSun;                       // xyz: unit vector toward the sun, world space
+    glm::vec4 varianceFloor;               // per cascade: the Chebyshev bound's least variance
 };
 
 // The shaders of a shadow pipeline, chapter-16's by default: the model matrix, then the geometry

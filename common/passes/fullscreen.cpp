@@ -71,17 +71,18 @@ FullscreenPipeline createFullscreenPipeline(const Device& device, VkPipelineCach
 
 void respecializeFullscreenPipeline(const Device& device, VkPipelineCache cache, FullscreenPipeline& pipeline,
                                     uint32_t id, uint32_t value) {
-    auto entry = std::find_if(pipeline.constants.begin(), pipeline.constants.end(),
+    FullscreenPipeline changed = pipeline;  // the pipeline keeps its constants if this one fails
+    auto entry = std::find_if(changed.constants.begin(), changed.constants.end(),
                               [&](const VkSpecializationMapEntry& e) { return e.constantID == id; });
-    if (entry == pipeline.constants.end()) {
-        pipeline.constants.push_back({id, uint32_t(pipeline.constantData.size()), sizeof(uint32_t)});
-        pipeline.constantData.resize(pipeline.constantData.size() + sizeof(uint32_t));
-        entry = pipeline.constants.end() - 1;
+    if (entry == changed.constants.end()) {
+        changed.constants.push_back({id, uint32_t(changed.constantData.size()), sizeof(uint32_t)});
+        changed.constantData.resize(changed.constantData.size() + sizeof(uint32_t));
+        entry = changed.constants.end() - 1;
     }
-    std::memcpy(pipeline.constantData.data() + entry->offset, &value, sizeof(uint32_t));
-    VkPipeline made = makePipeline(device, cache, pipeline);
+    std::memcpy(changed.constantData.data() + entry->offset, &value, sizeof(uint32_t));
+    changed.pipeline = makePipeline(device, cache, changed);
     vkDestroyPipeline(device.handle, pipeline.pipeline, nullptr);
-    pipeline.pipeline = made;
+    pipeline = std::move(changed);
 }
 
 void destroyFullscreenPipeline(const Device& device, FullscreenPipeline& pipeline) {

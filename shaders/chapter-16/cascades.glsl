@@ -14,6 +14,7 @@ struct Cascades {
     uint moving;                        // bit i: the moving casters' map holds casters of cascade i
     ivec4 layerOffset[MAX_CASCADES];    // xy: where each box's first texel lies in its layer
     vec4 toSun;                         // xyz: unit vector toward the sun, world space
+    vec4 varianceFloor;                 // per cascade: the Chebyshev bound's least variance
 };
 
 #endif

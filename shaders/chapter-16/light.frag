@@ -34,7 +34,7 @@ void main() {
         outColor = vec4(vec3(moments.r), 1.0);
         return;
     }
-    float visibility = lookUp ? chebyshevUpperBound(moments, coord.z) : 1.0;
+    float visibility = lookUp ? chebyshevUpperBound(moments, coord.z, cascades.varianceFloor[cascade]) : 1.0;
     if (show.view == 8) {  // --view visibility: the sun's visibility alone, white where it reaches
         outColor = vec4(vec3(visibility), 1.0);
         return;

@@ -38,9 +38,12 @@ int cascadeOf(float distance) {
 
 // Chebyshev's upper bound on the fraction of light reaching depth t past the moments' occluders,
 // with the book's variance floor and light-bleeding reduction.
-float chebyshevUpperBound(vec2 moments, float t) {
+// `varianceFloor`: the book's 0.00002 for a depth range as deep as the cascade's box is wide; our
+// depth windows are deeper (computeCascades), so the floor shrinks with the square of the scale
+// (cascadeUniform) and the bound stays what the book's would be for the same occluders.
+float chebyshevUpperBound(vec2 moments, float t, float varianceFloor) {
     if (t <= moments.x) return 1.0;
-    float variance = max(moments.y - moments.x * moments.x, 0.00002);
+    float variance = max(moments.y - moments.x * moments.x, varianceFloor);
     float d = t - moments.x;
     return smoothstep(0.2, 1.0, variance / (variance + d * d));
 }
@@ -60,6 +63,6 @@ vec3 shadowCoord(vec3 world, vec3 N, int cascade) {
 // 1 where the sun reaches `world`, 0 in its shadow.
 float sunVisibility(vec3 world, vec3 N, int cascade) {
     vec3 coord = shadowCoord(world, N, cascade);
-    return chebyshevUpperBound(shadowMomentsAt(coord.xy, cascade), coord.z);
+    return chebyshevUpperBound(shadowMomentsAt(coord.xy, cascade), coord.z, cascades.varianceFloor[cascade]);
 }
 //< shadows

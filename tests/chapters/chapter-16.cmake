@@ -189,8 +189,10 @@ set_tests_properties(chapter-16.along-light-same-image PROPERTIES
 # last cascade into the middle one, while the camera walks. Every form draws the frame that
 # drawing everything every frame does, to the bit: scrolled (the marker drawn apart, into the
 # moving casters' map, in the cascades it reaches), scrolled-together (its old and new place
-# redrawn in the cached map), changed (every cascade whole). The marker's shadow moved: the image
-# is not the one with the light still.
+# redrawn in the cached map, a cascade whole only at a step of its depth window or the far
+# plane), changed (every cascade whole). The marker's shadow moved: the sun's visibility alone
+# (--view visibility) is not the one with the light still. walk-stop: the marker stops after 30 frames and settles back into the
+# cached map 8 frames later, the image still the always-drawn one.
 foreach(redraw scrolled scrolled-together changed always still)
     set(options --light-motion walk --shadow-redraw ${redraw})
     set(expected "chapter-16: 19 draws")
@@ -198,6 +200,8 @@ foreach(redraw scrolled scrolled-together changed always still)
         set(options)
     elseif(redraw STREQUAL "scrolled")
         set(expected "moving casters drawn apart in 0, [1-9][0-9]*, [1-9][0-9]* frames")
+    elseif(redraw STREQUAL "scrolled-together")
+        set(expected "in 120 frames \\(whole [1-9], [1-9], [1-9]\\)")
     endif()
     chapter_test(chapter-16.moving-caster-${redraw} WORKDIR /
         COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 120 --camera-motion walk ${options}
@@ -213,26 +217,49 @@ foreach(redraw scrolled scrolled-together changed always still)
             FIXTURES_REQUIRED "ch16-moving-caster-${redraw};ch16-moving-caster-always")
     endif()
 endforeach()
+foreach(light walk still)
+    chapter_test(chapter-16.moving-caster-visibility-${light} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 120 --camera-motion walk
+                --light-motion ${light} --view visibility
+                --screenshot ${TEST_OUT}/chapter-16-moving-caster-visibility-${light}.png
+        EXPECT_STDOUT "chapter-16: 19 draws" QUIET_STDERR)
+    set_tests_properties(chapter-16.moving-caster-visibility-${light} PROPERTIES
+        FIXTURES_SETUP ch16-moving-caster-visibility-${light})
+endforeach()
 add_test(NAME chapter-16.moving-caster-shadow-moved COMMAND image_compare
-    ${TEST_OUT}/chapter-16-moving-caster-scrolled.png --size 320 180
-    --golden ${TEST_OUT}/chapter-16-moving-caster-still.png --max-diff 0 --max-fraction 0)
+    ${TEST_OUT}/chapter-16-moving-caster-visibility-walk.png --size 320 180
+    --golden ${TEST_OUT}/chapter-16-moving-caster-visibility-still.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-16.moving-caster-shadow-moved PROPERTIES WILL_FAIL TRUE
-    FIXTURES_REQUIRED "ch16-moving-caster-scrolled;ch16-moving-caster-still")
+    FIXTURES_REQUIRED "ch16-moving-caster-visibility-walk;ch16-moving-caster-visibility-still")
+foreach(redraw scrolled always)
+    chapter_test(chapter-16.moving-caster-settles-${redraw} WORKDIR /
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 60 --camera-motion walk
+                --light-motion walk-stop --shadow-redraw ${redraw}
+                --screenshot ${TEST_OUT}/chapter-16-moving-caster-settles-${redraw}.png
+        EXPECT_STDOUT "chapter-16: 19 draws" QUIET_STDERR)
+    set_tests_properties(chapter-16.moving-caster-settles-${redraw} PROPERTIES
+        FIXTURES_SETUP ch16-moving-caster-settles-${redraw})
+endforeach()
+add_test(NAME chapter-16.moving-caster-settles-same-image COMMAND image_compare
+    ${TEST_OUT}/chapter-16-moving-caster-settles-scrolled.png --size 320 180
+    --golden ${TEST_OUT}/chapter-16-moving-caster-settles-always.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-16.moving-caster-settles-same-image PROPERTIES
+    FIXTURES_REQUIRED "ch16-moving-caster-settles-scrolled;ch16-moving-caster-settles-always")
 
-# A resize mid-walk (--resize at frame 30 of 60): every cascade drawn whole again after it, and
-# the frame the always-redrawn one.
+# A resize mid-walk (--resize at frame 30 of 60, to the same aspect ratio: the cascades' boxes
+# unchanged by it): every cascade drawn whole again after it, and the frame the always-redrawn one.
 foreach(case "scrolled;whole 2, 2, 2" "always;whole 60, 60, 60")
     list(GET case 0 redraw)
     list(GET case 1 expected)
     chapter_test(chapter-16.resize-walk-${redraw} WORKDIR /
-        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 60 --resize 400x240
+        COMMAND ${CH16_RUN} --headless --width 320 --height 180 --frames 60 --resize 640x360
                 --camera-motion walk --shadow-redraw ${redraw}
                 --screenshot ${TEST_OUT}/chapter-16-resize-walk-${redraw}.png
         EXPECT_STDOUT "in 60 frames \\(${expected}\\)" QUIET_STDERR)
     set_tests_properties(chapter-16.resize-walk-${redraw} PROPERTIES FIXTURES_SETUP ch16-resize-walk-${redraw})
 endforeach()
 add_test(NAME chapter-16.resize-walk-same-image COMMAND image_compare
-    ${TEST_OUT}/chapter-16-resize-walk-scrolled.png --size 400 240
+    ${TEST_OUT}/chapter-16-resize-walk-scrolled.png --size 640 360
     --golden ${TEST_OUT}/chapter-16-resize-walk-always.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-16.resize-walk-same-image PROPERTIES
     FIXTURES_REQUIRED "ch16-resize-walk-scrolled;ch16-resize-walk-always")

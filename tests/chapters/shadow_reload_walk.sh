@@ -2,9 +2,9 @@
 # chapter-16's shadow cache across a live reload mid-walk: the chapter walks (--camera-motion walk,
 # the default --shadow-redraw scrolled) with --shader-dir on a copy of the shader sources; while it
 # runs, the shadow pass's fragment shader is edited so that its code changes and what it computes
-# does not (the moments times 1.0). The reload must be reported before the last frame, and the
-# cascades must be drawn whole once more than without the reload, and the last frame must equal
-# the one the same walk draws with every cascade drawn every frame.
+# does not (the moments times 1.0). The reload must be reported before the last frame, the
+# cascades drawn whole more often than without the reload, and the last frame must equal the one
+# the same walk draws with every cascade drawn every frame.
 #
 #   shadow_reload_walk.sh SHADERS CHAPTER IMAGE_COMPARE OUT_PREFIX
 set -u
@@ -41,13 +41,15 @@ pid=
 [ "$status" = 0 ] || fail "the chapter exited with $status"
 grep -q "^shaders: reloaded .*chapter-16/shadow.frag" "$work/stdout" ||
     fail "no reload of chapter-16/shadow.frag reported before frame $frames"
-# The same walk without the reload: every cascade drawn whole once less.
+# The same walk without the reload: no cascade drawn whole fewer times, and at least one more
+# whole drawing in all (one per cascade, unless the reload fell on a frame that drew it whole).
 "$chapter" "${options[@]}" > "$work/plain" || fail "the walk without a reload failed"
 whole() { sed -n 's/^chapter-16: cascades drawn .* (whole \(.*\))$/\1/p' "$1"; }
 reloaded=$(whole "$work/stdout") plain=$(whole "$work/plain")
-expected=$(tr ',' '\n' <<< "$plain" | awk '{printf "%s%d", (NR > 1 ? ", " : ""), $1 + 1}')
-[ -n "$plain" ] && [ "$reloaded" = "$expected" ] ||
-    fail "cascades drawn whole with the reload: $reloaded; without it: $plain (expected one more each)"
+more=$(paste -d' ' <(tr ',' '\n' <<< "$reloaded") <(tr ',' '\n' <<< "$plain") |
+    awk '$1 < $2 {bad = 1} {extra += $1 - $2} END {print (bad || extra < 1) ? "no" : "yes"}')
+[ -n "$plain" ] && [ "$more" = yes ] ||
+    fail "cascades drawn whole with the reload: $reloaded; without it: $plain (expected more)"
 "$chapter" "${options[@]}" --shadow-redraw always --screenshot "$out-always.png" > /dev/null ||
     fail "the always-redrawn walk failed"
 "$image_compare" "$out-scrolled.png" --size 320 180 --golden "$out-always.png" --max-diff 0 --max-fraction 0 ||

@@ -114,10 +114,10 @@ TEST(ShadowCache, ScrolledDrawsWholeOnceThenOnlyExposedBands) {
     Cascade deeper = cascadeAt({3 + n, -2});
     deeper.depthFar = 11.0f;
     EXPECT_EQ(planShadows(cache, {deeper}, casters).wholeLayers, 1u);
-    // Far from the light view's origin (2^22 texels and more) a move draws whole.
+    // Far from the light view's origin (2^18 texels and more) a move draws whole.
     ShadowCache distant = createShadowCache(ShadowRedraw::Scrolled, n, 1, 1);
-    planShadows(distant, {cascadeAt({int64_t(1) << 22, 0})}, casters);
-    EXPECT_EQ(planShadows(distant, {cascadeAt({(int64_t(1) << 22) + 1, 0})}, casters).wholeLayers, 1u);
+    planShadows(distant, {cascadeAt({int64_t(1) << 18, 0})}, casters);
+    EXPECT_EQ(planShadows(distant, {cascadeAt({(int64_t(1) << 18) + 1, 0})}, casters).wholeLayers, 1u);
     // changed: any move draws whole; always: every frame.
     for (ShadowRedraw form : {ShadowRedraw::Changed, ShadowRedraw::Always}) {
         ShadowCache other = createShadowCache(form, n, 1, 1);
