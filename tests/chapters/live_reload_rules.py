@@ -96,7 +96,7 @@ RULES = {
                               ' + 0.0 * dFdxFine(inUv.x));')],
                             None),
     'accept-fewer-resources': ([('chapter-15/light.frag', 'END', '    outColor = vec4(1.0, 0.0, 1.0, 1.0);'),
-                                ('chapter-15/light.frag', 'outColor = shadePixel(inUv, ivec2(gl_FragCoord.xy), 1.0);',
+                                ('chapter-15/light.frag', 'outColor = shadePixel(readGBuffer(inUv), ivec2(gl_FragCoord.xy), 1.0);',
                                  'outColor = vec4(0.0);')],
                                None),
 }
