@@ -271,7 +271,7 @@ chapter_test(chapter-16.reload-walk WORKDIR /
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/chapters/shadow_reload_walk.sh ${PROJECT_SOURCE_DIR}/shaders ${CH16}
             $<TARGET_FILE:image_compare> ${TEST_OUT}/chapter-16-reload-walk
     EXPECT_STDOUT "shadow_reload_walk: ok")
-set_tests_properties(chapter-16.reload-walk PROPERTIES TIMEOUT 300)
+set_tests_properties(chapter-16.reload-walk PROPERTIES TIMEOUT 900)
 
 # The box over the plane seen with near 0.01 and far 1000 (a scene much smaller than the view;
 # extreme logarithmic splits), with the last cascade ending where the scene does and at the far
