@@ -86,6 +86,7 @@ ShadowCache createShadowCache(ShadowRedraw form, uint32_t mapSize, uint32_t coun
     cache.mapSize = int32_t(mapSize);
     cache.count = count;
     cache.models.assign(draws, glm::mat4(1.0f));
+    cache.meshBounds.assign(draws, {glm::vec3(0.0f), glm::vec3(0.0f)});
     cache.still.assign(draws, 0);
     cache.moving.assign(draws, 0);
     return cache;
@@ -153,11 +154,12 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
     bool anyMoved = false;
     std::vector<CasterBounds> bounds(casters.size()), oldBounds(casters.size());
     for (size_t d = 0; d < casters.size(); ++d) {
-        moved[d] = cache.valid && !sameMatrix(cache.models[d], casters[d].model);
+        moved[d] = cache.valid && (!sameMatrix(cache.models[d], casters[d].model) || casters[d].deforms);
         anyMoved = anyMoved || moved[d];
         bounds[d] = casterBounds(lightView, casters[d].model, casters[d].meshMin, casters[d].meshMax);
         if (moved[d])
-            oldBounds[d] = casterBounds(lightView, cache.models[d], casters[d].meshMin, casters[d].meshMax);
+            oldBounds[d] = casterBounds(lightView, cache.models[d], cache.meshBounds[d].first,
+                                        cache.meshBounds[d].second);
     }
 
     // Which layers are drawn whole: all of them the first time (or after a reload or resize) and
@@ -289,7 +291,10 @@ ShadowPlan planShadows(ShadowCache& cache, const std::vector<Cascade>& cascades,
             plan.movingLayers |= 1u << i;
         }
 
-    for (size_t d = 0; d < casters.size(); ++d) cache.models[d] = casters[d].model;
+    for (size_t d = 0; d < casters.size(); ++d) {
+        cache.models[d] = casters[d].model;
+        cache.meshBounds[d] = {casters[d].meshMin, casters[d].meshMax};
+    }
     cache.valid = true;
     ++cache.frames;
     for (uint32_t i = 0; i < cache.count; ++i) {

@@ -99,6 +99,7 @@ struct CasterInput {
     glm::mat4 model{1.0f};
     glm::vec3 meshMin{0.0f}, meshMax{0.0f};
     uint64_t triangles = 0;
+    bool deforms = false;  // its shape changed since the last frame (chapter-17's skinned meshes): it moved
 };
 
 // What each layer holds, and each draw as the cached map last saw it.
@@ -115,6 +116,7 @@ struct ShadowCache {
         glm::i64vec2 base{0};    // the box's origin when it was last drawn whole: layer place 0
     } held[kMaxCascades];
     std::vector<glm::mat4> models;                            // each draw's model as last seen
+    std::vector<std::pair<glm::vec3, glm::vec3>> meshBounds;  // each draw's mesh bounds as last seen
     std::vector<uint32_t> still;                              // frames each draw has not moved
     std::vector<uint8_t> moving;                              // Scrolled: drawn into the moving casters' map
     std::vector<std::pair<uint32_t, TexelRect>> movingDrawn;  // where the moving map holds casters

@@ -97,7 +97,8 @@ namespace {
 
 VkPipeline makeShadowPipeline(const common::Device& device, VkPipelineCache cache, const ShadowPass& pass,
                               bool alphaTest) {
-    return createShadowPipeline(device, cache, pass.pipelineLayout, pass.depthFormat, {}, alphaTest);
+    return createShadowPipeline(device, cache, pass.pipelineLayout, pass.depthFormat, pass.shaders,
+                                alphaTest);
 }
 
 }  // namespace
@@ -141,7 +142,8 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
 
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const CascadeSettings& settings, ShadowRedraw redraw, const ScenePass& scenePass,
-                            const common::GpuScene& scene, uint32_t framesInFlight) {
+                            const common::GpuScene& scene, uint32_t framesInFlight,
+                            const ShadowPipelineShaders& shaders) {
     VkFormatProperties properties;
     vkGetPhysicalDeviceFormatProperties(device.physical, kMomentsFormat, &properties);
     VkFormatFeatureFlags needed =
@@ -151,6 +153,7 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
             "this device cannot render to and sample R32G32_SFLOAT, the shadow map's format");
     ShadowPass pass;
     pass.settings = settings;
+    pass.shaders = shaders;
     pass.cache = createShadowCache(redraw, settings.mapSize, settings.count, scene.draws.size());
     // The scene pass's depth format (D32_SFLOAT, as the book's; X8_D24 on a device without it): the
     // depth only orders the casters, the moments keep their depth in 32-bit floats.
@@ -239,7 +242,7 @@ bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t fra
     casters.reserve(scene.draws.size());
     for (const common::Draw& draw : scene.draws) {
         const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        casters.push_back({draw.model, mesh.boundsMin, mesh.boundsMax, mesh.indexCount / 3});
+        casters.push_back({draw.model, mesh.boundsMin, mesh.boundsMax, mesh.indexCount / 3, mesh.deforms});
     }
     pass.plan = planShadows(pass.cache, cascades, casters);
     bool made = !pass.plan.moving.empty() && pass.movingMoments.handle == VK_NULL_HANDLE;
@@ -405,8 +408,7 @@ void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline 
 
 void remakeShadowPipelines(const common::Device& device, VkPipelineCache cache, ShadowPass& pass,
                            const common::ShaderReload& reload, common::PipelineSwap& swap) {
-    if (!reload.changed({"chapter-16/shadow.vert", "chapter-16/shadow.geom", "chapter-16/shadow.frag"}))
-        return;
+    if (!reload.changed({pass.shaders.vertex, pass.shaders.geometry, pass.shaders.fragment})) return;
     common::replacePipeline(swap, pass.opaque,
                             [&] { return makeShadowPipeline(device, cache, pass, false); });
     common::replacePipeline(swap, pass.cutout, [&] { return makeShadowPipeline(device, cache, pass, true); });

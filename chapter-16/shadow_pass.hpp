@@ -79,8 +79,9 @@ CascadeUniform cascadeUniform(const std::vector<Cascade>& cascades, const glm::m
 
 struct ShadowPass {
     CascadeSettings settings;
-    common::Image moments;  // R32G32_SFLOAT: depth, depth^2; a layer per cascade
-    common::Image depth;    // the scene pass's depth format (D32_SFLOAT, or X8_D24)
+    ShadowPipelineShaders shaders;  // chapter-16's; chapter-17 compiles the same under its name
+    common::Image moments;          // R32G32_SFLOAT: depth, depth^2; a layer per cascade
+    common::Image depth;            // the scene pass's depth format (D32_SFLOAT, or X8_D24)
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0: the cascades (geometry stage)
     VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set: moments + cascades
@@ -106,7 +107,8 @@ struct ShadowPass {
 // and textures sets.
 ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
                             const CascadeSettings& settings, ShadowRedraw redraw, const ScenePass& scenePass,
-                            const common::GpuScene& scene, uint32_t framesInFlight);
+                            const common::GpuScene& scene, uint32_t framesInFlight,
+                            const ShadowPipelineShaders& shaders = {});
 // This frame's cascades into frame slot `frame`'s uniform, and what the shadow pass draws of
 // them (planShadows, shadow_cache.hpp) for the scene's draws where they are now. Makes the moving
 // casters' map the first time the plan needs it, after waiting for the device: returns true then

@@ -24,6 +24,7 @@
 
 #include "common/core/files.hpp"
 #include "common/scene/scene.hpp"
+#include "figures.hpp"
 #include "gltf_writer.hpp"
 
 namespace fs = std::filesystem;
@@ -521,6 +522,21 @@ int main(int argc, char** argv) {
         writeText(dir / "scene.json", common::sceneToJson(scene));
         for (common::ModelInstance& model : scene.models) model.file.replace_extension(".gltf");
         writeText(dir / "scene-gltf.json", common::sceneToJson(scene));
+
+        // chapter-17's scene: the same, with two skinned figures (scenes/figures.hpp) playing --
+        // a walking biped of boxes in front of the spheres and a bending arm on the left.
+        figures::walker().writeGltf(dir / "walker.gltf");
+        figures::arm().writeGltf(dir / "arm.gltf");
+        figures::twistingTube().writeGltf(dir / "tube.gltf");
+        for (common::ModelInstance& model : scene.models) model.file.replace_extension(".obj");
+        common::ModelInstance walkerModel{.file = "walker.gltf"};
+        walkerModel.transform.position = {2.5f, 0.0f, 4.0f};
+        walkerModel.transform.rotation = {0.0f, -30.0f, 0.0f};
+        scene.models.push_back(walkerModel);
+        common::ModelInstance armModel{.file = "arm.gltf"};
+        armModel.transform.position = {-7.0f, 1.2f, 5.5f};
+        scene.models.push_back(armModel);
+        writeText(dir / "animated.json", common::sceneToJson(scene));
 
         size_t triangles =
             courtyard.triangles() + 14 * sphere.triangles() + grille.triangles() + cube.triangles();

@@ -91,6 +91,7 @@ struct File {
         size_t components = std::string(type) == "SCALAR" ? 1
                             : std::string(type) == "VEC2" ? 2
                             : std::string(type) == "VEC3" ? 3
+                            : std::string(type) == "MAT4" ? 16
                                                           : 4;
         size_t componentBytes = componentType == kFloat || componentType == kUnsignedInt     ? 4
                                 : componentType == kShort || componentType == kUnsignedShort ? 2

@@ -27,6 +27,7 @@
 #include "common/core/checked.hpp"
 #include "common/core/files.hpp"
 #include "common/core/report.hpp"
+#include "common/model/animation.hpp"
 #include "common/model/gltf_accessors.hpp"
 #include "common/model/gltf_document.hpp"
 #include "common/model/model.hpp"
@@ -265,8 +266,7 @@ struct NodeInstance {
 // 3.5.1 "Scenes" and 3.5.2 "Nodes and Hierarchy": the default scene's nodes (every root node
 // when there is no scene), checked to form a forest (one parent each, no cycles), walked with a
 // stack of our own. Returns the nodes that have a mesh, in the order a depth-first walk meets them.
-std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const GltfReader& reader,
-                                         Skipped& skipped) {
+std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const GltfReader& reader) {
     std::vector<int> parents(model.nodes.size(), -1);
     for (size_t i = 0; i < model.nodes.size(); ++i)
         for (int child : model.nodes[i].children) {
@@ -331,7 +331,6 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
         const tinygltf::Node& node = model.nodes[size_t(pending.node)];
         const std::string where = "nodes[" + std::to_string(pending.node) + "]";
         const glm::dmat4 world = pending.parent * localMatrix(node, reader, where);
-        if (node.skin >= 0) skipped.note("skins are not applied (drawn unskinned)");
         if (node.mesh >= 0) {
             reader.get(model.meshes, node.mesh, where + ".mesh: mesh");
             instances.push_back({pending.node, world});
@@ -342,12 +341,299 @@ std::vector<NodeInstance> sceneInstances(const tinygltf::Model& model, const Glt
     return instances;
 }
 
-// ---- Meshes (3.7) --------------------------------------------------------------------------
-
+// A primitive's attribute accessor, or -1.
 int attribute(const tinygltf::Primitive& primitive, const char* name) {
     auto it = primitive.attributes.find(name);
     return it == primitive.attributes.end() ? -1 : it->second;
 }
+
+// ---- Skins and animations (3.7.3, 3.11) ------------------------------------------------------
+
+// What animations move and skins pose, read before the meshes are baked. A mesh a skin poses is
+// kept in its own space (3.7.3.3: the skinned node's transform is ignored; the joints place it);
+// a mesh on a node that an animation moves (or moves an ancestor of) is kept in the node's space
+// and carried by a joint of its own, weight 1, at the node. Other meshes are baked as before.
+struct RigReader {
+    Rig rig;
+    std::vector<int32_t> rigNode;       // glTF node -> rig node (-1 when the model has no rig)
+    std::vector<bool> animated;         // glTF node: moved by an animation, itself or an ancestor
+    std::map<int, uint32_t> skinBase;   // skin -> its first joint in rig.joints
+    std::map<int, uint32_t> rigidBase;  // node carried rigidly -> its joint
+    bool used() const { return !rigNode.empty(); }
+};
+
+// Before anything is decoded: what the skins and animations declare, against model.hpp's budgets.
+void checkRigBudget(const tinygltf::Model& model, const GltfReader& reader) {
+    uint64_t joints = 0, keys = 0, values = 0;
+    for (const tinygltf::Skin& skin : model.skins) joints = saturatingAdd(joints, skin.joints.size());
+    for (size_t a = 0; a < model.animations.size(); ++a)
+        for (size_t s = 0; s < model.animations[a].samplers.size(); ++s) {
+            const tinygltf::AnimationSampler& sampler = model.animations[a].samplers[s];
+            const std::string at =
+                "animations[" + std::to_string(a) + "].samplers[" + std::to_string(s) + "]";
+            reader.get(model.accessors, sampler.input, at + ".input: accessor");
+            reader.get(model.accessors, sampler.output, at + ".output: accessor");
+            keys = saturatingAdd(keys, reader.count(sampler.input, at + ".input"));
+            values = saturatingAdd(values, saturatingMul(reader.count(sampler.output, at + ".output"),
+                                                         reader.components(sampler.output)));
+        }
+    auto limit = [&](uint64_t value, uint64_t max, const std::string& what) {
+        if (value > max)
+            reader.fail("the model " + what + " " +
+                        (value == kNoFit ? std::string("2^64 or more") : std::to_string(value)) +
+                        "; at most " + std::to_string(max) + " are loaded");
+    };
+    limit(joints, kMaxRigJoints, "has skin joints:");
+    limit(model.animations.size(), kMaxAnimationClips, "has animations:");
+    limit(keys, kMaxAnimationKeys, "has animation key frames:");
+    limit(values, kMaxModelValuesRead, "has animation values:");
+    if (!model.skins.empty() || !model.animations.empty())
+        limit(model.nodes.size(), kMaxRigNodes, "has nodes:");
+}
+
+Interpolation interpolation(const std::string& name, const GltfReader& reader, const std::string& at) {
+    if (name == "LINEAR" || name.empty()) return Interpolation::Linear;
+    if (name == "STEP") return Interpolation::Step;
+    if (name == "CUBICSPLINE") return Interpolation::CubicSpline;
+    reader.fail(at + ".interpolation " + shown(name) + " is not LINEAR, STEP or CUBICSPLINE");
+}
+
+// Every node of the model, parents first, with its rest transform; every animation's channels.
+RigReader readRig(const tinygltf::Model& model, GltfReader& reader, Skipped& skipped) {
+    RigReader out;
+    bool skinned = false;
+    for (const tinygltf::Node& node : model.nodes) skinned = skinned || node.skin >= 0;
+    if (!skinned && model.animations.empty()) return out;
+    checkRigBudget(model, reader);
+    // Parents first: a walk from each root (sceneInstances has checked the forest).
+    std::vector<int> parents(model.nodes.size(), -1), order;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        for (int child : model.nodes[i].children) parents[size_t(child)] = int(i);
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        if (parents[i] < 0) order.push_back(int(i));
+    for (size_t k = 0; k < order.size(); ++k)
+        for (int child : model.nodes[size_t(order[k])].children) order.push_back(child);
+    out.rigNode.assign(model.nodes.size(), -1);
+    for (int node : order)
+        out.rigNode[size_t(node)] = int32_t(out.rig.nodes.size()), out.rig.nodes.push_back({});
+    for (int i : order) {
+        const tinygltf::Node& node = model.nodes[size_t(i)];
+        const std::string where = "nodes[" + std::to_string(i) + "]";
+        RigNode& rigNode = out.rig.nodes[size_t(out.rigNode[size_t(i)])];
+        rigNode.parent = parents[size_t(i)] >= 0 ? out.rigNode[size_t(parents[size_t(i)])] : -1;
+        rigNode.matrix = localMatrix(node, reader, where);  // checks every number
+        rigNode.hasMatrix = !node.matrix.empty();
+        if (!node.translation.empty())
+            rigNode.translation = {node.translation[0], node.translation[1], node.translation[2]};
+        if (!node.rotation.empty())
+            rigNode.rotation = glm::normalize(
+                glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+        if (!node.scale.empty()) rigNode.scale = {node.scale[0], node.scale[1], node.scale[2]};
+    }
+
+    out.animated.assign(model.nodes.size(), false);
+    for (size_t a = 0; a < model.animations.size(); ++a) {
+        const tinygltf::Animation& animation = model.animations[a];
+        const std::string at = "animations[" + std::to_string(a) + "]";
+        AnimationClip clip;
+        clip.name = animation.name.empty() ? "animation " + std::to_string(a) : animation.name;
+        for (size_t c = 0; c < animation.channels.size(); ++c) {
+            const tinygltf::AnimationChannel& channel = animation.channels[c];
+            const std::string where = at + ".channels[" + std::to_string(c) + "]";
+            if (channel.target_path == "weights") {
+                skipped.note("morph target weights are not animated");
+                continue;
+            }
+            if (channel.target_node < 0) continue;  // 3.11.2: an extension names the target
+            const tinygltf::Node& node =
+                reader.get(model.nodes, channel.target_node, where + ".target.node: node");
+            AnimationChannel out1;
+            out1.node = uint32_t(out.rigNode[size_t(channel.target_node)]);
+            size_t components = 3;
+            if (channel.target_path == "translation") {
+                out1.path = AnimatedPath::Translation;
+            } else if (channel.target_path == "rotation") {
+                out1.path = AnimatedPath::Rotation;
+                components = 4;
+            } else if (channel.target_path == "scale") {
+                out1.path = AnimatedPath::Scale;
+            } else {
+                reader.fail(where + ".target.path " + shown(channel.target_path) +
+                            " is not translation, rotation, scale or weights");
+            }
+            // 3.11.2: an animated node has no matrix (its TRS properties are what is animated).
+            if (!node.matrix.empty())
+                reader.fail(where + " animates node " + std::to_string(channel.target_node) +
+                            ", which has a matrix (an animated node has translation, rotation and scale)");
+            const tinygltf::AnimationSampler& sampler =
+                reader.get(animation.samplers, channel.sampler, where + ".sampler: sampler");
+            const std::string samplerAt = at + ".samplers[" + std::to_string(channel.sampler) + "]";
+            out1.interpolation = interpolation(sampler.interpolation, reader, samplerAt);
+            const std::vector<float>& times =
+                reader.floats(sampler.input, samplerAt + ".input", {TINYGLTF_TYPE_SCALAR},
+                              {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+            if (times.empty()) reader.fail(samplerAt + ".input has no key frames");
+            // 3.11.2 (animation sampler): times in seconds, time[0] >= 0, strictly increasing.
+            for (size_t k = 0; k < times.size(); ++k)
+                if (times[k] < 0.0f || (k > 0 && !(times[k] > times[k - 1])))
+                    reader.fail(samplerAt +
+                                ".input's key frame times are not increasing from 0 or more (key " +
+                                std::to_string(k) + ")");
+            const bool cubic = out1.interpolation == Interpolation::CubicSpline;
+            if (cubic && times.size() < 2)
+                reader.fail(samplerAt + " is CUBICSPLINE with fewer than 2 key frames");
+            const std::vector<float>* values = nullptr;
+            if (out1.path == AnimatedPath::Rotation)
+                values = &reader.floats(sampler.output, samplerAt + ".output", {TINYGLTF_TYPE_VEC4},
+                                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                        true);
+            else
+                values = &reader.floats(sampler.output, samplerAt + ".output", {TINYGLTF_TYPE_VEC3},
+                                        {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+            const size_t expected = times.size() * (cubic ? 3 : 1) * components;
+            if (values->size() != expected)
+                reader.fail(samplerAt + ".output has " + std::to_string(values->size() / components) +
+                            " values for " + std::to_string(times.size()) + " key frames" +
+                            (cubic ? " (CUBICSPLINE: 3 a key frame)" : ""));
+            if (out1.path == AnimatedPath::Rotation)
+                for (size_t k = cubic ? 1 : 0; k < values->size() / 4; k += cubic ? 3 : 1) {
+                    const float* q = &(*values)[4 * k];
+                    if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 1e-12f))
+                        reader.fail(samplerAt + ".output's rotation " + std::to_string(cubic ? k / 3 : k) +
+                                    " is not a unit quaternion (it is zero)");
+                }
+            out1.times = times;
+            out1.values = *values;
+            clip.duration = std::max(clip.duration, double(times.back()));
+            out.animated[size_t(channel.target_node)] = true;
+            clip.channels.push_back(std::move(out1));
+        }
+        out.rig.clips.push_back(std::move(clip));
+    }
+    // What an animated node carries moves with it.
+    for (int i : order)
+        if (parents[size_t(i)] >= 0 && out.animated[size_t(parents[size_t(i)])])
+            out.animated[size_t(i)] = true;
+    return out;
+}
+
+// The first palette joint of `skin` (its joints added the first time a mesh uses it).
+uint32_t skinJoints(RigReader& rig, const tinygltf::Model& model, int skinIndex, GltfReader& reader,
+                    const std::string& where) {
+    if (auto found = rig.skinBase.find(skinIndex); found != rig.skinBase.end()) return found->second;
+    const tinygltf::Skin& skin = reader.get(model.skins, skinIndex, where + ".skin: skin");
+    const std::string at = "skins[" + std::to_string(skinIndex) + "]";
+    if (skin.joints.empty()) reader.fail(at + " has no joints");
+    const std::vector<float>* inverseBind = nullptr;
+    if (skin.inverseBindMatrices >= 0) {
+        inverseBind = &reader.floats(skin.inverseBindMatrices, at + ".inverseBindMatrices",
+                                     {TINYGLTF_TYPE_MAT4}, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+        if (inverseBind->size() / 16 < skin.joints.size())
+            reader.fail(at + ".inverseBindMatrices has " + std::to_string(inverseBind->size() / 16) +
+                        " matrices for " + std::to_string(skin.joints.size()) + " joints");
+    }
+    const uint32_t base = uint32_t(rig.rig.joints.size());
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+        reader.get(model.nodes, skin.joints[j], at + ".joints: node");
+        RigJoint joint{.node = uint32_t(rig.rigNode[size_t(skin.joints[j])])};
+        if (inverseBind) joint.inverseBind = glm::dmat4(glm::make_mat4(&(*inverseBind)[16 * j]));
+        rig.rig.joints.push_back(joint);
+    }
+    rig.skinBase[skinIndex] = base;
+    return base;
+}
+
+// A primitive's influences for the baked vertices of `shape` (JOINTS_n and WEIGHTS_n, 3.7.3.2):
+// every set the primitive has, at most the four largest weights kept, each vertex checked --
+// a joint the skin has, no weight negative, their sum within kWeightSumTolerance of 1 (then made
+// exactly 1).
+std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
+                                       const std::vector<uint32_t>& source, uint32_t jointBase,
+                                       size_t jointCount, GltfReader& reader, const std::string& where,
+                                       Skipped& skipped) {
+    struct Set {
+        const std::vector<float>* joints;
+        const std::vector<float>* weights;
+    };
+    std::vector<Set> sets;
+    const size_t vertexCount = reader.count(attribute(primitive, "POSITION"), where + " POSITION");
+    for (int n = 0;; ++n) {
+        const std::string jointsName = "JOINTS_" + std::to_string(n),
+                          weightsName = "WEIGHTS_" + std::to_string(n);
+        const int joints = attribute(primitive, jointsName.c_str()),
+                  weights = attribute(primitive, weightsName.c_str());
+        if (joints < 0 && weights < 0) break;
+        if (joints < 0 || weights < 0)
+            reader.fail(where + " has " + (joints < 0 ? weightsName : jointsName) + " without " +
+                        (joints < 0 ? jointsName : weightsName));
+        for (int accessor : {joints, weights})
+            if (reader.count(accessor, where + " " + jointsName) != vertexCount)
+                reader.fail(where + " " + (accessor == joints ? jointsName : weightsName) +
+                            " has another count than POSITION");
+        sets.push_back(
+            {&reader.floats(joints, where + " " + jointsName, {TINYGLTF_TYPE_VEC4},
+                            {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                            false),
+             &reader.floats(weights, where + " " + weightsName, {TINYGLTF_TYPE_VEC4},
+                            {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                            true)});
+    }
+    std::vector<VertexSkin> skin(source.size());
+    bool dropped = false;
+    for (size_t v = 0; v < source.size(); ++v) {
+        const size_t i = source[v];
+        std::vector<std::pair<float, uint32_t>> influences;
+        double sum = 0.0;
+        for (const Set& set : sets)
+            for (size_t c = 0; c < 4; ++c) {
+                const float weight = (*set.weights)[4 * i + c], joint = (*set.joints)[4 * i + c];
+                if (!(weight >= 0.0f))
+                    reader.fail(where + " vertex " + std::to_string(i) + " has a negative weight");
+                if (weight == 0.0f) continue;
+                if (joint >= float(jointCount))
+                    reader.fail(where + " vertex " + std::to_string(i) + " names joint " +
+                                std::to_string(uint64_t(joint)) + "; its skin has " +
+                                std::to_string(jointCount));
+                sum += weight;
+                influences.push_back({weight, uint32_t(joint)});
+            }
+        if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
+            reader.fail(where + " vertex " + std::to_string(i) + "'s weights sum to " + std::to_string(sum) +
+                        ", not 1");
+        VertexSkin& out = skin[v];
+        out.weights = glm::vec4(0.0f);
+        out.joints[0] = out.joints[1] = out.joints[2] = out.joints[3] = uint16_t(jointBase);
+        if (sets.size() == 1) {  // each weight stays in its slot
+            for (size_t c = 0; c < 4; ++c) {
+                const float weight = (*sets[0].weights)[4 * i + c];
+                if (weight == 0.0f) continue;
+                out.joints[c] = uint16_t(jointBase + uint32_t((*sets[0].joints)[4 * i + c]));
+                out.weights[int(c)] = float(weight / sum);
+            }
+            continue;
+        }
+        std::stable_sort(influences.begin(), influences.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        if (influences.size() > 4) {
+            dropped = true;
+            influences.resize(4);
+        }
+        double kept = 0.0;
+        for (const auto& [weight, joint] : influences) kept += weight;
+        for (size_t k = 0; k < influences.size(); ++k) {
+            out.joints[k] = uint16_t(jointBase + influences[k].second);
+            out.weights[int(k)] = float(influences[k].first / kept);
+        }
+    }
+    if (dropped)
+        skipped.note("vertices with more than four weights keep their four largest (made to sum to 1)");
+    return skin;
+}
+
+// ---- Meshes (3.7) --------------------------------------------------------------------------
 
 // Whether a primitive is drawn (3.7.2.1 topology types): triangles, strips and fans are; points
 // and lines are skipped with a warning; any other mode is refused.
@@ -422,6 +708,9 @@ void checkBudget(const tinygltf::Model& model, const std::vector<NodeInstance>& 
             if (normals) read(attribute(primitive, "TANGENT"), at + " TANGENT");
             read(attribute(primitive, "TEXCOORD_0"), at + " TEXCOORD_0");
             read(primitive.indices, at + " indices");
+            for (const auto& [name, accessor] : primitive.attributes)
+                if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
+                    read(accessor, at + " " + name);
         }
         return cost;
     };
@@ -487,7 +776,6 @@ PrimitiveShape makeShape(const tinygltf::Primitive& primitive, GltfReader& reade
             {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
     if (primitive.targets.size()) skipped.note("morph targets are not applied (drawn in the base shape)");
     for (const auto& [name, accessor] : primitive.attributes) {
-        if (name.rfind("JOINTS_", 0) == 0) skipped.note("skins are not applied (drawn unskinned)");
         if (name.rfind("COLOR_", 0) == 0) skipped.note("vertex colours (COLOR_n) are not used");
     }
 
@@ -616,7 +904,6 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     GltfReader reader(document);
     Skipped skipped(document.origin);
     if (!model.cameras.empty()) skipped.note("its cameras are not used (the scene's camera is)");
-    if (!model.animations.empty()) skipped.note("animations are not played");
 
     ModelData out;
     MaterialReader materials(document, reader, skipped);
@@ -628,14 +915,20 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     out.materials.push_back(
         MaterialData{.name = "default", .roughness = 1.0f, .metallic = 1.0f, .alphaMode = AlphaMode::Opaque});
 
-    const std::vector<NodeInstance> instances = sceneInstances(model, reader, skipped);
+    const std::vector<NodeInstance> instances = sceneInstances(model, reader);
     checkBudget(model, instances, reader, skipped);
+
+    RigReader rig = readRig(model, reader, skipped);
 
     std::map<std::pair<int, size_t>, PrimitiveShape> shapes;
     bool first = true;
     for (const NodeInstance& instance : instances) {
-        if (degenerate(instance.world)) continue;
-        const int meshIndex = model.nodes[size_t(instance.node)].mesh;
+        const tinygltf::Node& node = model.nodes[size_t(instance.node)];
+        // A skinned node's meshes stay in their own space, an animated node's in the node's.
+        const bool skinnedNode = rig.used() && node.skin >= 0;
+        const bool carried = rig.used() && rig.animated[size_t(instance.node)];
+        if (!skinnedNode && !carried && degenerate(instance.world)) continue;
+        const int meshIndex = node.mesh;
         const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -648,9 +941,29 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
                 shape =
                     shapes.emplace(std::pair{meshIndex, p}, makeShape(primitive, reader, at, skipped)).first;
             if (shape->second.indices.empty()) continue;
+            const bool skins = skinnedNode && attribute(primitive, "JOINTS_0") >= 0;
             MeshData baked =
-                bakePrimitive(shape->second, instance.world, reader, at,
+                bakePrimitive(shape->second, skins || carried ? glm::dmat4(1.0) : instance.world, reader, at,
                               primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial);
+            if (skins) {
+                const uint32_t base =
+                    skinJoints(rig, model, node.skin, reader, "nodes[" + std::to_string(instance.node) + "]");
+                baked.skin =
+                    readInfluences(primitive, shape->second.source, base,
+                                   model.skins[size_t(node.skin)].joints.size(), reader, at, skipped);
+            } else if (carried) {
+                auto joint = rig.rigidBase.find(instance.node);
+                if (joint == rig.rigidBase.end()) {
+                    joint = rig.rigidBase.emplace(instance.node, uint32_t(rig.rig.joints.size())).first;
+                    rig.rig.joints.push_back({.node = uint32_t(rig.rigNode[size_t(instance.node)])});
+                }
+                VertexSkin rigid;
+                rigid.joints[0] = uint16_t(joint->second);
+                baked.skin.assign(baked.vertices.size(), rigid);
+            }
+            if (rig.rig.joints.size() > kMaxRigJoints)
+                reader.fail("the model's skins and animated meshes need more than " +
+                            std::to_string(kMaxRigJoints) + " joints");
             for (const Vertex& v : baked.vertices) {
                 out.boundsMin = first ? v.position : glm::min(out.boundsMin, v.position);
                 out.boundsMax = first ? v.position : glm::max(out.boundsMax, v.position);
@@ -661,6 +974,19 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
     }
     if (out.meshes.empty())
         throw InputError(document.origin + ": the model's default scene has no triangles");
+    // Posed by its clips, the model reaches beyond its meshes as stored.
+    if (!rig.rig.joints.empty()) {
+        out.rig = std::move(rig.rig);
+        animatedBounds(out, out.boundsMin, out.boundsMax);
+        if (!std::isfinite(out.boundsMin.x + out.boundsMin.y + out.boundsMin.z + out.boundsMax.x +
+                           out.boundsMax.y + out.boundsMax.z) ||
+            std::max({maxAbs(glm::dvec3(out.boundsMin)), maxAbs(glm::dvec3(out.boundsMax))}) >
+                kMaxModelCoordinate)
+            reader.fail("the model's animations move it beyond " + std::to_string(kMaxModelCoordinate) +
+                        " from the origin (or to a number that is not finite)");
+    } else if (!model.animations.empty()) {
+        skipped.note("its animations move no mesh");
+    }
     skipped.print();
     return out;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 namespace common {
 
@@ -94,10 +95,73 @@ struct MaterialData {
     bool doubleSided = false;  // glTF doubleSided: no back-face culling, back faces' normals flipped
 };
 
+// A skinned vertex's influences (glTF 2.0 specification, 3.7.3 "Skins"; the book's AnimMeshData):
+// four joints of the model's palette (ModelData::rig.joints) and their weights, which are not
+// negative and sum to 1. An unused slot has joint 0 and weight 0.
+struct VertexSkin {
+    uint16_t joints[4] = {0, 0, 0, 0};
+    glm::vec4 weights{1.0f, 0.0f, 0.0f, 0.0f};
+};
+
 struct MeshData {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
     uint32_t material = 0;  // index into ModelData::materials
+    // Empty for a static mesh; else one per vertex: the mesh is posed by the rig's joints, and
+    // its vertices are in the space the joints' inverse bind matrices expect.
+    std::vector<VertexSkin> skin;
+};
+
+// ---- Animation (glTF 2.0 specification, 3.7.3 "Skins" and 3.11 "Animations"; the book's
+// Animation, AnimatedFrame) ----
+
+// A node of the model's hierarchy as the animations see it: its parent (an earlier index, or -1)
+// and its rest transform -- a matrix, or translation, rotation and scale (T * R * S).
+struct RigNode {
+    int32_t parent = -1;
+    bool hasMatrix = false;  // glTF's `matrix`: never animated (3.11: targets have TRS)
+    glm::dmat4 matrix{1.0};
+    glm::dvec3 translation{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    glm::dvec3 scale{1.0};
+};
+
+// One entry of the palette a skinned mesh's vertices name: a node, and the matrix that takes a
+// vertex from the mesh's space to the node's (glTF's inverseBindMatrices; identity for a mesh
+// that an animated node carries rigidly).
+struct RigJoint {
+    uint32_t node = 0;
+    glm::dmat4 inverseBind{1.0};
+};
+
+enum class Interpolation : uint8_t { Step, Linear, CubicSpline };
+enum class AnimatedPath : uint8_t { Translation, Rotation, Scale };
+
+// One animated property of one node (3.11.1): key frame times in seconds, strictly increasing,
+// and their values (3 or 4 floats a key; with CubicSpline, in-tangent, value, out-tangent).
+struct AnimationChannel {
+    uint32_t node = 0;
+    AnimatedPath path = AnimatedPath::Translation;
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;
+    std::vector<float> values;
+};
+
+// A clip: glTF's animation (channels on nodes), or the book's format, which stores every joint's
+// final matrix for each key frame (`frames`, joints x key frames, `frameSeconds` apart).
+struct AnimationClip {
+    std::string name;
+    double duration = 0.0;  // seconds: the last key frame's time (0: one key frame)
+    std::vector<AnimationChannel> channels;
+    double frameSeconds = 0.0;
+    std::vector<glm::mat4> frames;  // the book's format: frame f's joint j at [f * joints + j]
+};
+
+struct Rig {
+    std::vector<RigNode> nodes;  // parents before children
+    std::vector<RigJoint> joints;
+    std::vector<AnimationClip> clips;
+    bool empty() const { return joints.empty(); }
 };
 
 // A mesh drawn once more with another material: a model that names one range of vertices and
@@ -115,9 +179,10 @@ Vec boxCorner(int i, const Vec& min, const Vec& max) {
 
 struct ModelData {
     std::vector<MeshData> meshes;
-    std::vector<MeshRepeat> repeats;      // drawn after the meshes, in this order
-    std::vector<MaterialData> materials;  // at least one: a default white material
-    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+    std::vector<MeshRepeat> repeats;             // drawn after the meshes, in this order
+    std::vector<MaterialData> materials;         // at least one: a default white material
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // the meshes as stored (skinned ones unposed)
+    Rig rig;                                     // empty: nothing is skinned or animated
 };
 
 // What one model may cost (docs/reliability.md, "What a model may cost"). The glTF loader
@@ -140,6 +205,18 @@ inline constexpr uint64_t kMaxModelIndices = uint64_t{1} << 25;
 // Values decoded from glTF accessors (each accessor once) and the corner lists of the distinct
 // primitives (a slot per vertex and per corner): 128 Mi, 512 MiB of floats.
 inline constexpr uint64_t kMaxModelValuesRead = uint64_t{1} << 27;
+
+// Animation budgets (docs/reliability.md, "What a model may cost"), checked from the sizes the file
+// declares before anything is decoded: joints in a model's palette (a vertex names them in 16 bits;
+// the palette is uploaded each frame, 128 bytes a joint), nodes an animation may move, clips and
+// key frames in all (each key's values count among kMaxModelValuesRead too).
+inline constexpr uint64_t kMaxRigJoints = 4096;
+inline constexpr uint64_t kMaxRigNodes = 65536;
+inline constexpr uint64_t kMaxAnimationClips = 1024;
+inline constexpr uint64_t kMaxAnimationKeys = uint64_t{1} << 24;
+// How far a vertex's weights may sum from 1 and still be taken (renormalised): what 8-bit
+// quantised weights can miss by (four roundings of 1/510 each). Beyond it a model is refused.
+inline constexpr double kWeightSumTolerance = 1.0 / 64.0;
 
 // The largest distance from the origin along any axis that a vertex may have after baking: its
 // square, and sums of such squares, stay finite in 32-bit floats (loadModel refuses the rest).

@@ -18,6 +18,7 @@
 #include "common/core/checked.hpp"
 #include "common/core/files.hpp"
 #include "common/core/report.hpp"
+#include "common/model/animation.hpp"
 #include "common/model/load_model.hpp"
 #include "common/vk/debug_names.hpp"
 #include "common/vk/texture.hpp"
@@ -354,7 +355,7 @@ void setDrawModel(const GpuScene& scene, Draw& draw, const glm::mat4& model) {
     draw.center = glm::vec3(model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
 }
 
-GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted) {
+GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneOptions wanted) {
     GpuScene gpu;
     StagingBatch batch = beginStaging(device);
     gpu.textures.push_back(
@@ -416,20 +417,39 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     " MiB of device memory with it; this device's largest device-local memory heap has " +
                     std::to_string(memory.heap >> 20) + " MiB, of which a scene may use 3/4 (" +
                     std::to_string(memory.scene >> 20) + " MiB)");
+            // A chapter before chapter-17 draws a skinned model in its rest pose.
+            Pose rest;
+            if (!copy && !model.rig.empty() && !wanted.skins) {
+                poseRig(model.rig, -1, 0.0, rest);
+                warn(utf8(instance.file) +
+                     ": its skins and animations are played by chapter-17 (drawn here in its "
+                     "rest pose)");
+            }
             if (!copy)
                 for (const MeshData& mesh : model.meshes) {
                     GpuMesh out;
+                    std::vector<Vertex> posed;
+                    if (!rest.joints.empty() && !mesh.skin.empty()) {
+                        posed.reserve(mesh.vertices.size());
+                        for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+                            SkinnedVertex s = skinVertex(mesh.vertices[v], mesh.skin[v], rest.joints);
+                            posed.push_back({glm::vec3(s.position), glm::vec3(s.normal), glm::vec3(s.tangent),
+                                             glm::vec3(s.bitangent), mesh.vertices[v].uv});
+                        }
+                    }
+                    const std::vector<Vertex>& vertices = posed.empty() ? mesh.vertices : posed;
+                    VkBufferUsageFlags usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+                    if (wanted.skins && !mesh.skin.empty()) usage |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
                     out.vertices =
-                        uploadStaged(device, batch, mesh.vertices.data(),
-                                     mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        uploadStaged(device, batch, vertices.data(), vertices.size() * sizeof(Vertex), usage,
                                      meshName(instance.file, gpu.meshes.size(), "vertices"));
                     out.indices =
                         uploadStaged(device, batch, mesh.indices.data(),
                                      mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                                      meshName(instance.file, gpu.meshes.size(), "indices"));
                     out.indexCount = uint32_t(mesh.indices.size());
-                    out.boundsMin = out.boundsMax = mesh.vertices.front().position;
-                    for (const Vertex& v : mesh.vertices) {
+                    out.boundsMin = out.boundsMax = vertices.front().position;
+                    for (const Vertex& v : vertices) {
                         out.boundsMin = glm::min(out.boundsMin, v.position);
                         out.boundsMax = glm::max(out.boundsMax, v.position);
                     }
@@ -566,7 +586,7 @@ void destroyGpuScene(const Device& device, GpuScene& scene) {
     for (VkSampler sampler : scene.samplers) vkDestroySampler(device.handle, sampler, nullptr);
     for (Image& texture : scene.textures) destroyImage(device, texture);
     for (GpuMesh& mesh : scene.meshes) {
-        destroyBuffer(device, mesh.indices);
+        if (mesh.ownsIndices) destroyBuffer(device, mesh.indices);
         if (mesh.ownsVertices) destroyBuffer(device, mesh.vertices);
     }
     scene = {};

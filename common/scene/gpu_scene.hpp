@@ -22,8 +22,12 @@
 namespace common {
 
 struct GpuMesh {
-    Buffer vertices;  // common::Vertex
-    Buffer indices;   // uint32_t
+    Buffer vertices;          // common::Vertex
+    Buffer indices;           // uint32_t
+    bool ownsIndices = true;  // false: another mesh's (a skinned copy of it draws them too)
+    // Its shape changes from frame to frame (a skinned mesh playing): bounds updated by the
+    // chapter, and casters drawn apart by chapter-16's shadow cache.
+    bool deforms = false;
     // A mirrored copy (drawn by a scene transform of negative determinant): the same vertex
     // buffer, owned by the mesh it copies, with every triangle's winding turned around.
     bool ownsVertices = true;
@@ -82,18 +86,23 @@ struct GpuScene {
     uint64_t triangles = 0;                      // drawn per frame
 };
 
-// Which textures a chapter reads; the others are not loaded (chapter-10 only samples albedo).
-struct GpuSceneTextures {
+// Which textures a chapter reads (the others are not loaded: chapter-10 only samples albedo), and
+// whether it poses skinned meshes itself.
+struct GpuSceneOptions {
     bool normalMaps = false;
     bool metalRoughMaps = false;
     bool occlusionMaps = false;
+    // chapter-17 on: skinned meshes uploaded as stored, for the chapter's skinning pass to pose
+    // (with STORAGE_BUFFER usage: the pass reads them). Before it: posed at rest on the CPU here,
+    // with a warning that the model's animations are not played.
+    bool skins = false;
 };
 
 // Throws InputError (naming the file) for a bad model or a corrupt texture; a missing texture
 // file falls back to the default texture with a warning on stderr. Images are decoded and their
 // mip chains made on every core, and uploaded in batches of bounded size, so that a model's
 // textures are never all in host memory at once (beside their device copies).
-GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneTextures wanted);
+GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& models, GpuSceneOptions wanted);
 void destroyGpuScene(const Device& device, GpuScene& scene);
 
 // The vertex input of common::Vertex: binding 0, locations 0..4 = position, normal, tangent,

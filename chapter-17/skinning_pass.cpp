@@ -1,0 +1,381 @@
+// chapter-17: the skinning pass (skinning_pass.hpp). The book's first compute pipeline: every call
+// it takes is written out here -- the compute pipeline, its dispatch, the barriers that order it
+// against the frames' vertex reads.
+#include "skinning_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+
+#include "common/core/check.hpp"
+#include "common/core/files.hpp"
+#include "common/vk/commands.hpp"
+#include "common/vk/debug_names.hpp"
+#include "common/vk/descriptors.hpp"
+
+namespace {
+
+// What skin.comp reads per vertex beside its bind-pose vertex (scalar layout, 24 bytes).
+struct GpuInfluence {
+    uint32_t joints[2];  // joints 0 and 1, 2 and 3: 16 bits each, the first in the low half
+    glm::vec4 weights;
+};
+static_assert(sizeof(GpuInfluence) == 24, "skin.comp reads Influence with this layout");
+
+struct DispatchConstants {
+    uint32_t first;
+    uint32_t count;
+    uint32_t paletteBase;
+};
+
+// What a scene may ask of the pass: the palette is uploaded each frame (128 bytes a joint), the
+// posed vertices take device memory beside the bind pose.
+constexpr uint64_t kMaxPaletteJoints = uint64_t{1} << 17;  // 16 MiB a frame
+constexpr uint64_t kMaxSkinnedBytes = uint64_t{1} << 30;
+
+//> compute-pipeline
+// The pipeline from the shader's current code: at start-up, and again on a live reload. A
+// compute pipeline is one shader stage and its layout: no vertex input, no rasterisation.
+VkPipeline makeSkinningPipeline(const common::Device& device, VkPipelineCache cache,
+                                const SkinningPass& pass) {
+    common::ShaderModule module(device, pass.shader);
+    VkComputePipelineCreateInfo pipelineInfo{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = common::shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module),
+        .layout = pass.pipelineLayout,
+    };
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(device.handle, cache, 1, &pipelineInfo, nullptr, &pipeline));
+    common::nameObject(device.handle, pipeline, pass.shader);
+    return pipeline;
+}
+//< compute-pipeline
+
+// A vertex buffer for one instance's posed mesh: the shader writes it, the passes read it as
+// vertices, --check-skinning copies it out. Filled with 0xFF bytes, guard included.
+common::Buffer createPosedBuffer(const common::Device& device, uint32_t vertices, const std::string& name) {
+    VkDeviceSize size = VkDeviceSize(vertices + kGuardVertices) * sizeof(common::Vertex);
+    common::Buffer buffer =
+        common::createBuffer(device, size,
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
+    VkCommandBuffer cmd = common::beginOneTimeCommands(device);
+    vkCmdFillBuffer(cmd, buffer.handle, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+    common::submitOneTimeCommands(device, cmd);
+    return buffer;
+}
+
+}  // namespace
+
+//> create-skinning
+SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache cache, common::GpuScene& scene,
+                                const common::Scene& sceneDesc, common::ModelCache& models,
+                                uint32_t framesInFlight) {
+    SkinningPass pass;
+    pass.maxGroups = device.properties.limits.maxComputeWorkGroupCount[0];
+    // Each instance's draws, in the order loadGpuScene made them: its model's meshes, then its repeats.
+    std::vector<std::vector<uint32_t>> drawsOf(sceneDesc.models.size());
+    for (uint32_t d = 0; d < scene.draws.size(); ++d) drawsOf[scene.draws[d].instance].push_back(d);
+    uint64_t skinnedBytes = 0;
+    common::StagingBatch batch = common::beginStaging(device);
+    std::map<const common::MeshData*, size_t> influenceOwner;  // the first SkinnedMesh that uploaded them
+    std::vector<std::pair<size_t, size_t>> ownerPlace;         // (model, mesh) of each owner
+    for (uint32_t instance = 0; instance < sceneDesc.models.size(); ++instance) {
+        const common::ModelData& model = common::loadModelCached(models, sceneDesc.models[instance].file);
+        if (model.rig.empty()) continue;
+        SkinnedModel skinned{.instance = instance, .model = &model, .paletteBase = pass.paletteJoints};
+        std::map<uint32_t, size_t> outputOf;  // GpuScene mesh -> its SkinnedMesh here
+        const std::vector<uint32_t>& draws = drawsOf[instance];
+        for (size_t k = 0; k < draws.size(); ++k) {
+            const size_t meshIndex =
+                k < model.meshes.size() ? k : model.repeats[k - model.meshes.size()].mesh;
+            const common::MeshData& data = model.meshes[meshIndex];
+            if (data.skin.empty()) continue;
+            common::Draw& draw = scene.draws[draws[k]];
+            auto found = outputOf.find(draw.mesh);
+            if (found == outputOf.end()) {
+                SkinnedMesh mesh{
+                    .sourceMesh = draw.mesh, .data = &data, .vertexCount = uint32_t(data.vertices.size())};
+                skinnedBytes += uint64_t(mesh.vertexCount + kGuardVertices) * sizeof(common::Vertex);
+                if (skinnedBytes > kMaxSkinnedBytes)
+                    throw common::InputError(common::utf8(sceneDesc.models[instance].file) +
+                                             ": the scene's animated models need more than " +
+                                             std::to_string(kMaxSkinnedBytes >> 20) +
+                                             " MiB of posed vertices (a buffer per instance and mesh)");
+                // The posed copy draws the source's indices (mirrored ones too) with vertices of its own.
+                common::GpuMesh posed = scene.meshes[draw.mesh];
+                posed.ownsIndices = false;
+                posed.ownsVertices = true;
+                posed.vertices = createPosedBuffer(device, mesh.vertexCount,
+                                                   "posed vertices: model " + std::to_string(instance) +
+                                                       ", mesh " + std::to_string(meshIndex));
+                mesh.outputMesh = uint32_t(scene.meshes.size());
+                scene.meshes.push_back(posed);
+                mesh.bounds = common::skinBounds(data);
+                found = outputOf.emplace(draw.mesh, skinned.meshes.size()).first;
+                skinned.meshes.push_back(std::move(mesh));
+            }
+            draw.mesh = skinned.meshes[found->second].outputMesh;
+        }
+        if (skinned.meshes.empty()) continue;
+        pass.paletteJoints += uint32_t(model.rig.joints.size());
+        if (pass.paletteJoints > kMaxPaletteJoints)
+            throw common::InputError(common::utf8(sceneDesc.models[instance].file) +
+                                     ": the scene's animated models have more than " +
+                                     std::to_string(kMaxPaletteJoints) + " joints in all");
+        // Each mesh's influences, uploaded once however many instances pose it.
+        for (SkinnedMesh& mesh : skinned.meshes) {
+            auto owner = influenceOwner.find(mesh.data);
+            if (owner != influenceOwner.end()) {
+                auto [m, s] = ownerPlace[owner->second];
+                mesh.influences = (m == pass.models.size() ? skinned : pass.models[m]).meshes[s].influences;
+                mesh.ownsInfluences = false;
+                continue;
+            }
+            std::vector<GpuInfluence> influences(mesh.data->skin.size());
+            for (size_t v = 0; v < influences.size(); ++v) {
+                const common::VertexSkin& s = mesh.data->skin[v];
+                influences[v] = {{uint32_t(s.joints[0]) | uint32_t(s.joints[1]) << 16,
+                                  uint32_t(s.joints[2]) | uint32_t(s.joints[3]) << 16},
+                                 s.weights};
+            }
+            mesh.influences = common::uploadStaged(device, batch, influences.data(),
+                                                   influences.size() * sizeof(GpuInfluence),
+                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "skin influences");
+            influenceOwner[mesh.data] = ownerPlace.size();
+            ownerPlace.push_back({pass.models.size(), size_t(&mesh - skinned.meshes.data())});
+        }
+        // The scene's bounds: where the clips may take the model (the loader's animated bounds).
+        glm::mat4 matrix = sceneDesc.models[instance].transform.matrix();
+        for (int c = 0; c < 8; ++c) {
+            glm::vec3 p =
+                glm::vec3(matrix * glm::vec4(common::boxCorner(c, model.boundsMin, model.boundsMax), 1.0f));
+            scene.boundsMin = glm::min(scene.boundsMin, p);
+            scene.boundsMax = glm::max(scene.boundsMax, p);
+        }
+        pass.models.push_back(std::move(skinned));
+    }
+    common::endStaging(device, batch);
+    if (pass.models.empty()) return pass;  // nothing animated: no pass at all
+
+    // Set 0: the bind pose, the influences, the palette, the posed vertices -- all storage buffers.
+    pass.setLayout = common::createDescriptorSetLayout(
+        device,
+        {common::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
+         common::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
+         common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
+         common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)},
+        "skinning");
+    uint32_t meshes = 0;
+    for (const SkinnedModel& model : pass.models) meshes += uint32_t(model.meshes.size());
+    pass.descriptorPool = common::createDescriptorPool(
+        device, meshes * framesInFlight, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * meshes * framesInFlight}},
+        "skinning");
+    for (uint32_t slot = 0; slot < framesInFlight; ++slot)
+        pass.palettes.push_back(
+            common::createBuffer(device, VkDeviceSize(pass.paletteJoints) * sizeof(common::PaletteEntry),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                 "joint palette " + std::to_string(slot)));
+    for (SkinnedModel& model : pass.models)
+        for (SkinnedMesh& mesh : model.meshes)
+            for (uint32_t slot = 0; slot < framesInFlight; ++slot) {
+                VkDescriptorSet set =
+                    common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout, "skinning");
+                common::writeBufferDescriptor(device, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                              scene.meshes[mesh.sourceMesh].vertices.handle, VK_WHOLE_SIZE);
+                common::writeBufferDescriptor(device, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                              mesh.influences.handle, VK_WHOLE_SIZE);
+                common::writeBufferDescriptor(device, set, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                              pass.palettes[slot].handle, VK_WHOLE_SIZE);
+                // The whole buffer, guard included: a write past the mesh would land in the guard.
+                common::writeBufferDescriptor(device, set, 3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                              scene.meshes[mesh.outputMesh].vertices.handle, VK_WHOLE_SIZE);
+                mesh.sets.push_back(set);
+            }
+    VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(DispatchConstants)};
+    pass.pipelineLayout = common::createPipelineLayout(device, {&pass.setLayout, 1}, {&push, 1}, "skinning");
+    pass.pipeline = makeSkinningPipeline(device, cache, pass);
+    return pass;
+}
+//< create-skinning
+
+//> pose
+void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const AnimationClock& clock,
+                       uint32_t slot) {
+    pass.record = false;
+    if (pass.models.empty()) return;
+    const bool changed = pass.stale || clock.seconds != pass.posedAt || clock.clip != pass.posedClip;
+    for (SkinnedModel& model : pass.models)
+        for (const SkinnedMesh& mesh : model.meshes) scene.meshes[mesh.outputMesh].deforms = changed;
+    if (!changed) return;  // the buffers hold this pose already: no dispatch, no upload
+    auto* palette = static_cast<common::PaletteEntry*>(pass.palettes[slot].mapped);
+    for (SkinnedModel& model : pass.models) {
+        const common::Rig& rig = model.model->rig;
+        const int clip = rig.clips.empty() ? -1 : std::min(clock.clip, int(rig.clips.size()) - 1);
+        common::poseRig(rig, clip, clock.seconds, model.pose);
+        for (size_t j = 0; j < model.pose.joints.size(); ++j)
+            palette[model.paletteBase + j] = common::paletteEntry(model.pose.joints[j]);
+        for (const SkinnedMesh& mesh : model.meshes) {
+            common::GpuMesh& posed = scene.meshes[mesh.outputMesh];
+            common::posedBounds(mesh.bounds, model.pose.joints, posed.boundsMin, posed.boundsMax);
+        }
+    }
+    pass.record = true;
+    pass.stale = false;
+    pass.posedAt = clock.seconds;
+    pass.posedClip = clock.clip;
+}
+//< pose
+
+//> record-skinning
+void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) {
+    if (!pass.record) return;
+    // The posed buffers are read as vertices by the frames before this one (same queue): their
+    // reads end before the shader writes, and the last frame's writes are ordered before these.
+    VkMemoryBarrier2 beforeWrites{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                  .srcStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
+                                                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                  .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                  .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                  .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+    VkDependencyInfo before{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                            .memoryBarrierCount = 1,
+                            .pMemoryBarriers = &beforeWrites};
+    common::vk13.CmdPipelineBarrier2(cmd, &before);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);
+    uint64_t vertices = 0;
+    for (const SkinnedModel& model : pass.models)
+        for (const SkinnedMesh& mesh : model.meshes) {
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipelineLayout, 0, 1,
+                                    &mesh.sets[slot], 0, nullptr);
+            // ceil(count / 32) groups, in dispatches of at most maxComputeWorkGroupCount[0]; the
+            // shader returns for the last group's invocations past the mesh.
+            const uint64_t perDispatch = uint64_t(pass.maxGroups) * 32;
+            for (uint64_t first = 0; first < mesh.vertexCount; first += perDispatch) {
+                const uint64_t groups =
+                    std::min<uint64_t>(pass.maxGroups, (mesh.vertexCount - first + 31) / 32);
+                DispatchConstants constants{uint32_t(first), mesh.vertexCount, model.paletteBase};
+                vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                                   sizeof(constants), &constants);
+                vkCmdDispatch(cmd, uint32_t(groups), 1, 1);
+            }
+            vertices += mesh.vertexCount;
+        }
+
+    // The posed vertices written before any pass of this frame fetches them.
+    VkMemoryBarrier2 afterWrites{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                 .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                 .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                 .dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
+                                 .dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT};
+    VkDependencyInfo after{
+        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &afterWrites};
+    common::vk13.CmdPipelineBarrier2(cmd, &after);
+    ++pass.dispatchedFrames;
+    pass.vertices = vertices;
+}
+//< record-skinning
+
+void remakeSkinningPipeline(const common::Device& device, VkPipelineCache cache, SkinningPass& pass,
+                            const common::ShaderReload& reload, common::PipelineSwap& swap) {
+    if (pass.pipeline == VK_NULL_HANDLE || !reload.changed({pass.shader})) return;
+    common::replacePipeline(swap, pass.pipeline, [&] { return makeSkinningPipeline(device, cache, pass); });
+    pass.stale = true;  // skinned again with the new shader, even when paused
+}
+
+void checkSkinning(const common::Device& device, const SkinningPass& pass, const common::GpuScene& scene) {
+    if (pass.models.empty()) {
+        std::printf("chapter-17: skinning check: nothing is skinned\n");
+        return;
+    }
+    double maxPosition = 0.0, maxNormal = 0.0;
+    std::vector<double> positionErrors;
+    uint64_t checked = 0, meshes = 0;
+    for (const SkinnedModel& model : pass.models) {
+        common::Pose pose;
+        const common::Rig& rig = model.model->rig;
+        const int clip = rig.clips.empty() ? -1 : std::min(pass.posedClip, int(rig.clips.size()) - 1);
+        common::poseRig(rig, clip, pass.posedAt, pose);
+        const double size =
+            std::max(1e-30, double(glm::length(model.model->boundsMax - model.model->boundsMin)));
+        for (const SkinnedMesh& mesh : model.meshes) {
+            const common::Buffer& posed = scene.meshes[mesh.outputMesh].vertices;
+            common::Buffer readback = common::createBuffer(
+                device, posed.size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "skinning check");
+            VkCommandBuffer cmd = common::beginOneTimeCommands(device);
+            VkMemoryBarrier2 written{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                     .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                     .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                     .dstStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                     .dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT};
+            VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                        .memoryBarrierCount = 1,
+                                        .pMemoryBarriers = &written};
+            common::vk13.CmdPipelineBarrier2(cmd, &dependency);
+            VkBufferCopy region{0, 0, posed.size};
+            vkCmdCopyBuffer(cmd, posed.handle, readback.handle, 1, &region);
+            common::submitOneTimeCommands(device, cmd);
+            const auto* gpu = static_cast<const common::Vertex*>(readback.mapped);
+            for (uint32_t v = 0; v < mesh.vertexCount; ++v) {
+                common::SkinnedVertex ref =
+                    common::skinVertex(mesh.data->vertices[v], mesh.data->skin[v], pose.joints);
+                double position = glm::length(glm::dvec3(gpu[v].position) - ref.position) / size;
+                // The angle by atan2 of sine and cosine: acos near 1 would turn the last bit of a
+                // float into 0.02 degrees.
+                const glm::dvec3 n(gpu[v].normal);
+                double normal =
+                    glm::degrees(std::atan2(glm::length(glm::cross(n, ref.normal)), glm::dot(n, ref.normal)));
+                if (!std::isfinite(position) || !std::isfinite(normal)) position = normal = INFINITY;
+                positionErrors.push_back(position);
+                maxPosition = std::max(maxPosition, position);
+                maxNormal = std::max(maxNormal, normal);
+            }
+            const auto* guard = reinterpret_cast<const uint8_t*>(gpu + mesh.vertexCount);
+            bool intact = true;
+            for (size_t b = 0; b < kGuardVertices * sizeof(common::Vertex); ++b)
+                intact = intact && guard[b] == 0xFF;
+            common::destroyBuffer(device, readback);
+            if (!intact)
+                throw common::Failure("--check-skinning: the skinning pass wrote past model " +
+                                      std::to_string(model.instance) + "'s mesh of " +
+                                      std::to_string(mesh.vertexCount) + " vertices");
+            checked += mesh.vertexCount;
+            ++meshes;
+        }
+    }
+    std::sort(positionErrors.begin(), positionErrors.end());
+    double p99 =
+        positionErrors[std::min(positionErrors.size() - 1, size_t(double(positionErrors.size()) * 0.99))];
+    std::printf(
+        "chapter-17: skinning check: %llu vertices in %llu meshes at %.6f s against the double-precision "
+        "reference: position error max %.3g, p99 %.3g of the model's size; normal error max %.4f degrees; "
+        "guards intact\n",
+        static_cast<unsigned long long>(checked), static_cast<unsigned long long>(meshes), pass.posedAt,
+        maxPosition, p99, maxNormal);
+    // fp32 arithmetic on coordinates of the model's size: a few units in the last place of 2^-24.
+    constexpr double kPositionBound = 1e-5, kNormalBoundDegrees = 0.01;
+    if (!(maxPosition <= kPositionBound) || !(maxNormal <= kNormalBoundDegrees))
+        throw common::Failure(
+            "--check-skinning: the GPU's skinned vertices differ from the reference beyond " +
+            std::to_string(kPositionBound) + " of the model's size or " +
+            std::to_string(kNormalBoundDegrees) + " degrees");
+}
+
+void destroySkinningPass(const common::Device& device, SkinningPass& pass) {
+    vkDestroyPipeline(device.handle, pass.pipeline, nullptr);
+    vkDestroyPipelineLayout(device.handle, pass.pipelineLayout, nullptr);
+    vkDestroyDescriptorPool(device.handle, pass.descriptorPool, nullptr);
+    vkDestroyDescriptorSetLayout(device.handle, pass.setLayout, nullptr);
+    for (common::Buffer& buffer : pass.palettes) common::destroyBuffer(device, buffer);
+    for (SkinnedModel& model : pass.models)
+        for (SkinnedMesh& mesh : model.meshes)
+            if (mesh.ownsInfluences) common::destroyBuffer(device, mesh.influences);
+    pass = {};
+}

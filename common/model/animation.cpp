@@ -1,0 +1,265 @@
+// Posing a model's rig: sampling clips, the node hierarchy, the palette, the reference skinning.
+#include "common/model/animation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace common {
+namespace {
+
+glm::dvec4 keyValue(const AnimationChannel& channel, size_t key, size_t components) {
+    // CubicSpline stores (in-tangent, value, out-tangent) per key (Appendix C).
+    size_t element = channel.interpolation == Interpolation::CubicSpline ? 3 * key + 1 : key;
+    glm::dvec4 v(0.0);
+    for (size_t c = 0; c < components; ++c) v[int(c)] = channel.values[element * components + c];
+    return v;
+}
+
+glm::dvec4 tangentValue(const AnimationChannel& channel, size_t key, size_t components, bool out) {
+    size_t element = 3 * key + (out ? 2 : 0);
+    glm::dvec4 v(0.0);
+    for (size_t c = 0; c < components; ++c) v[int(c)] = channel.values[element * components + c];
+    return v;
+}
+
+glm::dquat quat(const glm::dvec4& v) {  // glTF's (x, y, z, w)
+    glm::dquat q(v.w, v.x, v.y, v.z);
+    double length = glm::length(q);
+    return length > 0.0 ? q / length : glm::dquat(1.0, 0.0, 0.0, 0.0);
+}
+
+// Appendix C's spherical linear interpolation: the shorter way round (q and -q are the same
+// rotation), linear where the angle is too small for sin() to divide by.
+glm::dquat slerp(glm::dquat a, glm::dquat b, double t) {
+    double d = glm::dot(a, b);
+    if (d < 0.0) {
+        b = -b;
+        d = -d;
+    }
+    if (d > 0.9999995) return glm::normalize(a * (1.0 - t) + b * t);
+    double angle = std::acos(std::min(d, 1.0));
+    double s = std::sin(angle);
+    return glm::normalize(a * (std::sin((1.0 - t) * angle) / s) + b * (std::sin(t * angle) / s));
+}
+
+// The channel's value at clip time t (3.11, Appendix C): before the first key its first value,
+// after the last its last.
+glm::dvec4 sample(const AnimationChannel& channel, double t, size_t components) {
+    const std::vector<float>& times = channel.times;
+    if (t <= times.front()) return keyValue(channel, 0, components);
+    if (t >= times.back()) return keyValue(channel, times.size() - 1, components);
+    size_t k = size_t(std::upper_bound(times.begin(), times.end(), float(t)) - times.begin());
+    k = std::clamp<size_t>(k, 1, times.size() - 1) - 1;  // times[k] <= t < times[k + 1]
+    while (k > 0 && double(times[k]) > t) --k;           // t between two floats: the key below it
+    while (k + 2 < times.size() && double(times[k + 1]) <= t) ++k;
+    const double t0 = times[k], t1 = times[k + 1], span = t1 - t0;
+    const double u = std::clamp((t - t0) / span, 0.0, 1.0);
+    const bool rotation = channel.path == AnimatedPath::Rotation;
+    switch (channel.interpolation) {
+        case Interpolation::Step:
+            return keyValue(channel, k, components);
+        case Interpolation::Linear: {
+            glm::dvec4 a = keyValue(channel, k, components), b = keyValue(channel, k + 1, components);
+            if (!rotation) return a + (b - a) * u;
+            glm::dquat q = slerp(quat(a), quat(b), u);
+            return {q.x, q.y, q.z, q.w};
+        }
+        case Interpolation::CubicSpline: {
+            // Hermite spline with tangents scaled by the keys' distance in time (Appendix C).
+            const double u2 = u * u, u3 = u2 * u;
+            glm::dvec4 v = (2 * u3 - 3 * u2 + 1) * keyValue(channel, k, components) +
+                           span * (u3 - 2 * u2 + u) * tangentValue(channel, k, components, true) +
+                           (-2 * u3 + 3 * u2) * keyValue(channel, k + 1, components) +
+                           span * (u3 - u2) * tangentValue(channel, k + 1, components, false);
+            if (rotation) {
+                glm::dquat q = quat(v);
+                return {q.x, q.y, q.z, q.w};
+            }
+            return v;
+        }
+    }
+    return keyValue(channel, k, components);
+}
+
+// The book's format: each key frame's joint matrices as they are; between two key frames each
+// matrix's entries blended linearly (its key frames are close: the md5 clips run at 24 a second).
+void poseBookClip(const Rig& rig, const AnimationClip& clip, double t, Pose& pose) {
+    const size_t joints = rig.joints.size();
+    const size_t frames = clip.frames.size() / std::max<size_t>(joints, 1);
+    double position = clip.frameSeconds > 0.0 ? t / clip.frameSeconds : 0.0;
+    size_t f0 = std::min(size_t(position), frames - 1), f1 = (f0 + 1) % frames;
+    double u = std::clamp(position - double(f0), 0.0, 1.0);
+    for (size_t j = 0; j < joints; ++j) {
+        glm::dmat4 a(clip.frames[f0 * joints + j]), b(clip.frames[f1 * joints + j]);
+        pose.joints[j] = a + (b - a) * u;
+    }
+}
+
+}  // namespace
+
+double clipTime(const AnimationClip& clip, double seconds) {
+    if (!(clip.duration > 0.0) || !std::isfinite(seconds)) return 0.0;
+    double t = std::fmod(seconds, clip.duration);
+    return t < 0.0 ? t + clip.duration : t;
+}
+
+void poseRig(const Rig& rig, int clip, double seconds, Pose& pose) {
+    pose.world.resize(rig.nodes.size());
+    pose.joints.resize(rig.joints.size());
+    const AnimationClip* playing =
+        clip >= 0 && size_t(clip) < rig.clips.size() ? &rig.clips[size_t(clip)] : nullptr;
+    const double t = playing ? clipTime(*playing, seconds) : 0.0;
+    if (playing && !playing->frames.empty()) {
+        poseBookClip(rig, *playing, t, pose);
+        return;
+    }
+    // Each node's translation, rotation and scale: its rest values, then what the clip says.
+    struct Local {
+        glm::dvec3 translation;
+        glm::dquat rotation;
+        glm::dvec3 scale;
+    };
+    std::vector<Local> locals(rig.nodes.size());
+    for (size_t i = 0; i < rig.nodes.size(); ++i)
+        locals[i] = {rig.nodes[i].translation, rig.nodes[i].rotation, rig.nodes[i].scale};
+    if (playing)
+        for (const AnimationChannel& channel : playing->channels) {
+            Local& local = locals[channel.node];
+            switch (channel.path) {
+                case AnimatedPath::Translation:
+                    local.translation = glm::dvec3(sample(channel, t, 3));
+                    break;
+                case AnimatedPath::Rotation:
+                    local.rotation = quat(sample(channel, t, 4));
+                    break;
+                case AnimatedPath::Scale:
+                    local.scale = glm::dvec3(sample(channel, t, 3));
+                    break;
+            }
+        }
+    for (size_t i = 0; i < rig.nodes.size(); ++i) {
+        const RigNode& node = rig.nodes[i];
+        glm::dmat4 local = node.matrix;
+        if (!node.hasMatrix)
+            local = glm::scale(
+                glm::translate(glm::dmat4(1.0), locals[i].translation) * glm::mat4_cast(locals[i].rotation),
+                locals[i].scale);
+        pose.world[i] = node.parent >= 0 ? pose.world[size_t(node.parent)] * local : local;
+    }
+    for (size_t j = 0; j < rig.joints.size(); ++j)
+        pose.joints[j] = pose.world[rig.joints[j].node] * rig.joints[j].inverseBind;
+}
+
+namespace {
+
+glm::dmat3 normalMatrix(const glm::dmat4& joint) {
+    glm::dmat3 linear(joint);
+    double det = glm::determinant(linear);
+    if (!(std::abs(det) > 1e-300) || !std::isfinite(det)) return glm::dmat3(0.0);
+    return glm::transpose(glm::inverse(linear));
+}
+
+glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
+    double length = glm::length(v);
+    return length > 1e-30 && std::isfinite(length) ? v / length : fallback;
+}
+
+}  // namespace
+
+PaletteEntry paletteEntry(const glm::dmat4& joint) {
+    return {glm::mat4(joint), glm::mat4(glm::dmat4(normalMatrix(joint)))};
+}
+
+SkinnedVertex skinVertex(const Vertex& vertex, const VertexSkin& skin,
+                         const std::vector<glm::dmat4>& joints) {
+    glm::dvec3 p(0.0), n(0.0), t(0.0), b(0.0);
+    for (int i = 0; i < 4; ++i) {
+        double w = skin.weights[i];
+        if (w == 0.0) continue;
+        const glm::dmat4& m = joints[skin.joints[i]];
+        p += w * glm::dvec3(m * glm::dvec4(glm::dvec3(vertex.position), 1.0));
+        n += w * (normalMatrix(m) * glm::dvec3(vertex.normal));
+        t += w * (glm::dmat3(m) * glm::dvec3(vertex.tangent));
+        b += w * (glm::dmat3(m) * glm::dvec3(vertex.bitangent));
+    }
+    SkinnedVertex out;
+    out.position = p;
+    out.normal = unitOr(n, glm::dvec3(vertex.normal));
+    out.tangent = unitOr(t - out.normal * glm::dot(out.normal, t), glm::dvec3(vertex.tangent));
+    glm::dvec3 side = glm::cross(out.normal, out.tangent);
+    out.bitangent = glm::dot(side, b) < 0.0 ? -side : side;
+    return out;
+}
+
+SkinBounds skinBounds(const MeshData& mesh) {
+    SkinBounds bounds;
+    std::vector<int32_t> slot;
+    for (size_t v = 0; v < mesh.skin.size(); ++v)
+        for (int i = 0; i < 4; ++i) {
+            if (!(mesh.skin[v].weights[i] > 0.0f)) continue;
+            uint32_t joint = mesh.skin[v].joints[i];
+            if (joint >= slot.size()) slot.resize(joint + 1, -1);
+            glm::dvec3 p(mesh.vertices[v].position);
+            if (slot[joint] < 0) {
+                slot[joint] = int32_t(bounds.joints.size());
+                bounds.joints.push_back(joint);
+                bounds.min.push_back(p);
+                bounds.max.push_back(p);
+            }
+            size_t s = size_t(slot[joint]);
+            bounds.min[s] = glm::min(bounds.min[s], p);
+            bounds.max[s] = glm::max(bounds.max[s], p);
+        }
+    return bounds;
+}
+
+void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints, glm::vec3& min,
+                 glm::vec3& max) {
+    bool first = true;
+    for (size_t s = 0; s < bounds.joints.size(); ++s)
+        for (int c = 0; c < 8; ++c) {
+            glm::dvec3 p = glm::dvec3(joints[bounds.joints[s]] *
+                                      glm::dvec4(boxCorner(c, bounds.min[s], bounds.max[s]), 1.0));
+            min = first ? glm::vec3(p) : glm::min(min, glm::vec3(p));
+            max = first ? glm::vec3(p) : glm::max(max, glm::vec3(p));
+            first = false;
+        }
+}
+
+void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
+    std::vector<SkinBounds> meshes;
+    bool first = true;
+    for (const MeshData& mesh : model.meshes) {
+        if (mesh.skin.empty()) {
+            for (const Vertex& v : mesh.vertices) {
+                min = first ? v.position : glm::min(min, v.position);
+                max = first ? v.position : glm::max(max, v.position);
+                first = false;
+            }
+            continue;
+        }
+        meshes.push_back(skinBounds(mesh));
+    }
+    Pose pose;
+    auto add = [&](int clip, double seconds) {
+        poseRig(model.rig, clip, seconds, pose);
+        for (const SkinBounds& bounds : meshes) {
+            if (bounds.joints.empty()) continue;
+            glm::vec3 lo, hi;
+            posedBounds(bounds, pose.joints, lo, hi);
+            min = first ? lo : glm::min(min, lo);
+            max = first ? hi : glm::max(max, hi);
+            first = false;
+        }
+    };
+    add(-1, 0.0);
+    constexpr int kSamples = 64;
+    for (size_t clip = 0; clip < model.rig.clips.size(); ++clip)
+        for (int s = 0; s <= kSamples; ++s)
+            add(int(clip), model.rig.clips[clip].duration * double(s) / double(kSamples + 1));
+}
+
+}  // namespace common
