@@ -534,7 +534,7 @@ int main(int argc, char** argv) {
         walkerModel.transform.rotation = {0.0f, -30.0f, 0.0f};
         scene.models.push_back(walkerModel);
         common::ModelInstance armModel{.file = "arm.gltf"};
-        armModel.transform.position = {-7.0f, 1.2f, 5.5f};
+        armModel.transform.position = {-5.5f, 1.2f, 6.0f};
         scene.models.push_back(armModel);
         writeText(dir / "animated.json", common::sceneToJson(scene));
 

@@ -942,6 +942,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
                     shapes.emplace(std::pair{meshIndex, p}, makeShape(primitive, reader, at, skipped)).first;
             if (shape->second.indices.empty()) continue;
             const bool skins = skinnedNode && attribute(primitive, "JOINTS_0") >= 0;
+            if (skinnedNode && !skins) skipped.note("a skin whose mesh has no JOINTS_0 is not applied");
             MeshData baked =
                 bakePrimitive(shape->second, skins || carried ? glm::dmat4(1.0) : instance.world, reader, at,
                               primitive.material >= 0 ? uint32_t(primitive.material) : defaultMaterial);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../../scenes/figures.hpp"
 #include "../../scenes/gltf_writer.hpp"
 
 namespace {
@@ -1392,6 +1393,95 @@ void writeExtremes(const fs::path& dir) {
 
 }  // namespace
 
+// Skins and animations that break the rules (glTF 2.0, 3.7.3 and 3.11), each a small bending arm
+// (scenes/figures.hpp) with one thing wrong: chapter-17's loader refuses each in one line.
+void writeSkinHostile(const fs::path& dir) {
+    fs::create_directories(dir);
+    auto make = [&](const std::string& name, const std::function<void(figures::SkinnedMesh&)>& editMesh,
+                    const std::function<void(gltf::File&)>& editFile) {
+        figures::SkinnedMesh mesh;
+        mesh.tube(0.0f, 2.0f, 0.1f, 4, 4,
+                  [](float x, glm::u16vec4& j, glm::vec4& w) { figures::blend(x, 0.8f, 1.2f, 0, 1, j, w); });
+        if (editMesh) editMesh(mesh);
+        std::vector<figures::Joint> joints{{}, {.parent = 0, .translation = {1.0f, 0.0f, 0.0f}}};
+        std::vector<figures::Track> tracks{{.joint = 1,
+                                            .path = "rotation",
+                                            .times = {0.0f, 1.0f},
+                                            .values = figures::quats({figures::axisAngle({0, 0, 1}, 0),
+                                                                      figures::axisAngle({0, 0, 1}, 90)})}};
+        gltf::File file = figures::write(mesh, joints, tracks, {1, 1, 1, 1}, "bend");
+        if (editFile) editFile(file);
+        file.writeGltf(dir / name);
+    };
+    make("arm.gltf", nullptr, nullptr);  // the one without a fault
+    make(
+        "joint_past_skin.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.joints[7] = {5, 0, 0, 0};
+        },
+        nullptr);
+    make(
+        "negative_weight.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.weights[7] = {1.5f, -0.5f, 0, 0};
+        },
+        nullptr);
+    make(
+        "weights_sum_half.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.weights[7] = {0.25f, 0.25f, 0, 0};
+        },
+        nullptr);
+    make(
+        "weights_nan.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.weights[7] = {NAN, 0, 0, 0};
+        },
+        nullptr);
+    // Weights that sum to 1 within 8-bit rounding (0.995): taken, made to sum to 1.
+    make(
+        "weights_rounded.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.weights[7] = {0.5f, 0.495f, 0, 0};
+        },
+        nullptr);
+    auto sampler = [](gltf::File& f) -> json& { return f.root["animations"][0]["samplers"][0]; };
+    make("times_decreasing.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> times{1.0f, 0.5f};
+        sampler(f)["input"] = f.values(times, gltf::kFloat, "SCALAR");
+    });
+    make("cubic_one_key.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> times{0.0f};
+        std::vector<float> values{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+        sampler(f) = {{"input", f.values(times, gltf::kFloat, "SCALAR")},
+                      {"output", f.values(values, gltf::kFloat, "VEC4")},
+                      {"interpolation", "CUBICSPLINE"}};
+    });
+    make("interpolation_unknown.gltf", nullptr,
+         [&](gltf::File& f) { sampler(f)["interpolation"] = "SMOOTH"; });
+    make("zero_quaternion.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> values{0, 0, 0, 1, 0, 0, 0, 0};
+        sampler(f)["output"] = f.values(values, gltf::kFloat, "VEC4");
+    });
+    make("animated_matrix_node.gltf", nullptr, [](gltf::File& f) {
+        json& node = f.root["nodes"][1];
+        node.erase("translation");
+        node.erase("rotation");
+        node.erase("scale");
+        node["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 1};
+    });
+    make("too_many_joints.gltf", nullptr, [](gltf::File& f) {
+        json joints = json::array();
+        for (int i = 0; i < 5000; ++i) joints.push_back(i % 2);
+        f.root["skins"][0]["joints"] = joints;
+    });
+    make("too_many_clips.gltf", nullptr, [](gltf::File& f) {
+        json clip = f.root["animations"][0];
+        for (int i = 0; i < 1024; ++i) f.root["animations"].push_back(clip);
+    });
+    make("joint_cycle.gltf", nullptr, [](gltf::File& f) { f.root["nodes"][1]["children"] = {0}; });
+}
+
 int main(int argc, char** argv) {
     if (argc != 2) {
         std::fprintf(stderr, "usage: gltf_cases DIR\n");
@@ -1405,6 +1495,7 @@ int main(int argc, char** argv) {
         writeFeatures(dir / "features");
         writeShadows(dir / "shadows");
         writeHostile(dir / "hostile");
+        writeSkinHostile(dir / "skins");
         writeBookClone(dir / "book");
         writeBookClone(dir / "book-without-tree", BookTree::None);
         writeBookClone(dir / "book-obj-tree", BookTree::Obj);

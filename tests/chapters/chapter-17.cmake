@@ -1,0 +1,125 @@
+# chapter-17 tests: the default scene's figures at a fixed animation time against golden images (the
+# final image, a G-buffer view, the sun's visibility), with validation (synchronization validation
+# on); the GPU's skinned vertices read back against the double-precision reference on the hard
+# cases (vertex counts around the group of 32 and past 2^20, 256 joints, the fourth weight, a
+# non-uniformly scaled joint, keys on opposite hemispheres, one key frame) with the guard past each
+# buffer intact; a pose that does not change costs no dispatch; hostile skins and animations
+# refused in one line; the standalone build.
+set(CH17 $<TARGET_FILE:chapter-17>)
+set(CH17_RUN ${CH17} --device llvmpipe --validation)
+set(FIGURES ${CMAKE_CURRENT_BINARY_DIR}/figures)
+
+foreach(view final normal visibility)
+    chapter_test(chapter-17.view-${view} WORKDIR /
+        COMMAND ${CH17_RUN} --headless --width 640 --height 360 --view ${view} --animation-time 0.4
+                --screenshot ${TEST_OUT}/chapter-17-${view}.png
+        EXPECT_STDOUT "2 models, 2 meshes, 1241 vertices, 11 joints; dispatched in 1 frames" QUIET_STDERR)
+    set_tests_properties(chapter-17.view-${view} PROPERTIES FIXTURES_SETUP ch17-${view})
+    add_test(NAME chapter-17.view-${view}-image COMMAND image_compare ${TEST_OUT}/chapter-17-${view}.png
+        --size 640 360 --golden ${GOLDEN}/chapter-17-${view}.png --max-diff 5 --max-fraction 0.001)
+    set_tests_properties(chapter-17.view-${view}-image PROPERTIES FIXTURES_REQUIRED ch17-${view})
+endforeach()
+
+# Playing: the figures posed every frame, the GPU's vertices equal to the reference; the shadow
+# cache draws them as moving casters (the cascades drawn whole once, on the first frame) and the
+# image is the one the book's way (every cascade redrawn every frame) gives, to the bit.
+foreach(redraw scrolled always)
+    chapter_test(chapter-17.play-${redraw} WORKDIR /
+        COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 12 --shadow-redraw ${redraw}
+                --check-skinning --screenshot ${TEST_OUT}/chapter-17-play-${redraw}.png
+        EXPECT_STDOUT "dispatched in 12 frames.*skinning check: 1241 vertices in 2 meshes.*guards intact"
+        QUIET_STDERR)
+    set_tests_properties(chapter-17.play-${redraw} PROPERTIES FIXTURES_SETUP ch17-play-${redraw})
+endforeach()
+set_property(TEST chapter-17.play-scrolled APPEND PROPERTY PASS_REGULAR_EXPRESSION "whole 1, 1, 1")
+add_test(NAME chapter-17.play-same-image COMMAND image_compare ${TEST_OUT}/chapter-17-play-scrolled.png
+    --size 320 180 --golden ${TEST_OUT}/chapter-17-play-always.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-17.play-same-image PROPERTIES FIXTURES_REQUIRED "ch17-play-scrolled;ch17-play-always")
+
+# What does not change costs nothing: a fixed time is skinned once, however many frames; a scene
+# without animated models makes no pass at all.
+chapter_test(chapter-17.fixed-time-skins-once WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 6 --animation-time 0.25
+    EXPECT_STDOUT "dispatched in 1 frames" QUIET_STDERR)
+chapter_test(chapter-17.nothing-animated WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 2
+            --scene $<TARGET_FILE_DIR:chapter-17>/scenes/default/scene.json
+    EXPECT_STDOUT "skinning: none \\(nothing in the scene is animated\\)" QUIET_STDERR)
+# Looping: eleven days into the clips (10^6 s, a whole number of both clips' lengths) is their
+# start, to the bit.
+foreach(time 0 1000000)
+    chapter_test(chapter-17.time-${time} WORKDIR /
+        COMMAND ${CH17_RUN} --headless --width 320 --height 180 --animation-time ${time}
+                --screenshot ${TEST_OUT}/chapter-17-time-${time}.png QUIET_STDERR)
+    set_tests_properties(chapter-17.time-${time} PROPERTIES FIXTURES_SETUP ch17-time-${time})
+endforeach()
+add_test(NAME chapter-17.time-loops-exactly COMMAND image_compare ${TEST_OUT}/chapter-17-time-1000000.png
+    --size 320 180 --golden ${TEST_OUT}/chapter-17-time-0.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-17.time-loops-exactly PROPERTIES FIXTURES_REQUIRED "ch17-time-0;ch17-time-1000000")
+foreach(bad -1 nan inf 1e10 2s)
+    chapter_test(chapter-17.animation-time-${bad} COMMAND ${CH17} --headless --animation-time "${bad}"
+        EXPECT_EXIT 2 EXPECT_STDERR "--animation-time must be a number of seconds from 0 to 1e9, got '${bad}'"
+        ONE_LINE_STDERR)
+endforeach()
+
+# The hard cases (scenes/generate_figure.cpp), each played three frames and read back.
+add_test(NAME chapter-17.generate-figures COMMAND sh -c
+    "mkdir -p \"$FIGURES\" && for spec in 'strip 1' 'strip 31' 'strip 33' 'strip 1048577' 'chain 256' fourth scaled hemispheres one-key tube walker arm; do set -- $spec; \"$0\" $1 \"$FIGURES/$1$2.gltf\" $2 || exit 1; done"
+    $<TARGET_FILE:generate_figure>)
+set_tests_properties(chapter-17.generate-figures PROPERTIES FIXTURES_SETUP ch17-figures
+    ENVIRONMENT FIGURES=${FIGURES})
+foreach(case strip1:1 strip31:31 strip33:33 strip1048577:1048577 chain256:6669 fourth:1025 scaled:1025
+             hemispheres:1025 one-key:1025 tube:2145 walker:216 arm:1025)
+    string(REPLACE ":" ";" parts ${case})
+    list(GET parts 0 figure)
+    list(GET parts 1 vertices)
+    chapter_test(chapter-17.skin-${figure} WORKDIR /
+        COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 3 --check-skinning
+                --model ${FIGURES}/${figure}.gltf
+        EXPECT_STDOUT "skinning check: ${vertices} vertices in 1 meshes.*guards intact" QUIET_STDERR)
+    set_tests_properties(chapter-17.skin-${figure} PROPERTIES FIXTURES_REQUIRED ch17-figures)
+endforeach()
+set_tests_properties(chapter-17.skin-strip1048577 PROPERTIES TIMEOUT 300)
+
+# The check can fail: the skinning shader without its bounds check writes past a mesh of 31
+# vertices into the guard, and the run says so.
+add_test(NAME chapter-17.check-finds-missing-bounds-check COMMAND sh -c
+    "rm -rf $2 && cp -r $1 $2 && sed -i '/if (index >= dispatch.count) return;/d' $2/chapter-17/skin.comp && ! grep -q 'dispatch.count) return' $2/chapter-17/skin.comp && $0 --device llvmpipe --headless --frames 1 --check-skinning --shader-dir $2 --model $3 2>&1 | grep -q 'the skinning pass wrote past model 0.s mesh of 31 vertices'"
+    ${CH17} ${PROJECT_SOURCE_DIR}/shaders ${CMAKE_CURRENT_BINARY_DIR}/shaders-no-bounds-check ${FIGURES}/strip31.gltf)
+set_tests_properties(chapter-17.check-finds-missing-bounds-check PROPERTIES FIXTURES_REQUIRED ch17-figures)
+
+# Skins and animations that break the rules (tools/gltf_cases.cpp, skins/): one line each, exit 2.
+set(SKINS ${CMAKE_CURRENT_BINARY_DIR}/gltf/skins)
+function(skin_hostile name expected file)
+    chapter_test(hostile.skin-${name} COMMAND ${CH17} --device llvmpipe --headless --model ${SKINS}/${file}
+        EXPECT_EXIT 2 EXPECT_STDERR "^chapter-17: error: ${SKINS}/${file}: ${expected}" ONE_LINE_STDERR)
+    set_tests_properties(hostile.skin-${name} PROPERTIES FIXTURES_REQUIRED gltf-cases)
+endfunction()
+skin_hostile(joint-past-skin "meshes\\[0\\].primitives\\[0\\] vertex 7 names joint 5. its skin has 2" joint_past_skin.gltf)
+skin_hostile(negative-weight "meshes\\[0\\].primitives\\[0\\] vertex 7 has a negative weight" negative_weight.gltf)
+skin_hostile(weights-sum-half "meshes\\[0\\].primitives\\[0\\] vertex 7's weights sum to 0.500000, not 1"
+    weights_sum_half.gltf)
+skin_hostile(weights-nan "meshes\\[0\\].primitives\\[0\\] WEIGHTS_0 \\(accessor 4\\) holds a non-finite number"
+    weights_nan.gltf)
+skin_hostile(times-decreasing
+    "animations\\[0\\].samplers\\[0\\].input's key frame times are not increasing from 0 or more \\(key 1\\)"
+    times_decreasing.gltf)
+skin_hostile(cubic-one-key "animations\\[0\\].samplers\\[0\\] is CUBICSPLINE with fewer than 2 key frames"
+    cubic_one_key.gltf)
+skin_hostile(interpolation-unknown
+    "animations\\[0\\].samplers\\[0\\].interpolation 'SMOOTH' is not LINEAR, STEP or CUBICSPLINE"
+    interpolation_unknown.gltf)
+skin_hostile(zero-quaternion
+    "animations\\[0\\].samplers\\[0\\].output's rotation 1 is not a unit quaternion \\(it is zero\\)"
+    zero_quaternion.gltf)
+skin_hostile(animated-matrix-node
+    "animations\\[0\\].channels\\[0\\] animates node 1, which has a matrix" animated_matrix_node.gltf)
+skin_hostile(too-many-joints "the model has skin joints: 5000. at most 4096 are loaded" too_many_joints.gltf)
+skin_hostile(too-many-clips "the model has animations: 1025. at most 1024 are loaded" too_many_clips.gltf)
+skin_hostile(joint-cycle "node 0 is on a cycle of the node hierarchy" joint_cycle.gltf)
+# Weights that miss 1 by 8-bit rounding are taken (made to sum to 1); the figure skins right.
+chapter_test(hostile.skin-weights-rounded COMMAND ${CH17_RUN} --headless --frames 2 --check-skinning
+    --model ${SKINS}/weights_rounded.gltf EXPECT_STDOUT "skinning check: 25 vertices.*guards intact" QUIET_STDERR)
+set_tests_properties(hostile.skin-weights-rounded PROPERTIES FIXTURES_REQUIRED gltf-cases)
+
+standalone_build_test(17 --width 320 --height 180 --frames 3 --check-skinning)
