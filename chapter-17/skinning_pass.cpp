@@ -55,17 +55,17 @@ VkPipeline makeSkinningPipeline(const common::Device& device, VkPipelineCache ca
 //< compute-pipeline
 
 // A vertex buffer for one instance's posed mesh: the shader writes it, the passes read it as
-// vertices, --check-skinning copies it out. Filled with 0xFF bytes, guard included.
-common::Buffer createPosedBuffer(const common::Device& device, uint32_t vertices, const std::string& name) {
+// vertices, --check-skinning copies it out. Filled with 0xFF bytes, guard included, in the
+// staging batch's submission.
+common::Buffer createPosedBuffer(const common::Device& device, common::StagingBatch& batch, uint32_t vertices,
+                                 const std::string& name) {
     VkDeviceSize size = VkDeviceSize(vertices + kGuardVertices) * sizeof(common::Vertex);
     common::Buffer buffer =
         common::createBuffer(device, size,
                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
-    VkCommandBuffer cmd = common::beginOneTimeCommands(device);
-    vkCmdFillBuffer(cmd, buffer.handle, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
-    common::submitOneTimeCommands(device, cmd);
+    vkCmdFillBuffer(batch.commandBuffer, buffer.handle, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // with the uploads
     return buffer;
 }
 
@@ -110,7 +110,7 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
                 common::GpuMesh posed = scene.meshes[draw.mesh];
                 posed.ownsIndices = false;
                 posed.ownsVertices = true;
-                posed.vertices = createPosedBuffer(device, mesh.vertexCount,
+                posed.vertices = createPosedBuffer(device, batch, mesh.vertexCount,
                                                    "posed vertices: model " + std::to_string(instance) +
                                                        ", mesh " + std::to_string(meshIndex));
                 mesh.outputMesh = uint32_t(scene.meshes.size());
@@ -236,13 +236,15 @@ void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const Animat
 void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) {
     if (!pass.record) return;
     // The posed buffers are read as vertices by the frames before this one (same queue): their
-    // reads end before the shader writes, and the last frame's writes are ordered before these.
-    VkMemoryBarrier2 beforeWrites{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                  .srcStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
-                                                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                  .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                  .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                  .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+    // reads end before the shader writes, and the last frame's writes (and the fill that made
+    // the buffers) are ordered before these.
+    VkMemoryBarrier2 beforeWrites{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+        .srcStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+        .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+        .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
     VkDependencyInfo before{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
                             .memoryBarrierCount = 1,
                             .pMemoryBarriers = &beforeWrites};

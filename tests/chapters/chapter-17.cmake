@@ -20,6 +20,17 @@ foreach(view final normal visibility)
     set_tests_properties(chapter-17.view-${view}-image PROPERTIES FIXTURES_REQUIRED ch17-${view})
 endforeach()
 
+# In a window (Xvfb), at the same time: the headless golden images.
+if(XVFB_RUN)
+    chapter_test(chapter-17.window-final
+        COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" ${CH17_RUN} --width 640 --height 360 --frames 3
+                --animation-time 0.4 --screenshot ${TEST_OUT}/chapter-17-window-final.png QUIET_STDERR)
+    set_tests_properties(chapter-17.window-final PROPERTIES FIXTURES_SETUP ch17-window)
+    add_test(NAME chapter-17.window-final-image COMMAND image_compare ${TEST_OUT}/chapter-17-window-final.png
+        --size 640 360 --golden ${GOLDEN}/chapter-17-final.png --max-diff 5 --max-fraction 0.001)
+    set_tests_properties(chapter-17.window-final-image PROPERTIES FIXTURES_REQUIRED ch17-window)
+endif()
+
 # Playing: the figures posed every frame, the GPU's vertices equal to the reference; the shadow
 # cache draws them as moving casters (the cascades drawn whole once, on the first frame) and the
 # image is the one the book's way (every cascade redrawn every frame) gives, to the bit.

@@ -228,7 +228,7 @@ endforeach()
 
 # A device without the scalarBlockLayout feature: chapters 15 and 16 and the lab refused in one
 # line naming it.
-foreach(chapter 15 15-lab 16)
+foreach(chapter 15 15-lab 16 17)
     desktop_device_test(desktop.no-scalar-block-layout.chapter-${chapter} VKBOOK_HIDE=scalarBlockLayout
         COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the scalarBlockLayout feature" ONE_LINE_STDERR)

@@ -93,7 +93,8 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
              "10;40;47;vkQueueSubmit:12;4"
              "14;40;48;vkQueueSubmit2:3;5"
              "15;47;62;vkQueueSubmit2:3;5"
-             "16;47;66;vkQueueSubmit2:3;5")
+             "16;47;66;vkQueueSubmit2:3;5"
+             "17;64;83;vkQueueSubmit2:3;5")
     list(GET spec 0 number)
     list(GET spec 1 gbuffer)
     list(GET spec 2 resize)
@@ -138,6 +139,11 @@ fault_test(fault.chapter-15.benchmark-lost-at-query-results FAULT vkGetQueryPool
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 320 --height 180
             --benchmark --warmup 1 --frames 4
     EXPECT_STDERR "^chapter-15: error: ${LOST}vkGetQueryPoolResults ${LOST_END}")
+# chapter-17's posed vertices (chapter-17/skinning_pass.cpp): a buffer per animated model and mesh,
+# made after the scene's meshes; the walker (the scene's model 18) is the first.
+fault_test(fault.chapter-17.oom-posed-vertices FAULT vkAllocateMemory:58
+    COMMAND $<TARGET_FILE:chapter-17> --device llvmpipe --validation --headless --width 320 --height 180
+    EXPECT_STDERR "^chapter-17: error: ${OOM_NAMED}posed vertices: model 18, mesh 0\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
 # The moving casters' map (chapter-16/shadow_pass.cpp), made mid-run the first time a caster moves
 # (--light-motion walk: the point light's marker): one line naming it, exit code 1.
 fault_test(fault.chapter-16.oom-moving-casters FAULT vkAllocateMemory:65

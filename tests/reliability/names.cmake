@@ -55,5 +55,6 @@ names_test(names.chapter-15-window LABELS scene,light,post,gui WINDOW COMMAND $<
 names_test(names.chapter-06-window LABELS triangle WINDOW COMMAND $<TARGET_FILE:chapter-06>)
 names_test(names.chapter-15-lab-forward LABELS forward,post COMMAND $<TARGET_FILE:chapter-15-lab> --shading forward)
 names_test(names.chapter-16 LABELS shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-16> --gui)
+names_test(names.chapter-17 LABELS skinning,shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-17> --gui)
 names_test(names.chapter-15-lab-shadows LABELS shadow,scene,light,post
     COMMAND $<TARGET_FILE:chapter-15-lab> --shadows pcf3 --shadow-layers passes)
