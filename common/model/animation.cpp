@@ -116,6 +116,10 @@ void poseRig(const Rig& rig, int clip, double seconds, Pose& pose) {
         poseBookClip(rig, *playing, t, pose);
         return;
     }
+    if (rig.nodes.empty()) {  // the book's format at rest: its meshes as stored
+        for (glm::dmat4& joint : pose.joints) joint = glm::dmat4(1.0);
+        return;
+    }
     // Each node's translation, rotation and scale: its rest values, then what the clip says.
     struct Local {
         glm::dvec3 translation;

@@ -15,6 +15,7 @@
 #include "common/core/check.hpp"
 #include "common/core/files.hpp"
 #include "common/core/report.hpp"
+#include "common/model/animation.hpp"
 #include "common/model/gltf_document.hpp"  // pathFromUtf8
 
 namespace common {
@@ -101,6 +102,115 @@ std::vector<uint8_t> readBinary(const std::filesystem::path& path, uint64_t limi
     if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
         throw InputError(utf8(path) + ": cannot read it");
     return bytes;
+}
+
+// The book's animations (its chapter 17, the converted JSON's "animations"): each key frame's
+// joint matrices, JOML Matrix4f written by its fields (m00 .. m33: column, then row), checked and
+// counted before they are kept. Returns the joints a frame has (0 when there are no animations).
+uint64_t readBookAnimations(const json& root, Rig& rig, const Reader& r) {
+    if (!root.contains("animations") || root["animations"].is_null()) return 0;
+    const json& animations = root["animations"];
+    if (!animations.is_array()) r.fail("\"animations\" is not a list");
+    if (animations.size() > kMaxAnimationClips)
+        r.fail(std::to_string(animations.size()) + " animations, more than the " +
+               std::to_string(kMaxAnimationClips) + " our limits allow");
+    uint64_t joints = 0, keys = 0;
+    for (size_t a = 0; a < animations.size(); ++a) {
+        const std::string where = "animation " + std::to_string(a);
+        const json& frames = r.field(animations[a], "frames", where);
+        if (!frames.is_array() || frames.empty()) r.fail(where + "'s \"frames\" is not a list of key frames");
+        for (size_t f = 0; f < frames.size(); ++f) {
+            const json& matrices =
+                r.field(frames[f], "joint_matrices", where + "'s frame " + std::to_string(f));
+            if (!matrices.is_array() || matrices.empty())
+                r.fail(where + "'s frame " + std::to_string(f) + " has no list of joint matrices");
+            if (joints == 0) joints = matrices.size();
+            if (matrices.size() != joints)
+                r.fail(where + "'s frame " + std::to_string(f) + " has " + std::to_string(matrices.size()) +
+                       " joint matrices where the first frame has " + std::to_string(joints));
+            keys += joints;
+        }
+        if (joints > kMaxRigJoints)
+            r.fail(std::to_string(joints) + " joints, more than the " + std::to_string(kMaxRigJoints) +
+                   " our limits allow");
+        if (keys > kMaxAnimationKeys)
+            r.fail("its animations hold more than " + std::to_string(kMaxAnimationKeys) +
+                   " joint matrices, our limit");
+    }
+    static const char* kFields[4][4] = {{"m00", "m01", "m02", "m03"},
+                                        {"m10", "m11", "m12", "m13"},
+                                        {"m20", "m21", "m22", "m23"},
+                                        {"m30", "m31", "m32", "m33"}};
+    for (size_t a = 0; a < animations.size(); ++a) {
+        const std::string where = "animation " + std::to_string(a);
+        const json& animation = animations[a];
+        AnimationClip clip;
+        clip.name = animation.contains("name") && animation["name"].is_string()
+                        ? animation["name"].get<std::string>()
+                        : where;
+        const json& millis = r.field(animation, "frame_millis", where);
+        if (!millis.is_number() || !(millis.get<double>() > 0.0) || !(millis.get<double>() <= 1e9))
+            r.fail(where + "'s frame_millis is not a number of milliseconds above 0");
+        clip.frameSeconds = millis.get<double>() / 1000.0;
+        const json& frames = animation["frames"];
+        clip.frames.reserve(frames.size() * joints);
+        for (size_t f = 0; f < frames.size(); ++f)
+            for (const json& m : frames[f]["joint_matrices"]) {
+                glm::mat4 matrix;
+                for (int c = 0; c < 4; ++c)
+                    for (int row = 0; row < 4; ++row) {
+                        const json& value =
+                            r.field(m, kFields[c][row], where + "'s frame " + std::to_string(f));
+                        if (!value.is_number() || !std::isfinite(value.get<double>()) ||
+                            std::abs(value.get<double>()) > kMaxModelCoordinate)
+                            r.fail(where + "'s frame " + std::to_string(f) +
+                                   " has a matrix value that is not "
+                                   "a finite number within 1e15");
+                        matrix[c][row] = value.get<float>();
+                    }
+                clip.frames.push_back(matrix);
+            }
+        // The last key frame blends into the first: the clip loops after all of them.
+        clip.duration = clip.frameSeconds * double(frames.size());
+        rig.clips.push_back(std::move(clip));
+    }
+    return joints;
+}
+
+// The book's per-vertex weights (the converted JSON's "anim_meshes", one a mesh, four a vertex):
+// every bone id within the frames' joints, no weight negative, their sum within
+// kWeightSumTolerance of 1 (then made exactly 1; Assimp's LimitBoneWeights renormalises too).
+std::vector<VertexSkin> readBookWeights(const json& animMesh, size_t vertices, uint64_t joints,
+                                        const Reader& r, const std::string& where) {
+    const json& weights = r.field(animMesh, "weights", where);
+    const json& ids = r.field(animMesh, "bone_ids", where);
+    if (!weights.is_array() || !ids.is_array() || weights.size() != 4 * vertices ||
+        ids.size() != 4 * vertices)
+        r.fail(where + " has not 4 weights and 4 bone ids for each of its " + std::to_string(vertices) +
+               " vertices");
+    std::vector<VertexSkin> skin(vertices);
+    for (size_t v = 0; v < vertices; ++v) {
+        double sum = 0.0;
+        for (size_t k = 0; k < 4; ++k) {
+            const json& weight = weights[4 * v + k];
+            const json& id = ids[4 * v + k];
+            if (!weight.is_number() || !(weight.get<double>() >= 0.0) || !std::isfinite(weight.get<double>()))
+                r.fail(where + "'s vertex " + std::to_string(v) +
+                       " has a weight that is not a number 0 or more");
+            if (!id.is_number_integer() || id.get<int64_t>() < 0 ||
+                uint64_t(id.get<int64_t>()) >= std::max<uint64_t>(joints, 1))
+                r.fail(where + "'s vertex " + std::to_string(v) + " names bone " + id.dump() +
+                       "; the animations have " + std::to_string(joints) + " joints");
+            skin[v].joints[k] = uint16_t(id.get<int64_t>());
+            skin[v].weights[int(k)] = weight.get<float>();
+            sum += weight.get<double>();
+        }
+        if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
+            r.fail(where + "'s vertex " + std::to_string(v) + "'s weights sum to " + std::to_string(sum) +
+                   ", not 1");
+        skin[v].weights /= float(sum);
+    }
+    return skin;
 }
 
 }  // namespace
@@ -213,6 +323,17 @@ ModelData loadBookModel(const std::filesystem::path& path) {
                    ", our limit");
     }
 
+    // Chapter 17's animated models: the key frames (counted and checked first), then each mesh's
+    // weights as its vertices are decoded.
+    const uint64_t joints = readBookAnimations(root, model.rig, r);
+    const json* animMeshes = nullptr;
+    if (root.contains("anim_meshes") && !root["anim_meshes"].is_null()) {
+        animMeshes = &root["anim_meshes"];
+        if (!animMeshes->is_array() || animMeshes->size() != meshes.size())
+            r.fail("\"anim_meshes\" is not a list with an entry for each of its " +
+                   std::to_string(meshes.size()) + " meshes");
+        if (joints == 0) r.fail("\"anim_meshes\" without \"animations\" (no joints to weigh)");
+    }
     model.boundsMin = glm::vec3(std::numeric_limits<float>::max());
     model.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
     // A range that several meshes name is decoded and kept once: the others draw it again.
@@ -254,6 +375,9 @@ ModelData loadBookModel(const std::filesystem::path& path) {
             mesh.indices[k] = index;
         }
         if (mesh.indices.empty()) continue;  // nothing to draw, and no part of the bounds
+        if (animMeshes)
+            mesh.skin = readBookWeights((*animMeshes)[i], mesh.vertices.size(), joints, r,
+                                        "anim_meshes " + std::to_string(i));
         for (const Vertex& vertex : mesh.vertices) {
             model.boundsMin = glm::min(model.boundsMin, vertex.position);
             model.boundsMax = glm::max(model.boundsMax, vertex.position);
@@ -262,6 +386,14 @@ ModelData loadBookModel(const std::filesystem::path& path) {
         model.meshes.push_back(std::move(mesh));
     }
     if (model.meshes.empty()) r.fail("no mesh has a triangle");
+    if (animMeshes) {
+        // The palette: one joint per matrix of a key frame (the book's matrices are final: a
+        // joint's node and inverse bind are not used); posed, the model reaches beyond its meshes.
+        model.rig.joints.resize(size_t(joints));
+        animatedBounds(model, model.boundsMin, model.boundsMax);
+    } else {
+        model.rig = {};
+    }
     return model;
 }
 //< book-model

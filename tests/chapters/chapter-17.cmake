@@ -134,3 +134,28 @@ chapter_test(hostile.skin-weights-rounded COMMAND ${CH17_RUN} --headless --frame
 set_tests_properties(hostile.skin-weights-rounded PROPERTIES FIXTURES_REQUIRED gltf-cases)
 
 standalone_build_test(17 --width 320 --height 180 --frames 3 --check-skinning)
+
+# The book's converted format with its animation (tools/gltf_cases.cpp, writeBookFigure): played and
+# read back against the reference; --book-scene opens the book's chapter-17 scene with its Bob (a
+# stand-in in the test clone); what breaks the format refused in one line.
+chapter_test(chapter-17.book-format WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 5 --check-skinning --model ${SKINS}/book_arm.json
+    EXPECT_STDOUT "skinning check: 221 vertices in 1 meshes.*guards intact" QUIET_STDERR)
+set_tests_properties(chapter-17.book-format PROPERTIES FIXTURES_REQUIRED gltf-cases)
+chapter_test(chapter-17.book-scene WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 5 --check-skinning
+            --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book
+    EXPECT_STDOUT "chapter-17: 6 draws.*skinning: 1 models, 1 meshes, 221 vertices, 2 joints.*guards intact" QUIET_STDERR)
+set_tests_properties(chapter-17.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cases)
+chapter_test(chapter-17.book-scene-without-bob WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book-without-tree/booksamples/chapter-15/resources/models/sponza/Sponza.gltf
+    EXPECT_STDERR "^warning: the book's Bob is not at .*boblamp.json: the scene without him\n$")
+set_tests_properties(chapter-17.book-scene-without-bob PROPERTIES FIXTURES_REQUIRED gltf-cases)
+skin_hostile(book-bone-past "anim_meshes 0's vertex 7 names bone 7. the animations have 2 joints" book_bone_past.json)
+skin_hostile(book-weights-sum "anim_meshes 0's vertex 7's weights sum to 0.250000, not 1" book_weights_sum.json)
+skin_hostile(book-anim-meshes-short "\"anim_meshes\" is not a list with an entry for each of its 1 meshes"
+    book_anim_meshes_short.json)
+skin_hostile(book-frames-differ "animation 0's frame 3 has 1 joint matrices where the first frame has 2"
+    book_frames_differ.json)
+skin_hostile(book-matrix-nan "animation 0's frame 2 has a matrix value that is not a finite number within 1e15"
+    book_matrix_nan.json)

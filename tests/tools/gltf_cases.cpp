@@ -53,6 +53,11 @@ void writePng(const fs::path& path, int w, int h, int channels, const std::vecto
         throw std::runtime_error("cannot write " + path.string());
 }
 
+std::string readBytesText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     out << text;
@@ -991,6 +996,62 @@ void writeBookTreeObj(const fs::path& dir) {
 // (0, 5, 0), looking along +x and down) and lights show in one picture.
 // tree: the chapter-16 tree in the converted format, as OBJ only, or none.
 enum class BookTree { Converted, Obj, None };
+// The book's converted format with its chapter-17 animation (a stand-in for its Bob): a bending
+// arm as figures.hpp makes it, in 14-float big-endian vertices, with "anim_meshes" (4 weights and
+// bone ids a vertex) and "animations" (24 key frames of joint matrices, JOML's m00..m33 fields).
+// `edit` breaks it for the hostile cases; `scale` sizes it.
+void writeBookModel(const fs::path& dir, const std::string& name, const std::vector<float>& vertices,
+                    const std::vector<uint32_t>& indices, json meshes, json materials);
+json bookMaterial(const std::string& id, const std::string& texture);
+
+void writeBookFigure(const fs::path& dir, const std::string& name,
+                     const std::function<void(json&)>& edit = nullptr, float scale = 1.0f) {
+    figures::SkinnedMesh arm;
+    arm.tube(0.0f, 2.0f, 0.15f, 16, 12,
+             [](float x, glm::u16vec4& j, glm::vec4& w) { figures::blend(x, 0.8f, 1.2f, 0, 1, j, w); });
+    std::vector<float> vertices;
+    json weights = json::array(), ids = json::array();
+    for (size_t v = 0; v < arm.positions.size(); ++v) {
+        vec3 n = arm.normals[v], t = glm::normalize(glm::cross(vec3(1, 0, 0), n)), b = glm::cross(n, t);
+        for (vec3 x : {arm.positions[v] * scale, n, t, b}) vertices.insert(vertices.end(), {x.x, x.y, x.z});
+        vertices.insert(vertices.end(), {arm.uvs[v].x, arm.uvs[v].y});
+        for (int k = 0; k < 4; ++k) {
+            weights.push_back(arm.weights[v][k]);
+            ids.push_back(arm.joints[v][k]);
+        }
+    }
+    auto matrix = [](const glm::mat4& m) {
+        json out = {{"properties", 0}};
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                const char key[4] = {'m', char('0' + c), char('0' + r), '\0'};
+                out[key] = m[c][r];
+            }
+        return out;
+    };
+    json frames = json::array();
+    for (int f = 0; f < 24; ++f) {
+        float degrees = 90.0f * std::sin(6.2831853f * float(f) / 24.0f);
+        glm::mat4 elbow = glm::translate(glm::mat4(1), vec3(scale, 0, 0)) *
+                          glm::mat4_cast(figures::axisAngle({0, 0, 1}, degrees)) *
+                          glm::translate(glm::mat4(1), vec3(-scale, 0, 0));
+        frames.push_back({{"joint_matrices", {matrix(glm::mat4(1)), matrix(elbow)}}});
+    }
+    json meshes = json::array({{{"id", "arm"},
+                                {"material_id", "skin"},
+                                {"offset_vtx", 0},
+                                {"vtx_size", vertices.size() * 4},
+                                {"offset_idx", 0},
+                                {"idx_size", arm.indices.size() * 4}}});
+    writeBookModel(dir, name, vertices, arm.indices, meshes, json::array({bookMaterial("skin", "")}));
+    json root = json::parse(readBytesText(dir / (name + ".json")));
+    root["anim_meshes"] = json::array({{{"weights", weights}, {"bone_ids", ids}}});
+    root["animations"] =
+        json::array({{{"name", "bend"}, {"frame_millis", 1000.0 / 24.0}, {"frames", frames}}});
+    if (edit) edit(root);
+    writeText(dir / (name + ".json"), root.dump());
+}
+
 void writeBookClone(const fs::path& dir, BookTree tree = BookTree::Converted) {
     fs::path models = dir / "booksamples" / "chapter-15" / "resources" / "models" / "sponza";
     fs::create_directories(models);
@@ -1038,6 +1099,12 @@ void writeBookClone(const fs::path& dir, BookTree tree = BookTree::Converted) {
     fs::path treeDir = dir / "booksamples" / "chapter-16" / "resources" / "models" / "tree";
     if (tree == BookTree::Converted) writeBookTree(treeDir);
     if (tree == BookTree::Obj) writeBookTreeObj(treeDir);
+    // chapter-17's Bob: a stand-in in his place (the book's converted boblamp.json).
+    // Bob is about 60 units tall, drawn at 0.04: the stand-in's arm 80 long. (Not in the clone
+    // that holds chapter 15's sample alone.)
+    if (tree != BookTree::None)
+        writeBookFigure(dir / "booksamples" / "chapter-17" / "resources" / "models" / "bob", "boblamp",
+                        nullptr, 40.0f);
 }
 
 // The book's converted format broken one rule at a time (DIR/NAME/tree.json, with the stand-in
@@ -1480,6 +1547,17 @@ void writeSkinHostile(const fs::path& dir) {
         for (int i = 0; i < 1024; ++i) f.root["animations"].push_back(clip);
     });
     make("joint_cycle.gltf", nullptr, [](gltf::File& f) { f.root["nodes"][1]["children"] = {0}; });
+    // The book's format: the arm, and what breaks it.
+    writeBookFigure(dir, "book_arm");
+    writeBookFigure(dir, "book_bone_past", [](json& root) { root["anim_meshes"][0]["bone_ids"][29] = 7; });
+    writeBookFigure(dir, "book_weights_sum",
+                    [](json& root) { root["anim_meshes"][0]["weights"][28] = 0.25; });
+    writeBookFigure(dir, "book_anim_meshes_short", [](json& root) { root["anim_meshes"] = json::array(); });
+    writeBookFigure(dir, "book_frames_differ",
+                    [](json& root) { root["animations"][0]["frames"][3]["joint_matrices"].erase(1); });
+    writeBookFigure(dir, "book_matrix_nan", [](json& root) {
+        root["animations"][0]["frames"][2]["joint_matrices"][1]["m30"] = "NaN";
+    });
 }
 
 int main(int argc, char** argv) {
