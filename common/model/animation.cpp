@@ -31,6 +31,7 @@ glm::dquat quat(const glm::dvec4& v) {  // glTF's (x, y, z, w)
     return length > 0.0 ? q / length : glm::dquat(1.0, 0.0, 0.0, 0.0);
 }
 
+//> slerp
 // Appendix C's spherical linear interpolation: the shorter way round (q and -q are the same
 // rotation), linear where the angle is too small for sin() to divide by.
 glm::dquat slerp(glm::dquat a, glm::dquat b, double t) {
@@ -44,7 +45,9 @@ glm::dquat slerp(glm::dquat a, glm::dquat b, double t) {
     double s = std::sin(angle);
     return glm::normalize(a * (std::sin((1.0 - t) * angle) / s) + b * (std::sin(t * angle) / s));
 }
+//< slerp
 
+//> sample
 // The channel's value at clip time t (3.11, Appendix C): before the first key its first value,
 // after the last its last.
 glm::dvec4 sample(const AnimationChannel& channel, double t, size_t components) {
@@ -83,6 +86,7 @@ glm::dvec4 sample(const AnimationChannel& channel, double t, size_t components) 
     }
     return keyValue(channel, k, components);
 }
+//< sample
 
 // The book's format: each key frame's joint matrices as they are; between two key frames each
 // matrix's entries blended linearly (its key frames are close: the md5 clips run at 24 a second).
