@@ -188,28 +188,32 @@ void recordFrame(Chapter& c, common::FrameSync& sync, uint32_t slot, uint32_t fr
                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     VK_CHECK(vkBeginCommandBuffer(sync.commandBuffer, &beginInfo));
     common::timeFrameStart(c.run, sync.commandBuffer, slot, frame);
-    // First the skinning (nothing when no pose changed), then chapter-16's passes, which draw
-    // the posed vertices as they draw every mesh.
-    common::beginPass(c.run, sync.commandBuffer, 0);
-    recordSkinningPass(sync.commandBuffer, c.skinningPass, slot);
-    common::endPass(c.run, sync.commandBuffer, slot, 0);
-    common::beginPass(c.run, sync.commandBuffer, 1);
+    // First the skinning (none when nothing is animated; no dispatch when no pose changed), then
+    // chapter-16's passes, which draw the posed vertices as they draw every mesh. `pass` counts
+    // the timed passes, in the order createRunControl was given them.
+    uint32_t pass = 0;
+    if (!c.skinningPass.models.empty()) {
+        common::beginPass(c.run, sync.commandBuffer, pass);
+        recordSkinningPass(sync.commandBuffer, c.skinningPass, slot);
+        common::endPass(c.run, sync.commandBuffer, slot, pass++);
+    }
+    common::beginPass(c.run, sync.commandBuffer, pass);
     recordShadowPass(sync.commandBuffer, c.shadowPass, c.scenePass, c.gpuScene, slot);
-    common::endPass(c.run, sync.commandBuffer, slot, 1);
-    common::beginPass(c.run, sync.commandBuffer, 2);
+    common::endPass(c.run, sync.commandBuffer, slot, pass++);
+    common::beginPass(c.run, sync.commandBuffer, pass);
     recordScenePass(sync.commandBuffer, c.scenePass, c.gpuScene, slot, c.camera.position);
-    common::endPass(c.run, sync.commandBuffer, slot, 2);
-    common::beginPass(c.run, sync.commandBuffer, 3);
+    common::endPass(c.run, sync.commandBuffer, slot, pass++);
+    common::beginPass(c.run, sync.commandBuffer, pass);
     VkDescriptorSet shadows = c.shadowPass.readSets[slot];
     recordLightPass(sync.commandBuffer, c.lightPass, slot, c.lightView, {&shadows, 1});
-    common::endPass(c.run, sync.commandBuffer, slot, 3);
-    common::beginPass(c.run, sync.commandBuffer, 4);
+    common::endPass(c.run, sync.commandBuffer, slot, pass++);
+    common::beginPass(c.run, sync.commandBuffer, pass);
     common::recordPostPass(sync.commandBuffer, c.postPass, c.target, imageIndex, c.fxaa, c.gui.enabled);
-    common::endPass(c.run, sync.commandBuffer, slot, 4);
+    common::endPass(c.run, sync.commandBuffer, slot, pass++);
     if (c.gui.enabled) {
-        common::beginPass(c.run, sync.commandBuffer, 5);
+        common::beginPass(c.run, sync.commandBuffer, pass);
         common::recordGuiPass(sync.commandBuffer, c.guiPass, slot, c.target, imageIndex, overlay);
-        common::endPass(c.run, sync.commandBuffer, slot, 5);
+        common::endPass(c.run, sync.commandBuffer, slot, pass);
     }
     VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
 }
@@ -465,7 +469,8 @@ void setUp(Chapter& c, const common::Options& options) {
     double passesStart = common::millisecondsSinceStart();
     createPasses(c, options.framesInFlight);
     c.passesMs = common::millisecondsSinceStart() - passesStart;
-    std::vector<std::string> passes{"skinning", "shadow", "scene", "light", "post"};
+    std::vector<std::string> passes{"shadow", "scene", "light", "post"};
+    if (!c.skinningPass.models.empty()) passes.insert(passes.begin(), "skinning");  // only where something moves
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
 

@@ -39,7 +39,7 @@ for library in libGLdispatch.so.0 libGLX.so.0 libGL.so.1 libEGL.so.1 libOpenGL.s
     [ -n "$path" ] || { echo "gpu_package.sh: $library is not installed (apt-get install libgl1 libegl1 libopengl0)" >&2; exit 1; }
     glvnd+=("$path")
 done
-programs=("$build"/bin/chapter-* "$build/tools/generate_light_scene" "$build/bench/bin/sponza_standin"
+programs=("$build"/bin/chapter-* "$build/tools/generate_light_scene" "$build/tools/generate_figure" "$build/bench/bin/sponza_standin"
           "$build/bench/bin/bandwidth" "$build/tests/bin/gltf_cases" "$layer" "${glvnd[@]}")
 # bench/shadow_study.sh's reference, where this build has it (Embree found).
 [ -x "$build/tests/bin/shadow_reference" ] && programs+=("$build/tests/bin/shadow_reference")
@@ -106,7 +106,7 @@ done
 rm -rf "$root/.gpu/build/bin" "$root/.gpu/build/tools" "$root/.gpu/build/bench" "$root/.gpu/build/tests"
 cp -r "$build/bin" "$root/.gpu/build/bin"
 mkdir -p "$root/.gpu/build/tools"  # bench/light_scaling.sh makes scenes with it
-cp "$build/tools/generate_light_scene" "$root/.gpu/build/tools/"
+cp "$build/tools/generate_light_scene" "$build/tools/generate_figure" "$root/.gpu/build/tools/"  # bench/animation.sh: the strip
 mkdir -p "$root/.gpu/build/bench/bin"
 cp "$build/bench/bin/sponza_standin" "$build/bench/bin/bandwidth" "$root/.gpu/build/bench/bin/"
 mkdir -p "$root/.gpu/build/tests/bin"  # bench/specialisation.sh writes its glTF scene with it

@@ -208,3 +208,13 @@ live_test(live-reload.chapter-16.shadow-edit edit chapter-16/shadow.frag COMMAND
 set_property(TEST live-reload.chapter-16.shadow-edit APPEND PROPERTY ENVIRONMENT
              XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=2
              "GOOD=    outMoments = vec2(0.0)\;  // live_reload.sh")
+# chapter-17: its skinning shader edited while the clock stands still (--animation-time): the
+# compute pipeline made again, and the figures skinned again with it (a fixed pose is skinned only
+# once otherwise): lifted half a metre. Two pipelines: the skinning pass's, and the light pass's made
+# again to read the moving casters' map, as the figures' new shapes are moving casters to the shadow
+# cache.
+live_test(live-reload.chapter-17.skin-edit edit chapter-17/skin.comp COMMAND $<TARGET_FILE:chapter-17>
+    --device llvmpipe --animation-time 0.4)
+set_property(TEST live-reload.chapter-17.skin-edit APPEND PROPERTY ENVIRONMENT
+             XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=2
+             "GOOD=    skinned[index].position.y += 0.5\;  // live_reload.sh")
