@@ -470,7 +470,8 @@ void setUp(Chapter& c, const common::Options& options) {
     createPasses(c, options.framesInFlight);
     c.passesMs = common::millisecondsSinceStart() - passesStart;
     std::vector<std::string> passes{"shadow", "scene", "light", "post"};
-    if (!c.skinningPass.models.empty()) passes.insert(passes.begin(), "skinning");  // only where something moves
+    if (!c.skinningPass.models.empty())
+        passes.insert(passes.begin(), "skinning");  // only where something moves
     if (c.gui.enabled) passes.push_back("gui");
     c.run = common::createRunControl(options, c.device, passes);
 
@@ -666,11 +667,12 @@ std::string describeSkinning(const Chapter& c) {
     for (const SkinnedModel& model : pass.models)
         for (const SkinnedMesh& mesh : model.meshes) ++meshes, vertices += mesh.vertexCount;
     char text[256];
-    std::snprintf(text, sizeof(text),
-                  "%zu models, %llu meshes, %llu vertices, %u joints; dispatched in %llu frames",
-                  pass.models.size(), static_cast<unsigned long long>(meshes),
-                  static_cast<unsigned long long>(vertices), pass.paletteJoints,
-                  static_cast<unsigned long long>(pass.dispatchedFrames));
+    std::snprintf(
+        text, sizeof(text),
+        "%zu models, %llu meshes, %llu vertices, %u joints; dispatched in %llu frames (%u dispatches each)",
+        pass.models.size(), static_cast<unsigned long long>(meshes),
+        static_cast<unsigned long long>(vertices), pass.paletteJoints,
+        static_cast<unsigned long long>(pass.dispatchedFrames), pass.dispatches);
     return text;
 }
 

@@ -26,7 +26,6 @@ struct GpuInfluence {
 static_assert(sizeof(GpuInfluence) == 24, "skin.comp reads Influence with this layout");
 
 struct DispatchConstants {
-    uint32_t first;
     uint32_t count;
     uint32_t paletteBase;
 };
@@ -170,10 +169,27 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
          common::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
          common::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)},
         "skinning");
-    uint32_t meshes = 0;
-    for (const SkinnedModel& model : pass.models) meshes += uint32_t(model.meshes.size());
+    // Each mesh in chunks: a storage buffer's binding may span at most maxStorageBufferRange bytes
+    // (128 MiB on many devices: 2.4 million vertices), a dispatch at most
+    // maxComputeWorkGroupCount[0] groups; a chunk is a whole number of groups of 32, so that its
+    // offsets in the vertex (56 bytes) and influence (24 bytes) buffers are multiples of 256, the
+    // largest minStorageBufferOffsetAlignment a device may have.
+    const VkPhysicalDeviceLimits& limits = device.properties.limits;
+    const uint64_t chunkVertices = std::min<uint64_t>(limits.maxStorageBufferRange / sizeof(common::Vertex),
+                                                      uint64_t(pass.maxGroups) * 32) /
+                                   32 * 32;
+    if (chunkVertices == 0) throw common::Failure("this device's storage buffers are too small to skin with");
+    uint32_t chunks = 0;
+    for (SkinnedModel& model : pass.models)
+        for (SkinnedMesh& mesh : model.meshes)
+            for (uint64_t first = 0; first < mesh.vertexCount; first += chunkVertices) {
+                mesh.chunks.push_back({uint32_t(first),
+                                       uint32_t(std::min<uint64_t>(chunkVertices, mesh.vertexCount - first)),
+                                       {}});
+                ++chunks;
+            }
     pass.descriptorPool = common::createDescriptorPool(
-        device, meshes * framesInFlight, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * meshes * framesInFlight}},
+        device, chunks * framesInFlight, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * chunks * framesInFlight}},
         "skinning");
     for (uint32_t slot = 0; slot < framesInFlight; ++slot)
         pass.palettes.push_back(
@@ -181,21 +197,37 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
                                  "joint palette " + std::to_string(slot)));
+    // A chunk's sets: its range of the bind pose, the influences and the posed vertices (the last
+    // chunk's with the guard: a write past the mesh would land there), and the frame's palette.
+    auto write = [&](VkDescriptorSet set, uint32_t binding, VkBuffer buffer, VkDeviceSize offset,
+                     VkDeviceSize range) {
+        VkDescriptorBufferInfo info{buffer, offset, range};
+        VkWriteDescriptorSet update{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                    .dstSet = set,
+                                    .dstBinding = binding,
+                                    .descriptorCount = 1,
+                                    .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                    .pBufferInfo = &info};
+        vkUpdateDescriptorSets(device.handle, 1, &update, 0, nullptr);
+    };
     for (SkinnedModel& model : pass.models)
         for (SkinnedMesh& mesh : model.meshes)
-            for (uint32_t slot = 0; slot < framesInFlight; ++slot) {
-                VkDescriptorSet set =
-                    common::allocateDescriptorSet(device, pass.descriptorPool, pass.setLayout, "skinning");
-                common::writeBufferDescriptor(device, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                              scene.meshes[mesh.sourceMesh].vertices.handle, VK_WHOLE_SIZE);
-                common::writeBufferDescriptor(device, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                              mesh.influences.handle, VK_WHOLE_SIZE);
-                common::writeBufferDescriptor(device, set, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                              pass.palettes[slot].handle, VK_WHOLE_SIZE);
-                // The whole buffer, guard included: a write past the mesh would land in the guard.
-                common::writeBufferDescriptor(device, set, 3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                              scene.meshes[mesh.outputMesh].vertices.handle, VK_WHOLE_SIZE);
-                mesh.sets.push_back(set);
+            for (SkinnedMesh::Chunk& chunk : mesh.chunks) {
+                const bool last = chunk.first + chunk.count == mesh.vertexCount;
+                const VkDeviceSize vertexBytes = sizeof(common::Vertex),
+                                   influenceBytes = sizeof(GpuInfluence);
+                for (uint32_t slot = 0; slot < framesInFlight; ++slot) {
+                    VkDescriptorSet set = common::allocateDescriptorSet(device, pass.descriptorPool,
+                                                                        pass.setLayout, "skinning");
+                    write(set, 0, scene.meshes[mesh.sourceMesh].vertices.handle, chunk.first * vertexBytes,
+                          chunk.count * vertexBytes);
+                    write(set, 1, mesh.influences.handle, chunk.first * influenceBytes,
+                          chunk.count * influenceBytes);
+                    write(set, 2, pass.palettes[slot].handle, 0, VK_WHOLE_SIZE);
+                    write(set, 3, scene.meshes[mesh.outputMesh].vertices.handle, chunk.first * vertexBytes,
+                          (chunk.count + (last ? kGuardVertices : 0)) * vertexBytes);
+                    chunk.sets.push_back(set);
+                }
             }
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(DispatchConstants)};
     pass.pipelineLayout = common::createPipelineLayout(device, {&pass.setLayout, 1}, {&push, 1}, "skinning");
@@ -252,20 +284,19 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);
     uint64_t vertices = 0;
+    uint32_t dispatches = 0;
     for (const SkinnedModel& model : pass.models)
         for (const SkinnedMesh& mesh : model.meshes) {
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipelineLayout, 0, 1,
-                                    &mesh.sets[slot], 0, nullptr);
-            // ceil(count / 32) groups, in dispatches of at most maxComputeWorkGroupCount[0]; the
-            // shader returns for the last group's invocations past the mesh.
-            const uint64_t perDispatch = uint64_t(pass.maxGroups) * 32;
-            for (uint64_t first = 0; first < mesh.vertexCount; first += perDispatch) {
-                const uint64_t groups =
-                    std::min<uint64_t>(pass.maxGroups, (mesh.vertexCount - first + 31) / 32);
-                DispatchConstants constants{uint32_t(first), mesh.vertexCount, model.paletteBase};
+            // A dispatch a chunk: ceil(count / 32) groups; the shader returns for the last group's
+            // invocations past the chunk.
+            for (const SkinnedMesh::Chunk& chunk : mesh.chunks) {
+                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipelineLayout, 0, 1,
+                                        &chunk.sets[slot], 0, nullptr);
+                DispatchConstants constants{chunk.count, model.paletteBase};
                 vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                                    sizeof(constants), &constants);
-                vkCmdDispatch(cmd, uint32_t(groups), 1, 1);
+                vkCmdDispatch(cmd, (chunk.count + 31) / 32, 1, 1);
+                ++dispatches;
             }
             vertices += mesh.vertexCount;
         }
@@ -281,6 +312,7 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
     common::vk13.CmdPipelineBarrier2(cmd, &after);
     ++pass.dispatchedFrames;
     pass.vertices = vertices;
+    pass.dispatches = dispatches;
 }
 //< record-skinning
 

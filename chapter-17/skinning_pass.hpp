@@ -41,8 +41,14 @@ struct SkinnedMesh {
     uint32_t vertexCount = 0;
     common::Buffer influences;  // per vertex: 4 joints in 16 bits each, 4 weights (24 bytes)
     bool ownsInfluences = true;
-    common::SkinBounds bounds;          // per joint, the bind-pose box of the vertices it moves
-    std::vector<VkDescriptorSet> sets;  // per frame in flight (the palette is per frame)
+    common::SkinBounds bounds;  // per joint, the bind-pose box of the vertices it moves
+    // The vertices in chunks a binding and a dispatch can hold (skinning_pass.cpp), each with its
+    // sets, one per frame in flight (the palette is per frame).
+    struct Chunk {
+        uint32_t first = 0, count = 0;
+        std::vector<VkDescriptorSet> sets;
+    };
+    std::vector<Chunk> chunks;
 };
 
 // An animated model instance (the book's entity with an EntityAnimation).
@@ -74,7 +80,8 @@ struct SkinningPass {
     double posedAt = -1.0;       // the clock time the buffers hold
     int posedClip = -1;
     uint64_t dispatchedFrames = 0;
-    uint64_t vertices = 0;  // skinned per dispatching frame
+    uint64_t vertices = 0;    // skinned per dispatching frame
+    uint32_t dispatches = 0;  // vkCmdDispatch calls per dispatching frame
 };
 
 // Finds the scene's animated models (a rig and a skinned mesh), gives each skinned mesh of each of

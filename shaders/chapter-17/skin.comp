@@ -34,9 +34,10 @@ layout(set = 0, binding = 1, scalar) readonly buffer Influences { Influence infl
 layout(set = 0, binding = 2, std430) readonly buffer Palette { Joint palette[]; };
 layout(set = 0, binding = 3, scalar) writeonly buffer Skinned { Vertex skinned[]; };
 
+// The buffers above are bound to one chunk of a mesh (a mesh larger than a binding or a dispatch
+// can hold takes several, skinning_pass.cpp): vertex 0 is the chunk's first.
 layout(push_constant) uniform Dispatch {
-    uint first;        // the vertex of this dispatch's invocation 0 (a large mesh takes several)
-    uint count;        // the mesh's vertices
+    uint count;        // the chunk's vertices
     uint paletteBase;  // the model's first joint in the palette
 } dispatch;
 //< skin-inputs
@@ -48,7 +49,7 @@ vec3 unitOr(vec3 v, vec3 fallback) {
 
 //> skin-main
 void main() {
-    uint index = dispatch.first + gl_GlobalInvocationID.x;
+    uint index = gl_GlobalInvocationID.x;
     if (index >= dispatch.count) return;  // the book's shader reads and writes past the buffers here
     Vertex v = bindPose[index];
     Influence influence = influences[index];
