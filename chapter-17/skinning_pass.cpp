@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <set>
 #include <string>
 
 #include "common/core/check.hpp"
@@ -79,6 +80,36 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     // Each instance's draws, in the order loadGpuScene made them: its model's meshes, then its repeats.
     std::vector<std::vector<uint32_t>> drawsOf(sceneDesc.models.size());
     for (uint32_t d = 0; d < scene.draws.size(); ++d) drawsOf[scene.draws[d].instance].push_back(d);
+    // The allocations the pass will make, counted before any is (as loadGpuScene counts the
+    // scene's): a posed buffer per instance and skinned mesh, the influences (and their staging
+    // copies) per distinct mesh, a palette per frame in flight.
+    {
+        uint64_t posed = 0;
+        std::set<const common::MeshData*> distinct;
+        for (uint32_t instance = 0; instance < sceneDesc.models.size(); ++instance) {
+            const common::ModelData& model = common::loadModelCached(models, sceneDesc.models[instance].file);
+            if (model.rig.empty()) continue;
+            std::set<uint32_t> meshes;
+            const std::vector<uint32_t>& draws = drawsOf[instance];
+            for (size_t k = 0; k < draws.size(); ++k) {
+                const size_t m = k < model.meshes.size() ? k : model.repeats[k - model.meshes.size()].mesh;
+                if (model.meshes[m].skin.empty()) continue;
+                meshes.insert(scene.draws[draws[k]].mesh);
+                distinct.insert(&model.meshes[m]);
+            }
+            posed += meshes.size();
+        }
+        const uint64_t existing = 2 * scene.meshes.size() + scene.textures.size(), renderer = 64;
+        const uint64_t needed = posed + 2 * distinct.size() + framesInFlight;
+        const uint64_t limit = device.properties.limits.maxMemoryAllocationCount;
+        if (existing + needed + renderer > limit)
+            throw common::InputError(
+                "the scene's animated models need " + std::to_string(needed) +
+                " more memory allocations (a buffer per instance and skinned mesh) beside the "
+                "scene's " +
+                std::to_string(existing) + "; this device allows " + std::to_string(limit) +
+                ", of which the renderer keeps " + std::to_string(renderer));
+    }
     uint64_t skinnedBytes = 0;
     common::StagingBatch batch = common::beginStaging(device);
     std::map<const common::MeshData*, size_t> influenceOwner;  // the first SkinnedMesh that uploaded them
@@ -86,7 +117,10 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     for (uint32_t instance = 0; instance < sceneDesc.models.size(); ++instance) {
         const common::ModelData& model = common::loadModelCached(models, sceneDesc.models[instance].file);
         if (model.rig.empty()) continue;
-        SkinnedModel skinned{.instance = instance, .model = &model, .paletteBase = pass.paletteJoints};
+        SkinnedModel skinned{.instance = instance,
+                             .name = common::utf8(sceneDesc.models[instance].file),
+                             .model = &model,
+                             .paletteBase = pass.paletteJoints};
         std::map<uint32_t, size_t> outputOf;  // GpuScene mesh -> its SkinnedMesh here
         const std::vector<uint32_t>& draws = drawsOf[instance];
         for (size_t k = 0; k < draws.size(); ++k) {
@@ -175,9 +209,12 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     // offsets in the vertex (56 bytes) and influence (24 bytes) buffers are multiples of 256, the
     // largest minStorageBufferOffsetAlignment a device may have.
     const VkPhysicalDeviceLimits& limits = device.properties.limits;
-    const uint64_t chunkVertices = std::min<uint64_t>(limits.maxStorageBufferRange / sizeof(common::Vertex),
-                                                      uint64_t(pass.maxGroups) * 32) /
-                                   32 * 32;
+    const uint64_t bindable =
+        limits.maxStorageBufferRange / sizeof(common::Vertex);  // the last chunk's guard too
+    const uint64_t chunkVertices =
+        std::min<uint64_t>(bindable > kGuardVertices ? bindable - kGuardVertices : 0,
+                           uint64_t(pass.maxGroups) * 32) /
+        32 * 32;
     if (chunkVertices == 0) throw common::Failure("this device's storage buffers are too small to skin with");
     uint32_t chunks = 0;
     for (SkinnedModel& model : pass.models)
@@ -250,11 +287,27 @@ void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const Animat
         const common::Rig& rig = model.model->rig;
         const int clip = rig.clips.empty() ? -1 : std::min(clock.clip, int(rig.clips.size()) - 1);
         common::poseRig(rig, clip, clock.seconds, model.pose);
-        for (size_t j = 0; j < model.pose.joints.size(); ++j)
-            palette[model.paletteBase + j] = common::paletteEntry(model.pose.joints[j]);
+        // A pose no float holds (a clip's key between the load's samples may reach it): stopped
+        // in one line rather than drawn as NaN.
+        auto refuse = [&](const char* what) {
+            throw common::InputError(model.name + ": its pose at " + std::to_string(clock.seconds) + " s " +
+                                     what);
+        };
+        for (size_t j = 0; j < model.pose.joints.size(); ++j) {
+            common::PaletteEntry entry = common::paletteEntry(model.pose.joints[j]);
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    if (!std::isfinite(entry.joint[c][r]) || !std::isfinite(entry.normal[c][r]))
+                        refuse("has a joint matrix that is not finite in 32-bit floats");
+            palette[model.paletteBase + j] = entry;
+        }
         for (const SkinnedMesh& mesh : model.meshes) {
             common::GpuMesh& posed = scene.meshes[mesh.outputMesh];
             common::posedBounds(mesh.bounds, model.pose.joints, posed.boundsMin, posed.boundsMax);
+            for (int a = 0; a < 3; ++a)
+                if (!(std::abs(posed.boundsMin[a]) <= common::kMaxModelCoordinate) ||
+                    !(std::abs(posed.boundsMax[a]) <= common::kMaxModelCoordinate))
+                    refuse("reaches beyond 1e15 from the origin (or a number that is not finite)");
         }
     }
     pass.record = true;
@@ -355,6 +408,15 @@ void checkSkinning(const common::Device& device, const SkinningPass& pass, const
             common::vk13.CmdPipelineBarrier2(cmd, &dependency);
             VkBufferCopy region{0, 0, posed.size};
             vkCmdCopyBuffer(cmd, posed.handle, readback.handle, 1, &region);
+            VkMemoryBarrier2 copied{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                    .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                    .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                    .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+                                    .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
+            VkDependencyInfo toHost{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                    .memoryBarrierCount = 1,
+                                    .pMemoryBarriers = &copied};
+            common::vk13.CmdPipelineBarrier2(cmd, &toHost);
             common::submitOneTimeCommands(device, cmd);
             const auto* gpu = static_cast<const common::Vertex*>(readback.mapped);
             for (uint32_t v = 0; v < mesh.vertexCount; ++v) {

@@ -54,6 +54,7 @@ struct SkinnedMesh {
 // An animated model instance (the book's entity with an EntityAnimation).
 struct SkinnedModel {
     uint32_t instance = 0;  // the scene's model
+    std::string name;       // its file, for messages
     const common::ModelData* model = nullptr;
     uint32_t paletteBase = 0;  // its first joint in the palette buffer
     std::vector<SkinnedMesh> meshes;

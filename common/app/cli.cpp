@@ -61,7 +61,8 @@ constexpr const char* kSceneUsage =
     "                     or glTF 2.0 (.gltf with its files, or .glb), or the book's converted\n"
     "                     models (.json with its .vtx, .idx and _mat.json)\n"
     "  --book-scene PATH  the book's scene: its Sponza.gltf (PATH: the book's clone, or the .gltf)\n"
-    "                     with chapter 15's camera and lights (chapter-16: chapter 16's, and its tree)\n"
+    "                     with chapter 15's camera and lights (chapter-16: chapter 16's, and its tree;\n"
+    "                     chapter-17: chapter 17's, and Bob)\n"
     "  --view NAME        show one attachment instead of the final image: %s\n";
 
 constexpr const char* kExitCodes =

@@ -238,36 +238,82 @@ void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints
 }
 
 void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
-    std::vector<SkinBounds> meshes;
     bool first = true;
+    auto add = [&](const glm::vec3& lo, const glm::vec3& hi) {
+        min = first ? lo : glm::min(min, lo);
+        max = first ? hi : glm::max(max, hi);
+        first = false;
+    };
+    // The static meshes as they are; the skinned ones as one box per joint, over every mesh.
+    const size_t jointCount = model.rig.joints.size();
+    SkinBounds joints;
+    std::vector<int32_t> slot(jointCount, -1);
     for (const MeshData& mesh : model.meshes) {
         if (mesh.skin.empty()) {
-            for (const Vertex& v : mesh.vertices) {
-                min = first ? v.position : glm::min(min, v.position);
-                max = first ? v.position : glm::max(max, v.position);
-                first = false;
-            }
+            for (const Vertex& v : mesh.vertices) add(v.position, v.position);
             continue;
         }
-        meshes.push_back(skinBounds(mesh));
-    }
-    Pose pose;
-    auto add = [&](int clip, double seconds) {
-        poseRig(model.rig, clip, seconds, pose);
-        for (const SkinBounds& bounds : meshes) {
-            if (bounds.joints.empty()) continue;
-            glm::vec3 lo, hi;
-            posedBounds(bounds, pose.joints, lo, hi);
-            min = first ? lo : glm::min(min, lo);
-            max = first ? hi : glm::max(max, hi);
-            first = false;
+        SkinBounds bounds = skinBounds(mesh);
+        for (size_t k = 0; k < bounds.joints.size(); ++k) {
+            const uint32_t j = bounds.joints[k];
+            if (slot[j] < 0) {
+                slot[j] = int32_t(joints.joints.size());
+                joints.joints.push_back(j);
+                joints.min.push_back(bounds.min[k]);
+                joints.max.push_back(bounds.max[k]);
+            }
+            joints.min[size_t(slot[j])] = glm::min(joints.min[size_t(slot[j])], bounds.min[k]);
+            joints.max[size_t(slot[j])] = glm::max(joints.max[size_t(slot[j])], bounds.max[k]);
         }
+    }
+    if (joints.joints.empty()) return;
+    Pose pose;
+    auto addPose = [&](int clip, double seconds) {
+        poseRig(model.rig, clip, seconds, pose);
+        glm::vec3 lo, hi;
+        posedBounds(joints, pose.joints, lo, hi);
+        add(lo, hi);
     };
-    add(-1, 0.0);
-    constexpr int kSamples = 64;
-    for (size_t clip = 0; clip < model.rig.clips.size(); ++clip)
-        for (int s = 0; s <= kSamples; ++s)
-            add(int(clip), model.rig.clips[clip].duration * double(s) / double(kSamples + 1));
+    addPose(-1, 0.0);
+    // Each clip at its key times and halfway between them -- thinned to a number of samples that
+    // keeps the whole work within about 2^28 node and joint poses, however many clips, nodes and
+    // keys the model has. A pose between the samples may still reach further: chapter-17 checks
+    // every frame's pose as it plays.
+    size_t clips = 0, channels = 0;
+    for (const AnimationClip& clip : model.rig.clips) {
+        if (clip.channels.empty() && clip.frames.empty()) continue;
+        ++clips;
+        channels = std::max(channels, clip.channels.size());
+    }
+    if (clips == 0) return;
+    const double perSample =
+        double(model.rig.nodes.size() + channels + jointCount + 8 * joints.joints.size());
+    const size_t cap =
+        size_t(std::clamp(double(uint64_t{1} << 28) / (double(clips) * perSample), 2.0, 1024.0));
+    std::vector<double> times;
+    for (size_t c = 0; c < model.rig.clips.size(); ++c) {
+        const AnimationClip& clip = model.rig.clips[c];
+        if (clip.channels.empty() && clip.frames.empty()) continue;
+        times.clear();
+        for (const AnimationChannel& channel : clip.channels)
+            for (float t : channel.times) times.push_back(t);
+        if (!clip.frames.empty()) {
+            const size_t frames = clip.frames.size() / std::max<size_t>(jointCount, 1);
+            for (size_t f = 0; f < frames; ++f) times.push_back(clip.frameSeconds * double(f));
+        }
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end()), times.end());
+        const size_t keys = times.size();
+        for (size_t k = 0; k + 1 < keys; ++k) times.push_back(0.5 * (times[k] + times[k + 1]));
+        std::sort(times.begin(), times.end());
+        const size_t samples = std::min(times.size(), cap);
+        for (size_t i = 0; i < samples; ++i) {
+            const size_t k = samples == times.size()
+                                 ? i
+                                 : size_t(double(i) * double(times.size() - 1) / double(samples - 1));
+            addPose(int(c), std::min(times[k], std::nextafter(clip.duration, 0.0)));
+        }
+    }
 }
 
 }  // namespace common

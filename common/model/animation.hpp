@@ -59,9 +59,10 @@ SkinBounds skinBounds(const MeshData& mesh);
 void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints, glm::vec3& min,
                  glm::vec3& max);
 
-// The box every skinned mesh of `model` stays within while its clips play, from the poses at
-// every key frame and 64 times between: a bound for cameras and cascades, not a proof (a cubic
-// spline may overshoot between samples a little).
+// The box every skinned mesh of `model` stays within while its clips play, from the poses at rest
+// and at every key time and halfway between (thinned, for a model of very many keys, clips and
+// nodes, to about 2^28 node and joint poses in all): a bound for cameras and cascades, not a proof
+// (a pose between samples may reach further; chapter-17 checks each frame's pose as it plays).
 void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max);
 
 }  // namespace common

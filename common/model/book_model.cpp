@@ -209,6 +209,11 @@ std::vector<VertexSkin> readBookWeights(const json& animMesh, size_t vertices, u
             r.fail(where + "'s vertex " + std::to_string(v) + "'s weights sum to " + std::to_string(sum) +
                    ", not 1");
         skin[v].weights /= float(sum);
+        int heaviest = 0;  // unused slots name the heaviest joint (weight 0), as the glTF loader's
+        for (int k = 1; k < 4; ++k)
+            if (skin[v].weights[k] > skin[v].weights[heaviest]) heaviest = k;
+        for (int k = 0; k < 4; ++k)
+            if (skin[v].weights[k] == 0.0f) skin[v].joints[k] = skin[v].joints[heaviest];
     }
     return skin;
 }

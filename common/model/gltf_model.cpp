@@ -366,11 +366,14 @@ struct RigReader {
 void checkRigBudget(const tinygltf::Model& model, const GltfReader& reader) {
     uint64_t joints = 0, keys = 0, values = 0;
     for (const tinygltf::Skin& skin : model.skins) joints = saturatingAdd(joints, skin.joints.size());
+    // Per channel: each keeps its sampler's key times and values (channels may share a sampler).
     for (size_t a = 0; a < model.animations.size(); ++a)
-        for (size_t s = 0; s < model.animations[a].samplers.size(); ++s) {
-            const tinygltf::AnimationSampler& sampler = model.animations[a].samplers[s];
+        for (const tinygltf::AnimationChannel& channel : model.animations[a].channels) {
+            const int s = channel.sampler;
             const std::string at =
                 "animations[" + std::to_string(a) + "].samplers[" + std::to_string(s) + "]";
+            const tinygltf::AnimationSampler& sampler =
+                reader.get(model.animations[a].samplers, s, "animations[" + std::to_string(a) + "] sampler");
             reader.get(model.accessors, sampler.input, at + ".input: accessor");
             reader.get(model.accessors, sampler.output, at + ".output: accessor");
             keys = saturatingAdd(keys, reader.count(sampler.input, at + ".input"));
@@ -437,6 +440,7 @@ RigReader readRig(const tinygltf::Model& model, GltfReader& reader, Skipped& ski
         const std::string at = "animations[" + std::to_string(a) + "]";
         AnimationClip clip;
         clip.name = animation.name.empty() ? "animation " + std::to_string(a) : animation.name;
+        std::set<std::pair<int, std::string>> targets;  // 3.11.1: each (node, path) once
         for (size_t c = 0; c < animation.channels.size(); ++c) {
             const tinygltf::AnimationChannel& channel = animation.channels[c];
             const std::string where = at + ".channels[" + std::to_string(c) + "]";
@@ -447,6 +451,9 @@ RigReader readRig(const tinygltf::Model& model, GltfReader& reader, Skipped& ski
             if (channel.target_node < 0) continue;  // 3.11.2: an extension names the target
             const tinygltf::Node& node =
                 reader.get(model.nodes, channel.target_node, where + ".target.node: node");
+            if (!targets.insert({channel.target_node, channel.target_path}).second)
+                reader.fail(where + " animates node " + std::to_string(channel.target_node) + "'s " +
+                            channel.target_path + " again (an animation targets each property once)");
             AnimationChannel out1;
             out1.node = uint32_t(out.rigNode[size_t(channel.target_node)]);
             size_t components = 3;
@@ -549,7 +556,7 @@ uint32_t skinJoints(RigReader& rig, const tinygltf::Model& model, int skinIndex,
 // every set the primitive has, at most the four largest weights kept, each vertex checked --
 // a joint the skin has, no weight negative, their sum within kWeightSumTolerance of 1 (then made
 // exactly 1).
-std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
+std::vector<VertexSkin> readInfluences(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                                        const std::vector<uint32_t>& source, uint32_t jointBase,
                                        size_t jointCount, GltfReader& reader, const std::string& where,
                                        Skipped& skipped) {
@@ -568,6 +575,8 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
         if (joints < 0 || weights < 0)
             reader.fail(where + " has " + (joints < 0 ? weightsName : jointsName) + " without " +
                         (joints < 0 ? jointsName : weightsName));
+        if (reader.get(model.accessors, joints, where + " " + jointsName + ": accessor").normalized)
+            reader.fail(where + " " + jointsName + " is normalized (joint ids are whole numbers)");
         for (int accessor : {joints, weights})
             if (reader.count(accessor, where + " " + jointsName) != vertexCount)
                 reader.fail(where + " " + (accessor == joints ? jointsName : weightsName) +
@@ -592,11 +601,11 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
                 const float weight = (*set.weights)[4 * i + c], joint = (*set.joints)[4 * i + c];
                 if (!(weight >= 0.0f))
                     reader.fail(where + " vertex " + std::to_string(i) + " has a negative weight");
-                if (weight == 0.0f) continue;
-                if (joint >= float(jointCount))
+                if (joint >= float(jointCount))  // 3.7.3.2: every id is one of the skin's joints
                     reader.fail(where + " vertex " + std::to_string(i) + " names joint " +
                                 std::to_string(uint64_t(joint)) + "; its skin has " +
                                 std::to_string(jointCount));
+                if (weight == 0.0f) continue;
                 sum += weight;
                 influences.push_back({weight, uint32_t(joint)});
             }
@@ -607,10 +616,15 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
         out.weights = glm::vec4(0.0f);
         out.joints[0] = out.joints[1] = out.joints[2] = out.joints[3] = uint16_t(jointBase);
         if (sets.size() == 1) {  // each weight stays in its slot
+            // An unused slot names the vertex's heaviest joint: its weight 0 times a joint no
+            // weight uses (whose matrix might not even be finite) would still be computed.
+            size_t heaviest = 0;
+            for (size_t c = 1; c < 4; ++c)
+                if ((*sets[0].weights)[4 * i + c] > (*sets[0].weights)[4 * i + heaviest]) heaviest = c;
             for (size_t c = 0; c < 4; ++c) {
                 const float weight = (*sets[0].weights)[4 * i + c];
-                if (weight == 0.0f) continue;
-                out.joints[c] = uint16_t(jointBase + uint32_t((*sets[0].joints)[4 * i + c]));
+                const size_t slot = weight == 0.0f ? heaviest : c;
+                out.joints[c] = uint16_t(jointBase + uint32_t((*sets[0].joints)[4 * i + slot]));
                 out.weights[int(c)] = float(weight / sum);
             }
             continue;
@@ -623,9 +637,9 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Primitive& primitive,
         }
         double kept = 0.0;
         for (const auto& [weight, joint] : influences) kept += weight;
-        for (size_t k = 0; k < influences.size(); ++k) {
-            out.joints[k] = uint16_t(jointBase + influences[k].second);
-            out.weights[int(k)] = float(influences[k].first / kept);
+        for (size_t k = 0; k < 4; ++k) {  // unused slots: the heaviest joint, weight 0
+            out.joints[k] = uint16_t(jointBase + influences[k < influences.size() ? k : 0].second);
+            if (k < influences.size()) out.weights[int(k)] = float(influences[k].first / kept);
         }
     }
     if (dropped)
@@ -950,7 +964,7 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
                 const uint32_t base =
                     skinJoints(rig, model, node.skin, reader, "nodes[" + std::to_string(instance.node) + "]");
                 baked.skin =
-                    readInfluences(primitive, shape->second.source, base,
+                    readInfluences(model, primitive, shape->second.source, base,
                                    model.skins[size_t(node.skin)].joints.size(), reader, at, skipped);
             } else if (carried) {
                 auto joint = rig.rigidBase.find(instance.node);
@@ -983,8 +997,9 @@ ModelData loadGltfModel(const std::filesystem::path& path) {
                            out.boundsMax.y + out.boundsMax.z) ||
             std::max({maxAbs(glm::dvec3(out.boundsMin)), maxAbs(glm::dvec3(out.boundsMax))}) >
                 kMaxModelCoordinate)
-            reader.fail("the model's animations move it beyond " + std::to_string(kMaxModelCoordinate) +
-                        " from the origin (or to a number that is not finite)");
+            reader.fail(
+                "the model's animations move it beyond 1e15 from the origin (or to a number that is not "
+                "finite)");
     } else if (!model.animations.empty()) {
         skipped.note("its animations move no mesh");
     }

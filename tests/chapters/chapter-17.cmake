@@ -169,3 +169,11 @@ skin_hostile(book-frames-differ "animation 0's frame 3 has 1 joint matrices wher
     book_frames_differ.json)
 skin_hostile(book-matrix-nan "animation 0's frame 2 has a matrix value that is not a finite number within 1e15"
     book_matrix_nan.json)
+skin_hostile(joint-past-skin-at-weight-0 "meshes\\[0\\].primitives\\[0\\] vertex 7 names joint 200. its skin has 2"
+    joint_past_skin_at_weight_0.gltf)
+skin_hostile(joints-normalized "meshes\\[0\\].primitives\\[0\\] JOINTS_0 is normalized \\(joint ids are whole numbers\\)"
+    joints_normalized.gltf)
+skin_hostile(same-target-twice
+    "animations\\[0\\].channels\\[1\\] animates node 1's rotation again \\(an animation targets each property once\\)"
+    same_target_twice.gltf)
+skin_hostile(key-far-away "the model's animations move it beyond 1e15 from the origin" key_far_away.gltf)

@@ -192,6 +192,16 @@ fault_test(fault.allocations-too-few FAULT vkAllocateMemory:1000000 EXPECT_EXIT 
     COMMAND $<TARGET_FILE:chapter-15> --device llvmpipe --validation --headless --width 64 --height 36
     EXPECT_STDERR "^chapter-15: error: .*the scene needs [0-9]+ memory allocations \\(one per mesh buffer and texture\\). this device allows 70, of which the renderer keeps 64\n$")
 set_property(TEST fault.allocations-too-few APPEND PROPERTY ENVIRONMENT VKBOOK_MAX_ALLOCATIONS=70)
+# chapter-17's posed buffers, influences and palettes counted as well, before any is made: its
+# default scene needs 8 beside the scene's 26 and the renderer's 64 -- refused at 97, run at 98.
+fault_test(fault.allocations-too-few-chapter-17 FAULT vkAllocateMemory:1000000 EXPECT_EXIT 2
+    COMMAND $<TARGET_FILE:chapter-17> --device llvmpipe --validation --headless --width 64 --height 36
+    EXPECT_STDERR "^chapter-17: error: the scene's animated models need 8 more memory allocations \\(a buffer per instance and skinned mesh\\) beside the scene's 26. this device allows 97, of which the renderer keeps 64\n$")
+set_property(TEST fault.allocations-too-few-chapter-17 APPEND PROPERTY ENVIRONMENT VKBOOK_MAX_ALLOCATIONS=97)
+fault_test(fault.allocations-at-the-reserve-17 FAULT vkAllocateMemory:1000000 EXPECT_EXIT 0
+    COMMAND $<TARGET_FILE:chapter-17> --device llvmpipe --validation --headless --width 64 --height 36 --gui --frames 3
+    EXPECT_STDOUT "chapter-17: 21 draws" QUIET_STDERR)
+set_property(TEST fault.allocations-at-the-reserve-17 APPEND PROPERTY ENVIRONMENT VKBOOK_MAX_ALLOCATIONS=98)
 foreach(chapter 10 14 15 15-lab)
     set(gui --gui)
     if(chapter STREQUAL "10")

@@ -1547,6 +1547,30 @@ void writeSkinHostile(const fs::path& dir) {
         for (int i = 0; i < 1024; ++i) f.root["animations"].push_back(clip);
     });
     make("joint_cycle.gltf", nullptr, [](gltf::File& f) { f.root["nodes"][1]["children"] = {0}; });
+    // Joint 200 of 2 where the vertex's weight is 0: still refused (every id names a joint).
+    make(
+        "joint_past_skin_at_weight_0.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.joints[7] = {0, 200, 0, 0};
+        },
+        nullptr);
+    make("joints_normalized.gltf", nullptr, [](gltf::File& f) {
+        int joints = f.root["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"];
+        f.root["accessors"][size_t(joints)]["normalized"] = true;
+    });
+    make("same_target_twice.gltf", nullptr, [](gltf::File& f) {
+        json channel = f.root["animations"][0]["channels"][0];
+        f.root["animations"][0]["channels"].push_back(channel);
+    });
+    // A key between the clip's ends that throws the elbow 1e30 away: found at load.
+    make("key_far_away.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> times{0.0f, 0.001f, 1.0f};
+        std::vector<float> values{1, 0, 0, 1e30f, 0, 0, 1, 0, 0};
+        json channel = {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}};
+        f.root["animations"][0]["samplers"].push_back({{"input", f.values(times, gltf::kFloat, "SCALAR")},
+                                                       {"output", f.values(values, gltf::kFloat, "VEC3")}});
+        f.root["animations"][0]["channels"].push_back(channel);
+    });
     // The book's format: the arm, and what breaks it.
     writeBookFigure(dir, "book_arm");
     writeBookFigure(dir, "book_bone_past", [](json& root) { root["anim_meshes"][0]["bone_ids"][29] = 7; });
