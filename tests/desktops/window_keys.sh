@@ -11,6 +11,10 @@ pid=$!
 window=$(timeout 60 xdotool search --sync --name "chapter-15") || { echo "no window appeared"; kill $pid; exit 1; }
 window=${window%%$'\n'*}
 xdotool mousemove --window "$window" 20 20  # keyboard focus follows the pointer without a window manager
+# The window appears before the chapter's first frame has read its events; on a busy machine (the
+# suite runs three tests at once on two cores) that can take a second or more, and a key held
+# meanwhile was not always seen. Its first frames drawn, every key reaches it.
+sleep 2
 for key in 1 4 Left; do
     xdotool keydown "$key"
     sleep 0.7
