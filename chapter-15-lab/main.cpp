@@ -48,6 +48,7 @@
 #include "light_culling.hpp"
 #include "output_dump.hpp"
 #include "shadow_study.hpp"
+#include "skinning_study.hpp"
 
 namespace {
 
@@ -103,7 +104,16 @@ const common::ChapterInfo kChapter{
      {"cascades", {"3", "1", "2", "4"}, "with --shadows: cascades of the sun's shadow map"},
      {"shadow-map-size",
       {"2048", "512", "1024", "4096"},
-      "with --shadows: texels along each side of a cascade's map"}},
+      "with --shadows: texels along each side of a cascade's map"},
+     // The skinning study (skinning_study.hpp): chapter-17's skinning against other forms.
+     {"skinning-study",
+      {},
+      "instead of rendering a scene, skin two generated figures in every form the skinning study "
+      "compares, time them and check them against a double-precision reference; write the table "
+      "to this CSV file"},
+     {"skinning-study-size",
+      {"medium", "small", "large"},
+      "with --skinning-study: about 66 000 vertices a figure, a few thousand, or about a million"}},
 };
 
 //> overlay
@@ -194,6 +204,9 @@ std::vector<Cascade> studyCascades(const ShadowStudyOptions& study, const common
 }
 
 void run(const common::Options& options) {
+    if (skinningStudyRequested(options)) return runSkinningStudy(options);  // no scene, no window
+    if (options.choices.count("skinning-study-size"))
+        throw common::InputError("--skinning-study-size needs --skinning-study");
     //> setup
     common::ModelCache models;
     common::Scene scene = common::sceneFromOptions(options, models);

@@ -225,8 +225,10 @@ inline gltf::File twistingTube() {
 }
 
 // A biped of boxes 1.8 tall, every box on one joint: hips, spine, head, two legs (thigh, shin)
-// and two arms; a walk in place of 1 s: legs and arms swing, the hips bob (CUBICSPLINE).
-inline gltf::File walker() {
+// and two arms; a walk in place of 1 s: legs and arms swing, the hips bob (CUBICSPLINE). With
+// `travel`, it walks that far along -z in the clip's first 0.2 s instead of bobbing (LINEAR), then
+// stays there: a figure that crosses the shadow cascades within a dozen frames.
+inline gltf::File walker(float travel = 0.0f) {
     SkinnedMesh mesh;
     enum : uint16_t { Hips, Spine, Head, ThighL, ShinL, ThighR, ShinR, ArmL, ArmR };
     std::vector<Joint> joints(9);
@@ -272,6 +274,13 @@ inline gltf::File walker() {
         float first = joint == ShinL ? 40.0f : 5.0f, second = joint == ShinL ? 5.0f : 40.0f;
         t.values = quats({axisAngle({1, 0, 0}, first), axisAngle({1, 0, 0}, second)});
         tracks.push_back(t);
+    }
+    if (travel > 0.0f) {
+        tracks.push_back({.joint = Hips,
+                          .path = "translation",
+                          .times = {0.0f, 0.2f},
+                          .values = {0.0f, 0.95f, 0.0f, 0.0f, 0.95f, -travel}});
+        return write(mesh, joints, tracks, {0.75f, 0.75f, 0.8f, 1.0f}, "walk away");
     }
     // The hips bob twice a step: a cubic spline through 0.95 and 1.0 with flat tangents.
     Track bob{.joint = Hips, .path = "translation", .interpolation = "CUBICSPLINE"};

@@ -131,6 +131,8 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
     if (wanted.geometryShader && !features.features.geometryShader)
         return "it lacks the geometryShader feature";
     if (wanted.multiview && !chain.multiview.multiview) return "it lacks the multiview feature";
+    if (wanted.vertexStores && !features.features.vertexPipelineStoresAndAtomics)
+        return "it lacks the vertexPipelineStoresAndAtomics feature";
     return {};
 }
 
@@ -292,6 +294,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     vkGetPhysicalDeviceFeatures(device.physical, &available);
     VkPhysicalDeviceFeatures coreFeatures{};
     coreFeatures.geometryShader = features.geometryShader ? VK_TRUE : VK_FALSE;
+    coreFeatures.vertexPipelineStoresAndAtomics = features.vertexStores ? VK_TRUE : VK_FALSE;
     device.depthClamp = features.depthClampWhereAvailable && available.depthClamp;
     coreFeatures.depthClamp = device.depthClamp ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo createInfo{
