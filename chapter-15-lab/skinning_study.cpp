@@ -389,7 +389,7 @@ void destroyPipelines(const common::Device& device, FormPipelines& pipelines) {
 }
 
 // The four passes' view-projections: a perspective view of the figure, and three orthographic
-// cascades looking down at it, each twice as wide as the last.
+// cascades looking down at it, each twice as wide as the last (the first twice the figure).
 std::array<glm::mat4, 4> passViews(const Figure& figure) {
     glm::dvec3 min(INFINITY), max(-INFINITY);
     for (const glm::dvec3& p : figure.positions) min = glm::min(min, p), max = glm::max(max, p);
@@ -399,7 +399,7 @@ std::array<glm::mat4, 4> passViews(const Figure& figure) {
     views[0] = glm::perspective(glm::radians(60.0f), 1.0f, 0.05f * size, 10.0f * size) *
                glm::lookAt(centre + glm::vec3(0.3f, 0.4f, 1.2f) * size, centre, glm::vec3(0, 1, 0));
     for (int k = 0; k < 3; ++k) {
-        float half = size * float(1 << k);
+        float half = size * float(2 << k);  // the figure a quarter of the map across, then less
         views[size_t(k + 1)] =
             glm::ortho(-half, half, -half, half, 0.0f, 4.0f * size) *
             glm::lookAt(centre + glm::vec3(0.4f, 1.0f, 0.3f) * size * 2.0f, centre, glm::vec3(0, 0, 1));
