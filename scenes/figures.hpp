@@ -226,8 +226,8 @@ inline gltf::File twistingTube() {
 
 // A biped of boxes 1.8 tall, every box on one joint: hips, spine, head, two legs (thigh, shin)
 // and two arms; a walk in place of 1 s: legs and arms swing, the hips bob (CUBICSPLINE). With
-// `travel`, it walks that far along -z in the clip's first 0.2 s instead of bobbing (LINEAR), then
-// stays there: a figure that crosses the shadow cascades within a dozen frames.
+// `travel`, it walks that far along -z in the clip's second instead of bobbing (LINEAR): a figure
+// that crosses the shadow cascades.
 inline gltf::File walker(float travel = 0.0f) {
     SkinnedMesh mesh;
     enum : uint16_t { Hips, Spine, Head, ThighL, ShinL, ThighR, ShinR, ArmL, ArmR };
@@ -278,7 +278,7 @@ inline gltf::File walker(float travel = 0.0f) {
     if (travel > 0.0f) {
         tracks.push_back({.joint = Hips,
                           .path = "translation",
-                          .times = {0.0f, 0.2f},
+                          .times = {0.0f, 1.0f},
                           .values = {0.0f, 0.95f, 0.0f, 0.0f, 0.95f, -travel}});
         return write(mesh, joints, tracks, {0.75f, 0.75f, 0.8f, 1.0f}, "walk away");
     }

@@ -538,12 +538,12 @@ int main(int argc, char** argv) {
         scene.models.push_back(armModel);
         writeText(dir / "animated.json", common::sceneToJson(scene));
 
-        // A walker that walks 30 m away from the camera in 0.2 s, through every shadow cascade
+        // A walker that walks 30 m away from the camera in a second, through every shadow cascade
         // (chapter-17's test of the shadow cache with a caster that changes cascades).
         figures::walker(30.0f).writeGltf(dir / "walk-away.gltf");
         scene.models.resize(scene.models.size() - 2);
         common::ModelInstance awayModel{.file = "walk-away.gltf"};
-        awayModel.transform.position = {1.5f, 0.0f, 9.0f};
+        awayModel.transform.position = {0.8f, 0.0f, 10.5f};
         scene.models.push_back(awayModel);
         writeText(dir / "walk-away.json", common::sceneToJson(scene));
 

@@ -50,6 +50,34 @@ add_test(NAME chapter-17.play-same-image COMMAND image_compare ${TEST_OUT}/chapt
     --size 320 180 --golden ${TEST_OUT}/chapter-17-play-always.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-17.play-same-image PROPERTIES FIXTURES_REQUIRED "ch17-play-scrolled;ch17-play-always")
 
+# A figure that walks out of a cascade (the default scene's walk-away.json: 30 m away from the camera
+# in a second): drawn apart as a moving caster in cascade 1 while it is there and in cascade 2 after,
+# never redrawing a cascade whole; halfway and at the end, the image is the one redrawing every
+# cascade every frame gives, to the bit (no shadow left behind where it was).
+set(WALK_AWAY $<TARGET_FILE_DIR:chapter-17>/scenes/default/walk-away.json)
+foreach(frames 30 60)
+    foreach(redraw scrolled always)
+        set(expect "whole 60, 60, 60")
+        if(redraw STREQUAL "scrolled")
+            math(EXPR last "${frames} - 1")
+            set(expect "whole 1, 1, 1.*moving casters drawn apart in 0, ([1-9]|1[0-9]|2[0-8]), ${last} frames")
+        elseif(frames EQUAL 30)
+            set(expect "whole 30, 30, 30")
+        endif()
+        chapter_test(chapter-17.walk-away-${frames}-${redraw} WORKDIR /
+            COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames ${frames} --shadow-redraw ${redraw}
+                    --scene ${WALK_AWAY} --screenshot ${TEST_OUT}/chapter-17-walk-away-${frames}-${redraw}.png
+            EXPECT_STDOUT "${expect}" QUIET_STDERR)
+        set_tests_properties(chapter-17.walk-away-${frames}-${redraw} PROPERTIES
+            FIXTURES_SETUP ch17-walk-away-${frames}-${redraw})
+    endforeach()
+    add_test(NAME chapter-17.walk-away-${frames}-same-image COMMAND image_compare
+        ${TEST_OUT}/chapter-17-walk-away-${frames}-scrolled.png --size 320 180
+        --golden ${TEST_OUT}/chapter-17-walk-away-${frames}-always.png --max-diff 0 --max-fraction 0)
+    set_tests_properties(chapter-17.walk-away-${frames}-same-image PROPERTIES
+        FIXTURES_REQUIRED "ch17-walk-away-${frames}-scrolled;ch17-walk-away-${frames}-always")
+endforeach()
+
 # What does not change costs nothing: a fixed time is skinned once, however many frames; a scene
 # without animated models makes no pass at all.
 chapter_test(chapter-17.fixed-time-skins-once WORKDIR /
