@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Plots chapter-15-lab's skinning study (--skinning-study FILE.csv) as SVG: a row per form of
-skinning the tentacle, sorted by its largest position error (relative to the figure's size, written
+skinning the tentacle, sorted by its largest position error against the tentacle skinned in double
+with all its 8 influences (relative to its size, written
 beside its name), and on each row a dot per table for the GPU time of skinning and drawing it in
 four passes, relative to chapter-17's form (compute once, linear blend, fp32 joints, 8 influences)
-in the same table.
+in the same table: the median run as a dot, the fastest to the slowest run as a line.
 
   bench/skinning_plot.py OUT.svg LABEL=FILE.csv [LABEL=FILE.csv ...]
 
@@ -33,9 +34,11 @@ def main():
         label, path = arg.split("=", 1)
         rows = [r for r in csv.DictReader(open(path, newline="")) if r["figure"] == "tentacle"]
         base = float(rows[0]["total_ms"])  # the first row: chapter-17's form
-        series.append((label, {short(r): (float(r["total_ms"]) / base, float(r["max_error"])) for r in rows}))
+        series.append((label, {short(r): (float(r["total_ms"]) / base, float(r["max_error_every_influence"]),
+                                          float(r["total_ms_min"]) / base, float(r["total_ms_max"]) / base)
+                               for r in rows}))
     forms = sorted(series[0][1], key=lambda f: max(s[f][1] for _, s in series))
-    xmax = max(2.0, max(v[0] for _, s in series for v in s.values()) * 1.1)
+    xmax = 2.5
     height = TOP + ROW * len(forms) + BOTTOM
     px = lambda x: LEFT + (W - LEFT - RIGHT) * x / xmax
     svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{height}" font-family="sans-serif" font-size="12">',
@@ -54,7 +57,11 @@ def main():
         svg.append(f'<text x="{LEFT - 10}" y="{y - 2}" text-anchor="end">{form}</text>')
         svg.append(f'<text x="{LEFT - 10}" y="{y + 12}" text-anchor="end" fill="#555">error {error:.1e}</text>')
         for k, (_, s) in enumerate(series):
-            svg.append(f'<circle cx="{px(s[form][0]):.1f}" cy="{y + 4 * (k - 1)}" r="5" fill="{COLORS[k]}" fill-opacity="0.85"/>')
+            ratio, _, fastest, slowest = s[form]
+            cy = y + 4 * (k - 1)
+            svg.append(f'<line x1="{px(fastest):.1f}" y1="{cy}" x2="{px(min(slowest, xmax)):.1f}" y2="{cy}" '
+                       f'stroke="{COLORS[k]}" stroke-opacity="0.5" stroke-width="2"/>')
+            svg.append(f'<circle cx="{px(ratio):.1f}" cy="{cy}" r="5" fill="{COLORS[k]}" fill-opacity="0.85"/>')
     svg.append(f'<rect x="{LEFT}" y="{TOP}" width="{W - LEFT - RIGHT}" height="{bottom - TOP}" fill="none" stroke="black"/>')
     svg.append(f'<text x="{(LEFT + W - RIGHT) / 2}" y="{bottom + 34}" text-anchor="middle">GPU time of skinning + scene pass + 3 cascades, relative to chapter-17\'s form</text>')
     for k, (label, _) in enumerate(series):

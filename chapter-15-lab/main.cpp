@@ -113,7 +113,7 @@ const common::ChapterInfo kChapter{
       "to this CSV file"},
      {"skinning-study-size",
       {"medium", "small", "large"},
-      "with --skinning-study: about 66 000 vertices a figure, a few thousand, or about a million"}},
+      "with --skinning-study: about 66,000 vertices a figure, about a thousand, or about a million"}},
 };
 
 //> overlay

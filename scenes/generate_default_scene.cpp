@@ -538,7 +538,7 @@ int main(int argc, char** argv) {
         scene.models.push_back(armModel);
         writeText(dir / "animated.json", common::sceneToJson(scene));
 
-        // A walker that walks 30 m away from the camera in a second, through every shadow cascade
+        // A walker that walks 30 m away from the camera in a second, out of the shadow cascade it starts in
         // (chapter-17's test of the shadow cache with a caster that changes cascades).
         figures::walker(30.0f).writeGltf(dir / "walk-away.gltf");
         scene.models.resize(scene.models.size() - 2);
