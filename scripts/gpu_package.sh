@@ -51,10 +51,20 @@ done
 # package registers its files under either: try the path as found, with /usr added or taken
 # away, and the file a symbolic link points at. (dpkg -S also prints diversions; those lines are
 # not owners.)
+# Each path asked once (the programs share most of their libraries; dpkg -S takes a fifth of a
+# second): owner sets $owned, in this shell (a $(...) would lose what it learnt).
+declare -A owners=()
 owner() {
-    local path=$1 candidate
+    local path=$1 candidate found
+    owned=${owners[$path]:-}
+    [ -n "$owned" ] && return 0
     for candidate in "$path" "/usr$path" "${path#/usr}" "$(readlink -f "$path")"; do
-        dpkg -S "$candidate" 2>/dev/null | grep -v '^diversion by ' | sed -n '1{s/: .*//;s/:[a-z0-9]*$//;p}' | grep . && return 0
+        found=$(dpkg -S "$candidate" 2>/dev/null | grep -v '^diversion by ' | sed -n '1{s/: .*//;s/:[a-z0-9]*$//;p}')
+        if [ -n "$found" ]; then
+            owners[$path]=$found
+            owned=$found
+            return 0
+        fi
     done
     return 1
 }
@@ -75,16 +85,16 @@ for program in "${programs[@]}"; do
         path=${line#* => }
         path=${path% (0x*)}
         [ -n "$path" ] || continue
-        package=$(owner "$path") || {
+        owner "$path" || {
             echo "gpu_package.sh: ${program#"$root"/} loads $path, which no installed package owns" >&2
             exit 1
         }
-        packages[$package]=1
+        packages[$owned]=1
     done < <(ldd "$program" | sed 's/^[[:space:]]*//')
 done
 for library in "${glvnd[@]}"; do
-    package=$(owner "$library") || { echo "gpu_package.sh: no installed package owns $library" >&2; exit 1; }
-    packages[$package]=1
+    owner "$library" || { echo "gpu_package.sh: no installed package owns $library" >&2; exit 1; }
+    packages[$owned]=1
 done
 unset 'packages[libc6]'
 mapfile -t wanted < <(printf '%s\n' "${!packages[@]}" | sort)
