@@ -368,7 +368,9 @@ struct FormRun {
     Result result;
 };
 
-FormPipelines makePipelines(const common::Device& device, const Study& study, const Form& form) {
+// Into `pipelines` one by one, so that what was made is destroyed if a later one fails.
+void makePipelines(const common::Device& device, const Study& study, const Form& form,
+                   FormPipelines& pipelines) {
     struct Constants {
         int32_t method, half, influences, skinHere;
     };
@@ -380,7 +382,6 @@ FormPipelines makePipelines(const common::Device& device, const Study& study, co
         VkSpecializationInfo info{vertexStage ? 4u : 3u, entries.data(), sizeof(constants), &constants};
         return build(&info);
     };
-    FormPipelines pipelines;
     pipelines.compute = make(false, false, [&](const VkSpecializationInfo* info) {
         common::ShaderModule module(device, "chapter-15-lab/skinning_study.comp");
         VkComputePipelineCreateInfo createInfo{
@@ -417,7 +418,6 @@ FormPipelines makePipelines(const common::Device& device, const Study& study, co
     pipelines.scene = graphics(form.vertexShader, false, true);
     pipelines.cascade = graphics(form.vertexShader, false, false);
     if (form.vertexShader) pipelines.store = graphics(true, true, true);
-    return pipelines;
 }
 
 // The four passes' view-projections, fitted to the posed figure (`posed`: its reference
@@ -493,7 +493,7 @@ void recordPasses(VkCommandBuffer cmd, const Study& study, const FormRun& run, V
         vkCmdPushConstants(cmd, study.drawLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
                            &run.views[pass]);
         vkCmdBindIndexBuffer(cmd, run.indices.handle, 0, VK_INDEX_TYPE_UINT32);
-        if (pass == 0 && countSamples) vkCmdBeginQuery(cmd, study.samples, 0, 0);
+        if (pass == 0 && countSamples) vkCmdBeginQuery(cmd, study.samples, 0, VK_QUERY_CONTROL_PRECISE_BIT);
         vkCmdDrawIndexed(cmd, uint32_t(run.figure->indices.size()), 1, 0, 0, 0);
         if (pass == 0 && countSamples) vkCmdEndQuery(cmd, study.samples, 0);
         common::vk13.CmdEndRendering(cmd);
@@ -536,9 +536,12 @@ void recordSkinning(VkCommandBuffer cmd, const Study& study, const FormRun& run)
 // the scene pass's vertex shader, which then writes what it skinned), read back and compared.
 // For the vertex shader's form the skinned buffer is then filled with NaN, so that its timed
 // passes, which must skin for themselves, draw nothing if they read it instead.
-FormRun createRun(const common::Device& device, const Study& study, const Figure& figure,
-                  const ReferenceJoints& joints, const std::vector<glm::dvec3>& posed, const Form& form) {
-    FormRun run{.form = form, .figure = &figure};
+// Into `run` step by step, so that what was made is destroyed if a later step fails.
+void createRun(const common::Device& device, const Study& study, const Figure& figure,
+               const ReferenceJoints& joints, const std::vector<glm::dvec3>& posed, const Form& form,
+               FormRun& run) {
+    run.form = form;
+    run.figure = &figure;
     uint32_t count = uint32_t(figure.positions.size());
     std::vector<float> rest;
     rest.reserve(size_t(count) * 6);
@@ -573,7 +576,7 @@ FormRun createRun(const common::Device& device, const Study& study, const Figure
     for (uint32_t b = 0; b < 4; ++b)
         common::writeBufferDescriptor(device, run.set, b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bound[b]->handle,
                                       bound[b]->size);
-    run.pipelines = makePipelines(device, study, form);
+    makePipelines(device, study, form, run.pipelines);
     run.views = passViews(posed, figure.size);
 
     VkCommandBuffer cmd = common::beginOneTimeCommands(device);
@@ -602,7 +605,6 @@ FormRun createRun(const common::Device& device, const Study& study, const Figure
     }
     common::submitOneTimeCommands(device, cmd);
     compare(figure, joints, form, static_cast<const float*>(run.readback.mapped), run.result);
-    return run;
 }
 
 // One timed submission of a form: the compute pass (if any) between timestamps 0 and 1, the four
@@ -612,7 +614,8 @@ void timeRun(const common::Device& device, const Study& study, FormRun& run) {
     vkCmdResetQueryPool(cmd, study.timestamps, 0, 3);
     vkCmdResetQueryPool(cmd, study.samples, 0, 1);
     renderingBarriers(cmd, study);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, study.timestamps, 0);
+    // After the images' transitions: the forms are timed from here alike.
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, study.timestamps, 0);
     if (!run.form.vertexShader) recordSkinning(cmd, study, run);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, study.timestamps, 1);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, study.drawLayout, 0, 1, &run.set, 0,
@@ -670,8 +673,8 @@ void destroyStudy(const common::Device& device, Study& study) {
     study = {};
 }
 
-Study createStudy(const common::Device& device) {
-    Study study;
+// Into `study` step by step, so that what was made is destroyed if a later step fails.
+void createStudy(const common::Device& device, Study& study) {
     auto storageBinding = [](uint32_t index) {
         return common::binding(index, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_VERTEX_BIT);
@@ -704,7 +707,6 @@ Study createStudy(const common::Device& device) {
     VK_CHECK(vkCreateQueryPool(device.handle, &samplesInfo, nullptr, &study.samples));
     study.tickMask = device.timestampValidBits >= 64 ? ~0ull : (1ull << device.timestampValidBits) - 1;
     study.msPerTick = double(device.properties.limits.timestampPeriod) * 1e-6;
-    return study;
 }
 
 void writeCsv(const std::filesystem::path& path, const std::vector<FormRun>& runs,
@@ -761,8 +763,11 @@ void refuseOtherOptions(const common::Options& options) {
     if (!options.json.empty()) refuse("--json");
     if (options.view != 0) refuse("--view");
     if (options.frames != 0) refuse("--frames");
-    if (options.resizeTo) refuse("--resize-to");
+    if (options.resizeTo) refuse("--resize");
     if (options.targetFormat) refuse("--target-format");
+    const common::Options defaults;
+    if (options.width != defaults.width || options.height != defaults.height) refuse("--width or --height");
+    if (options.framesInFlight != defaults.framesInFlight) refuse("--frames-in-flight");
 }
 
 }  // namespace
@@ -815,30 +820,35 @@ void runSkinningStudy(const common::Options& options) {
     };
 
     common::Instance instance = common::createInstance("chapter-15-lab", options.validation, {});
-    common::Device device =
-        common::createDevice(instance, VK_NULL_HANDLE, options.device,
-                             {.dynamicRendering = true, .synchronization2 = true, .vertexStores = true});
+    common::Device device;
     Study study;
     std::vector<FormRun> runs;
     // Whatever fails, what was made is destroyed before the error goes on.
     auto destroyAll = [&] {
-        if (device.handle) vkDeviceWaitIdle(device.handle);
-        for (FormRun& run : runs) destroyRun(device, run);
-        destroyStudy(device, study);
-        common::destroyDevice(device);
+        if (device.handle) {
+            vkDeviceWaitIdle(device.handle);
+            for (FormRun& run : runs) destroyRun(device, run);
+            destroyStudy(device, study);
+            common::destroyDevice(device);
+        }
         common::destroyInstance(instance);
     };
     try {
+        device = common::createDevice(instance, VK_NULL_HANDLE, options.device,
+                                      {.dynamicRendering = true,
+                                       .synchronization2 = true,
+                                       .vertexStores = true,
+                                       .preciseOcclusion = true});
         if (device.timestampValidBits == 0 ||
             device.properties.limits.timestampComputeAndGraphics == VK_FALSE ||
             device.properties.limits.timestampPeriod <= 0.0f)
             throw common::Failure("this device's queue has no timestamps: the study cannot time the forms");
-        study = createStudy(device);
+        createStudy(device, study);
         std::printf("chapter-15-lab: skinning study on %s (%u timed runs a form, interleaved; median)\n",
                     device.properties.deviceName, sizes.repeats);
         for (const Form& form : forms) {
             size_t f = size_t(form.figure);
-            runs.push_back(createRun(device, study, figures[f], joints[f], posed[f], form));
+            createRun(device, study, figures[f], joints[f], posed[f], form, runs.emplace_back());
         }
         // Interleaved: the forms take turns, so that a machine's slower moments fall on all of them;
         // after one round untimed (first uses: caches, the driver's lazy work).

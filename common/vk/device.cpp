@@ -133,6 +133,8 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
     if (wanted.multiview && !chain.multiview.multiview) return "it lacks the multiview feature";
     if (wanted.vertexStores && !features.features.vertexPipelineStoresAndAtomics)
         return "it lacks the vertexPipelineStoresAndAtomics feature";
+    if (wanted.preciseOcclusion && !features.features.occlusionQueryPrecise)
+        return "it lacks the occlusionQueryPrecise feature";
     return {};
 }
 
@@ -295,6 +297,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     VkPhysicalDeviceFeatures coreFeatures{};
     coreFeatures.geometryShader = features.geometryShader ? VK_TRUE : VK_FALSE;
     coreFeatures.vertexPipelineStoresAndAtomics = features.vertexStores ? VK_TRUE : VK_FALSE;
+    coreFeatures.occlusionQueryPrecise = features.preciseOcclusion ? VK_TRUE : VK_FALSE;
     device.depthClamp = features.depthClampWhereAvailable && available.depthClamp;
     coreFeatures.depthClamp = device.depthClamp ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo createInfo{

@@ -55,7 +55,8 @@ struct DeviceFeatures {
     bool geometryShader = false;            // chapter-16: the shadow pass sends triangles to every cascade
     bool depthClampWhereAvailable = false;  // chapter-16: enabled when the device has it (Device::depthClamp)
     bool multiview = false;                 // chapter-15-lab's shadow study: a view per cascade (core 1.1)
-    bool vertexStores = false;  // chapter-15-lab's skinning study: a vertex shader writes a buffer
+    bool vertexStores = false;      // chapter-15-lab's skinning study: a vertex shader writes a buffer
+    bool preciseOcclusion = false;  // chapter-15-lab's skinning study: exact occlusion query counts
 };
 
 // The commands of dynamic rendering and synchronization2. A Vulkan 1.3 device has them in its

@@ -54,3 +54,6 @@ chapter_test(lab.skinning-study-with-cascades
 chapter_test(lab.skinning-study-into-a-directory
     COMMAND $<TARGET_FILE:chapter-15-lab> --skinning-study ${TEST_OUT}
     EXPECT_EXIT 2 ONE_LINE_STDERR EXPECT_STDERR "not a regular file")
+chapter_test(lab.skinning-study-with-width
+    COMMAND $<TARGET_FILE:chapter-15-lab> --skinning-study ${TEST_OUT}/x.csv --width 640
+    EXPECT_EXIT 2 ONE_LINE_STDERR EXPECT_STDERR "--skinning-study draws its own figures and no frames: no --width or --height")
