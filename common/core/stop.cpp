@@ -30,10 +30,9 @@ extern "C" void interrupt(int signal) {
     gInterrupted.store(signal);
 }
 
-void watchdog(std::string name) {
+void watchdog(std::string name, int graceMs) {
     while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    if (gInterrupted.load() != kCloseNow)
-        std::this_thread::sleep_for(std::chrono::milliseconds(kStopGraceMs));
+    if (gInterrupted.load() != kCloseNow) std::this_thread::sleep_for(std::chrono::milliseconds(graceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();
     // write(), not stdio: the main thread may hold stderr's lock, stuck on a full pipe.
@@ -50,6 +49,17 @@ void watchdog(std::string name) {
 
 }  // namespace
 
+int stopGraceMs() {
+    static const int grace = [] {
+        const char* text = std::getenv("VKBOOK_STOP_GRACE_MS");
+        if (!text || !*text) return kStopGraceMs;
+        char* end = nullptr;
+        long value = std::strtol(text, &end, 10);
+        return *end == '\0' && value >= 1 && value <= 60000 ? int(value) : kStopGraceMs;
+    }();
+    return grace;
+}
+
 void watchForStop(const char* chapterName) {
     static bool started = false;
     gInterrupted.store(0);
@@ -57,7 +67,7 @@ void watchForStop(const char* chapterName) {
     std::signal(SIGTERM, interrupt);
     if (started) return;
     started = true;
-    std::thread(watchdog, std::string(chapterName)).detach();
+    std::thread(watchdog, std::string(chapterName), stopGraceMs()).detach();
 }
 
 bool stopRequested() {

@@ -11,6 +11,10 @@ namespace common {
 // a shell reports a process a signal ended. Nothing else is left: the device and its memory
 // belong to the process.
 inline constexpr int kStopGraceMs = 400;
+// The grace in force: kStopGraceMs, or the environment's VKBOOK_STOP_GRACE_MS (1 to 60000; the
+// live-reload tests lengthen it, whose frames under synchronization validation on a loaded
+// machine may take longer).
+int stopGraceMs();
 void watchForStop(const char* chapterName);
 // Whether a stop was asked for (the signal, or requestStop).
 bool stopRequested();

@@ -428,7 +428,7 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
 namespace {
 
 // Waits for `fence` in slices of 50 ms, reading the window's events between them. A close (the
-// window's button, Escape) lets the frame finish if it does within common::kStopGraceMs (the run
+// window's button, Escape) lets the frame finish if it does within common::stopGraceMs() (the run
 // then ends at the next frame as always); a frame still running then is cut short at once
 // (common::requestStop), so that a closed window ends the run within a second whatever the frame.
 void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
@@ -442,7 +442,7 @@ void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
         if (!glfwWindowShouldClose(target.window)) continue;
         const auto now = std::chrono::steady_clock::now();
         if (!closed) closed = now;
-        if (now - *closed > std::chrono::milliseconds(kStopGraceMs)) requestStop(/*now=*/true);
+        if (now - *closed > std::chrono::milliseconds(stopGraceMs())) requestStop(/*now=*/true);
     }
 }
 

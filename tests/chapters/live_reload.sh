@@ -128,7 +128,7 @@ if [ -n "${EXPECT_PIPELINES:-}" ]; then
 fi
 run_options=(--shader-dir "$work/edited" --screenshot "$work/last.png")
 [ $headless = 1 ] && run_options+=(--frames 10000000)
-MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=131072 MALLOC_ARENA_MAX=1 \
+MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=131072 MALLOC_ARENA_MAX=1 VKBOOK_STOP_GRACE_MS=20000 \
     "$chapter" "$@" "${run_options[@]}" > "$work/stdout" 2> "$work/stderr" &
 pid=$!
 # Edits count from when the chapter has read the shader (the copy is newer than the build's SPIR-V,
@@ -244,9 +244,10 @@ for _ in $(seq 300); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done
 kill -0 "$pid" 2> /dev/null && fail "the chapter did not end"
 wait "$pid"
 status=$?
-# 0: it ended at a frame's end; 130: a frame still running 0.4 s after Ctrl+C was cut short
-# (common/core/stop.hpp), which a slow build (the sanitizers') may see.
-[ $status = 0 ] || [ $status = 130 ] || fail "the chapter exited with $status"
+# 0: it ended at a frame's end, its last frame written (the grace for that frame is 20 s here,
+# VKBOOK_STOP_GRACE_MS below: a frame under synchronization validation on a loaded machine, or in
+# the sanitizers' build, may take longer than the 0.4 s a reader gets).
+[ $status = 0 ] || fail "the chapter exited with $status"
 grep "^shaders: reloaded" "$work/stdout" | tail -1
 if [ -n "${EXPECT_PIPELINES:-}" ]; then
     total=$(grep -cE "fault_injection: vkCreate(Graphics|Compute)Pipelines #" "$work/stderr")
