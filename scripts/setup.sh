@@ -56,17 +56,27 @@ build_sanitize() {
     cmake -S "$root" -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVKBOOK_SANITIZE=ON
     cmake --build "$sanitize_build" -j "$(nproc)"
 }
-# Not run again under the sanitizers: the window-life tests, desktop.present-fences-window-life
-# among them, and the live-reload leak tests (they measure resident memory, which
-# AddressSanitizer's shadow memory and quarantine inflate), chapter-15.window-keys (it checks how
-# far keys held for 0.7 s of wall-clock time move the lights, and the sanitizer build's slower
-# frames sample the key presses too coarsely: seen once, 2.83 instead of >= 3), builds of a
-# chapter on its own, formatting, docs, the fuzzers (built with sanitizers of their own), and the
-# GPU package's list (it maps the Release binaries' libraries; these would add the sanitizers'),
-# and the peak memory of the largest admitted models (AddressSanitizer's shadow memory inflates it),
-# and chapter-16.reload-walk (two minutes of walking and reloading in the Release build, past its
-# five-minute limit under the sanitizers; chapter-16's reloads run there in live-reload.chapter-16.*).
-sanitize_skip='window-life|^extremes\.memory-|^chapter-15\.window-keys$|standalone|^format$|^docs\.|^fuzz\.|^live-reload\..*\.leak$|^scripts\.|^chapter-16\.reload-walk$'
+# The tests not run again under the sanitizers, and why: tests/reliability/sanitizer/selection.sh
+# (scripts/coverage.sh measures what the rest covers against the whole suite).
+source "$root/tests/reliability/sanitizer/selection.sh"
+
+# What each stage of `test` costs: its wall time and the CPU time (user + system) of everything it
+# ran, read with the shell's `times` (children waited for, in this shell: not in a subshell, whose
+# counts start at zero), and for a test stage the sum of its tests' times and its 10 slowest.
+run_started=$SECONDS
+stage_cpu_file=$(mktemp)
+trap 'rm -f "$stage_cpu_file"' EXIT
+children_cpu() {  # seconds of user + system CPU of this shell's children so far
+    times > "$stage_cpu_file"
+    awk 'NR == 2 { for (i = 1; i <= 2; i++) { split($i, t, "m"); sub("s", "", t[2]); s += t[1] * 60 + t[2] } printf "%.0f", s }' \
+        "$stage_cpu_file"
+}
+stage_wall=0 stage_cpu=0
+stage_start() { stage_wall=$SECONDS; stage_cpu=$(children_cpu); }
+stage_end() {  # stage_end NAME [JUNIT]
+    echo "setup: $1 took $((SECONDS - stage_wall)) s wall, $(($(children_cpu) - stage_cpu)) s CPU (user + system)"
+    [ $# -lt 2 ] || python3 "$root/tests/tools/ctest_report.py" "$2" "$1"
+}
 
 command=${1:-}
 [ $# -gt 0 ] && shift
@@ -85,29 +95,35 @@ case "$command" in
         echo "setup: wrote $build/$chapter.png"
         ;;
     test)
+        stage_start
         install_missing
+        stage_end "install"
+        stage_start
         build_release
         # The fuzz targets are test programs like the others: built here, not in the test stage
         # (their own clang tree; the target exists where clang can link them).
         # (grep reads the whole list: -q would stop early and fail the pipe under pipefail)
         if cmake --build "$build" --target help | grep 'fuzz-targets' > /dev/null; then
-            started=$SECONDS
             cmake --build "$build" --target fuzz-targets
-            echo "setup: fuzz targets built in $((SECONDS - started)) s"
         fi
+        stage_end "Release build (fuzz targets included)"
         # One test more than there are cores: the windowed tests spend much of their time waiting
-        # (window manager, xdotool, sleeps), and the cores stay busy meanwhile.
+        # (window manager, xdotool), and the cores stay busy meanwhile.
         jobs=$(($(nproc) + 1))
-        started=$SECONDS
-        ctest --test-dir "$build" --output-on-failure -j "$jobs"
-        echo "setup: test stage took $((SECONDS - started)) s"
+        stage_start
+        ctest --test-dir "$build" --output-on-failure -j "$jobs" --output-junit "$build/ctest-junit.xml"
+        stage_end "Release tests" "$build/ctest-junit.xml"
+        stage_start
         build_sanitize
-        started=$SECONDS
-        ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs" -E "$sanitize_skip"
-        echo "setup: sanitizer test stage took $((SECONDS - started)) s"
-        started=$SECONDS
+        stage_end "sanitizer build"
+        stage_start
+        ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs" -E "$sanitize_skip" \
+            --output-junit "$sanitize_build/ctest-junit.xml"
+        stage_end "sanitizer tests" "$sanitize_build/ctest-junit.xml"
+        stage_start
         "$root/scripts/windows-cross.sh" test
-        echo "setup: Windows stage (packages, sources, build, tests under Wine) took $((SECONDS - started)) s"
+        stage_end "Windows (packages, sources, build, tests under Wine)" "$root/build-windows/ctest-junit.xml"
+        echo "setup: the whole test command took $((SECONDS - run_started)) s"
         ;;
     *)
         echo "usage: scripts/setup.sh run [chapter-NN] [options...] | scripts/setup.sh test" >&2

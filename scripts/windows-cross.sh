@@ -112,7 +112,7 @@ case "$command" in
         WINEPREFIX=$prefix wineserver -k 2> /dev/null || true
         echo "windows-cross: build took $((SECONDS - started)) s"
         started=$SECONDS
-        ctest --preset windows-cross -j "$(($(nproc) + 1))"
+        ctest --preset windows-cross -j "$(($(nproc) + 1))" --output-junit "$root/build-windows/ctest-junit.xml"
         echo "windows-cross: test stage took $((SECONDS - started)) s"
         ;;
     *)

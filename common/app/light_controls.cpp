@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace common {
@@ -70,6 +71,9 @@ void placePointLight(LightControls& controls, Scene& scene, GpuScene& gpuScene, 
 
 void moveLights(GLFWwindow* window, LightControls& controls, Scene& scene, GpuScene& gpuScene, float seconds,
                 float speed) {
+    // A stalled frame (a window dragged, a breakpoint, a busy machine) moves the lights by a tenth
+    // of a second's worth at most, not by the whole stall.
+    seconds = std::min(seconds, 0.1f);
     auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
     if (controls.sun >= 0 && (held(GLFW_KEY_LEFT) || held(GLFW_KEY_RIGHT)))
         setSunAngle(controls, scene, controls.sunAngle + (held(GLFW_KEY_RIGHT) ? 45.0f : -45.0f) * seconds);

@@ -1,6 +1,9 @@
 // Run control and per-frame bookkeeping.
 #include "common/app/run_control.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "common/vk/debug_names.hpp"
 #include "common/vk/screenshot.hpp"
 
@@ -64,6 +67,13 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
 
 void endFrame(RunControl& run, uint32_t frame) {
     if (frame == 0) run.stats.startupMs = millisecondsSinceStart();
+    // For test scripts that drive a window (tests/desktops/frames.sh): with VKBOOK_TEST_EVENTS set,
+    // each frame's end is a line, so that a script waits for frames, never for a guessed time.
+    static const bool testEvents = std::getenv("VKBOOK_TEST_EVENTS") != nullptr;
+    if (testEvents) {
+        std::printf("test-event: frame %u ended\n", frame);
+        std::fflush(stdout);
+    }
     run.lastCpuMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count();
     addCpuFrame(run.stats, frame, run.lastCpuMs);

@@ -4,6 +4,7 @@
 #include "common/shaders/shader_compiler.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -190,9 +191,13 @@ ShaderCompilation runShaderc(const ShaderSource& source, bool preprocessOnly) {
     std::string text = readInputFile(source.glsl);
     compilation.files.push_back({source.glsl, time});
     // A test's slow compile (tests/chapters/live_reload.sh, "during-compile"): an edit saved while a
-    // compile runs must be compiled next.
-    if (const char* delay = std::getenv("VKBOOK_TEST_COMPILE_DELAY_MS"); delay && !preprocessOnly)
+    // compile runs must be compiled next. The line says the file has been read, so that the test
+    // saves its second edit during the compile, not before it.
+    if (const char* delay = std::getenv("VKBOOK_TEST_COMPILE_DELAY_MS"); delay && !preprocessOnly) {
+        std::printf("test-event: compiling %s (read, delayed)\n", utf8(source.glsl).c_str());
+        std::fflush(stdout);
         std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(delay)));
+    }
     // One compiler for the whole run: glslang then sets up its built-in symbol tables once, not at
     // every compile (most of a small shader's compile time).
     static shaderc_compiler_t compiler = shaderc_compiler_initialize();

@@ -8,8 +8,8 @@
 //   - every member of a uniform or storage block, or of the push constants, that it uses lies
 //     within the build's block, at the offset where the build's has a member of the same type and
 //     layout (strides, row-major); a runtime array matches the build's runtime array;
-//   - it reads no input location the build's does not declare with that type, and still writes
-//     every output location the build's declares, with that type;
+//   - it reads no input location the build's does not declare with that type, still writes
+//     every output location the build's declares, with that type, and writes no other;
 //   - a specialization constant with an ID the build's has keeps its type (the C++ sets it with
 //     that many bytes); a new ID keeps its default, which is valid;
 //   - a compute shader keeps its local size (literal or the same constant IDs): the dispatch is
@@ -590,6 +590,14 @@ std::string interfaceChange(const Interface& built, const Interface& edited) {
             return "output location " + std::to_string(location) + " (" + v.name + ") is " +
                    now->second.type + " now; the shader its pipeline was made for writes " + v.type;
     }
+    // A new output has no reader: the next stage's inputs, or the attachments, are the build's.
+    // Refused whatever the save order of a two-stage edit: a vertex shader saved before its
+    // fragment shader must not go live alone (the validation layer warns of an output no stage
+    // consumes).
+    for (const auto& [location, v] : edited.outputs)
+        if (!built.outputs.count(location))
+            return "it writes output location " + std::to_string(location) + " (" + v.name + ", " + v.type +
+                   "), which the shader its pipeline was made for does not declare";
     // The C++ sets a constant with the bytes of the build's type: a bool (VkBool32), int or uint
     // read as any of the three means the same number; a float or a wider type does not.
     auto kindOf = [](const std::string& type) {

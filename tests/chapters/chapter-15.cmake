@@ -81,7 +81,7 @@ if(XVFB_RUN)
     if(XDOTOOL)
         chapter_test(chapter-15.window-keys
             COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" ${CMAKE_CURRENT_SOURCE_DIR}/desktops/window_keys.sh
-                    ${CH15_RUN} ${CH15_SIZE} --frames 120 --resize 800x450
+                    ${CH15_RUN} ${CH15_SIZE}
             EXPECT_STDOUT "lights moved: sun at 2[0-6][0-9]\\.[0-9] degrees, point light at \\(0\\.00, [3-9]\\.[0-9]+, [0-9]\\.[0-9]+\\)"
             QUIET_STDERR)
     else()

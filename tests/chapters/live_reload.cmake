@@ -136,7 +136,7 @@ foreach(rule accept-unused-member accept-fewer-resources accept-renamed accept-n
     live_test(live-reload.chapter-15.${rule} accept chapter-15/light.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()
-foreach(rule input-components new-varying)
+foreach(rule input-components new-output new-varying)
     live_test(live-reload.chapter-15.rule-${rule} rule chapter-15/scene.frag COMMAND $<TARGET_FILE:chapter-15>)
     set_property(TEST live-reload.chapter-15.rule-${rule} APPEND PROPERTY ENVIRONMENT RULE=${rule})
 endforeach()

@@ -92,11 +92,12 @@ lines = [line if l.endswith('// live_reload.sh') else l for l in lines]
 open(path, 'w').write('\n'.join(lines))
 EOF
 }
-# Waits up to 60 s for a line matching PATTERN in FILE; COUNT-th match (default 1).
+# Waits up to 60 s for a line matching PATTERN in FILE; COUNT-th match (default 1); GREP_FLAG -E
+# for an extended regular expression.
 wait_for() {
-    local file=$1 pattern=$2 count=${3:-1}
+    local file=$1 pattern=$2 count=${3:-1} flag=${4:--G}
     for _ in $(seq 600); do
-        [ "$(grep -c -- "$pattern" "$file" 2> /dev/null)" -ge "$count" ] && return 0
+        [ "$(grep -c "$flag" -- "$pattern" "$file" 2> /dev/null)" -ge "$count" ] && return 0
         kill -0 "$pid" 2> /dev/null || fail "the chapter ended while waiting for '$pattern'"
         sleep 0.1
     done
@@ -129,7 +130,7 @@ fi
 run_options=(--shader-dir "$work/edited" --screenshot "$work/last.png")
 [ $headless = 1 ] && run_options+=(--frames 10000000)
 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=131072 MALLOC_ARENA_MAX=1 VKBOOK_STOP_GRACE_MS=20000 \
-    "$chapter" "$@" "${run_options[@]}" > "$work/stdout" 2> "$work/stderr" &
+    VKBOOK_TEST_EVENTS=1 "$chapter" "$@" "${run_options[@]}" > "$work/stdout" 2> "$work/stderr" &
 pid=$!
 # Edits count from when the chapter has read the shader (the copy is newer than the build's SPIR-V,
 # so it is compiled at start-up and says so).
@@ -138,7 +139,8 @@ if [ $headless = 0 ]; then
     window=$(timeout 60 xdotool search --sync --name "^$name") || fail "no window appeared"
     window=${window%%$'\n'*}
 fi
-sleep 1
+# Its first frames ended: every shader it draws with has been loaded (and its files are watched).
+wait_for "$work/stdout" "^test-event: frame 1 ended"
 rss_kb() { awk '/^RssAnon/ { print $2 }' "/proc/$pid/status"; }
 
 case $scenario in
@@ -187,9 +189,9 @@ accept)
 rule)
     expected=$(python3 "$(dirname "$0")/live_reload_rules.py" "$work/edited" "${RULE:-}") ||
         fail "rule '${RULE:-}' could not be applied"
-    wait_for "$work/stderr" "did not reload"
-    sleep 0.6  # an include saved first may be compiled on its own: the next poll sees the rest
-    grep -Eq -- "$expected" "$work/stderr" || fail "not refused with: $expected"
+    # The rule's message, however the saves fall between polls (an include saved first may be
+    # compiled on its own, and the rest at a later poll): waited for, not timed.
+    wait_for "$work/stderr" "$expected" 1 -E
     ;;
 save-*)
     python3 "$(dirname "$0")/live_reload_save.py" "$target" "$good" "${scenario#save-}" ||
@@ -198,8 +200,11 @@ save-*)
     sleep 0.6  # what a later poll makes of it: still the edit
     ;;
 during-compile)
+    compiles=$(grep -c "^test-event: compiling .*$shader_name" "$work/stdout")
     insert "$good" > /dev/null
-    sleep 0.6  # polled (every 50 ms), now compiling (VKBOOK_TEST_COMPILE_DELAY_MS)
+    # The edited file read and its compile begun (VKBOOK_TEST_COMPILE_DELAY_MS makes it slow):
+    # the second edit lands during it.
+    wait_for "$work/stdout" "^test-event: compiling .*$shader_name" $((compiles + 1))
     replace "$second"
     wait_for "$work/stdout" "^shaders: reloaded .*first frame with it" 2
     ;;

@@ -60,13 +60,22 @@ RULES = {
                      'local_size_x = 4, local_size_y = 4')],
                    r'local size is 4 x 4 x 1 now; the dispatch is sized for 8 x 8 x 1'),
     # Refused although the specification would allow them (docs/live-shaders.md): a vertex input
-    # read with more components, and a value passed between two stages edited in one save.
+    # read with more components, and a value passed between two stages, whatever the order their
+    # files are seen in (the vertex shader's new output and the fragment shader's new input are
+    # each refused: the message is the fragment shader's, printed once its file is compiled).
     'input-components': ([('chapter-15/scene.vert', 'layout(location = 0) in vec3 inPosition;',
                            'layout(location = 0) in vec4 inPosition;'),
                           ('chapter-15/scene.vert', 'vec4(inPosition, 1.0)',
                            'vec4(inPosition.xyz + vec3(inPosition.w * 0.0), 1.0)')],
                          r'input location 0 \(inPosition\) is vec4 now; the shader its pipeline was made for '
                          r'reads vec3'),
+    # A vertex shader saved with a new output before the fragment shader that reads it (a reader
+    # saving one file, then the other): refused alone, never live with an output no stage reads.
+    'new-output': ([('chapter-15/scene.vert', 'layout(location = 4) out vec2 outUv;',
+                     'layout(location = 4) out vec2 outUv;\nlayout(location = 7) out float outExtra;'),
+                    ('chapter-15/scene.vert', 'END', '    outExtra = 1.0;')],
+                   r'it writes output location 7 \(outExtra, float\), which the shader its pipeline was made for '
+                   r'does not declare'),
     'new-varying': ([('chapter-15/scene.vert', 'layout(location = 4) out vec2 outUv;',
                       'layout(location = 4) out vec2 outUv;\nlayout(location = 7) out float outExtra;'),
                      ('chapter-15/scene.vert', 'END', '    outExtra = 1.0;'),

@@ -23,6 +23,7 @@
 # (the sanitizer build under load draws a frame in a second or more), and the screenshot is of
 # the last frame, after everything the script did.
 set -u
+source "$(dirname "$0")/frames.sh"
 mode=$1
 chapter=$2
 shift 2
@@ -35,57 +36,67 @@ fi
 out=${TMPDIR:-/tmp}/window_gui.$$.out
 "$chapter" "$@" > "$out" &
 pid=$!
-window=$(timeout 60 xdotool search --sync --name "chapter-1") || { echo "no window appeared"; kill $pid; exit 1; }
+fail() { echo "window_gui: $*"; kill "$pid" 2> /dev/null; grep -v '^test-event: ' "$out"; rm -f "$out"; exit 1; }
+window=$(timeout 60 xdotool search --sync --name "chapter-1") || fail "no window appeared"
 window=${window%%$'\n'*}
-sleep 4  # set-up done and a few frames drawn: the overlay is up, also in the sanitizer build
+# Set-up done and a few frames drawn: the overlay is up. Every step below waits for frames, not
+# for a time: the chapter reads the pointer and the keys once a frame.
+frames() { wait_frames "$out" "$1" || fail "no frames drawn"; }
+frames 3
 case $mode in
 click)
-    xdotool mousemove --window "$window" 27 241 click 1
-    sleep 0.5
+    xdotool mousemove --window "$window" 27 241
+    frames 2  # hovered
+    xdotool mousedown 1
+    frames 2
+    xdotool mouseup 1
+    frames 2
     xdotool mousemove --window "$window" 500 300  # away, so the box is not drawn hovered
     ;;
 drag-overlay | drag-scene)
     if [ "$mode" = drag-overlay ]; then from=(60 60) to=(200 120); else from=(420 280) to=(560 330); fi
     xdotool mousemove --window "$window" "${from[@]}" mousedown 3
     for step in 1 2 3 4 5; do
-        sleep 0.2
+        frames 1
         xdotool mousemove --window "$window" $((from[0] + (to[0] - from[0]) * step / 5)) \
             $((from[1] + (to[1] - from[1]) * step / 5))
     done
+    frames 2
     xdotool mouseup 3
     ;;
 type-after-resize)
-    xdotool windowsize "$window" 800 450
-    sleep 1.5  # the swapchain is rebuilt for the new size
+    xdotool windowsize --sync "$window" 800 450
+    frames 3  # the swapchain rebuilt for the new size, and drawn at it
     # The Lights window hangs from the top right corner: its slider is 190 points from the right.
-    # Dear ImGui 1.86 samples the keys' state once a frame: each key is held over a few frames.
-    hold() { xdotool keydown "$1"; sleep 0.4; xdotool keyup "$1"; sleep 0.2; }
+    # Dear ImGui 1.86 samples the keys' state once a frame: each key is held over frames.
+    hold() { xdotool keydown "$1"; frames 2; xdotool keyup "$1"; frames 1; }
     xdotool mousemove --window "$window" 610 46 keydown ctrl
-    sleep 0.4
+    frames 2
     xdotool mousedown 1
-    sleep 0.3
+    frames 2
     xdotool mouseup 1
-    sleep 0.3
+    frames 2
     xdotool keydown a
-    sleep 0.4
+    frames 2
     xdotool keyup a keyup ctrl
-    sleep 0.2
+    frames 1
     hold BackSpace
-    xdotool type 300
+    for digit in 3 0 0; do hold "$digit"; done
     hold Return
     ;;
 f1)
     xdotool mousemove --window "$window" 500 300  # keyboard focus follows the pointer without a window manager
     xdotool keydown F1  # held over a few frames: the chapter polls the key's state each frame
-    sleep 0.4
+    frames 2
     xdotool keyup F1
     ;;
 esac
-sleep 0.5
+frames 2
 xdotool mousemove --window "$window" 500 300 key Escape 2> /dev/null  # away from the overlay; Escape ends the run (a BadWindow if it closes before the release)
+wait_exit 60 || fail "it did not close within 60 s of Escape"
 wait $pid
 rc=$?
-cat "$out"
+grep -v '^test-event: ' "$out"
 case $mode in
 drag-overlay) grep -q "camera moved" "$out" && { echo "a drag on the overlay moved the camera"; rc=1; } ;;
 drag-scene) grep -q "camera moved" "$out" || { echo "a drag on the scene did not move the camera"; rc=1; } ;;

@@ -1,28 +1,34 @@
 #!/usr/bin/env bash
 # Run under tests/desktops/xvfb_run.sh: starts a chapter in a window, holds keys that move the lights (1, 4, Left)
-# while it runs, and checks the chapter saw them. The chapter also resizes itself half-way
-# (--resize), with --validation on: any validation message fails the run (exit 3).
+# while it runs, and checks the chapter saw them, then closes it (Escape). With --validation on any
+# validation message fails the run (exit 3).
 #   window_keys.sh CHAPTER [chapter options...]
 set -u
+source "$(dirname "$0")/frames.sh"
 chapter=$1
 shift
-"$chapter" "$@" > "${TMPDIR:-/tmp}/window_keys.$$.out" &
+out="${TMPDIR:-/tmp}/window_keys.$$.out"
+"$chapter" "$@" > "$out" &
 pid=$!
-window=$(timeout 60 xdotool search --sync --name "chapter-15") || { echo "no window appeared"; kill $pid; exit 1; }
+fail() { echo "window_keys: $*"; kill "$pid" 2> /dev/null; cat "$out"; rm -f "$out"; exit 1; }
+window=$(timeout 60 xdotool search --sync --name "chapter-15") || fail "no window appeared"
 window=${window%%$'\n'*}
 xdotool mousemove --window "$window" 20 20  # keyboard focus follows the pointer without a window manager
-# The window appears before the chapter's first frame has read its events; on a busy machine (the
-# suite runs three tests at once on two cores) that can take a second or more, and a key held
-# meanwhile was not always seen. Its first frames drawn, every key reaches it.
-sleep 2
+# The window appears before the chapter's first frame has read its events: a key held meanwhile
+# may not be seen. Its first frames ended, every key reaches it; each key is held over frames
+# (the chapter reads the keys' state once a frame), not for a time.
+wait_frames "$out" 2 || fail "no frames drawn"
 for key in 1 4 Left; do
     xdotool keydown "$key"
-    sleep 0.7
+    wait_frames "$out" 4 || fail "no frames drawn while $key was held"
     xdotool keyup "$key"
+    wait_frames "$out" 1 || fail "no frames drawn after $key was released"
 done
+xdotool key --window "$window" Escape 2> /dev/null  # a BadWindow if the window closes before the release
+wait_exit 60 || fail "it did not close within 60 s of Escape"
 wait $pid
 rc=$?
-cat "${TMPDIR:-/tmp}/window_keys.$$.out"
-grep -q "lights moved" "${TMPDIR:-/tmp}/window_keys.$$.out" || { echo "the key presses did not move the lights"; rc=1; }
-rm -f "${TMPDIR:-/tmp}/window_keys.$$.out"
+grep -v '^test-event: ' "$out"
+grep -q "lights moved" "$out" || { echo "the key presses did not move the lights"; rc=1; }
+rm -f "$out"
 exit $rc

@@ -7,7 +7,7 @@ if(XVFB_RUN AND JWM AND XDOTOOL)
         chapter_test(window-life.chapter-${number}
             COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1200x24" ${CMAKE_CURRENT_SOURCE_DIR}/desktops/window_life.sh
                     $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --width 640 --height 360
-            EXPECT_STDOUT "minimised: [0-9]+ ticks.*resident memory slope over 100 resizes: -?[0-9]+ kB per resize" QUIET_STDERR)
+            EXPECT_STDOUT "minimised: [0-9]+ frames ended.*resident memory slope over 100 resizes: -?[0-9]+ kB per resize" QUIET_STDERR)
     endforeach()
 else()
     message(WARNING "Xvfb, jwm or xdotool not found: the window-life tests are not registered")
