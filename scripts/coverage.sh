@@ -7,6 +7,9 @@
 #                                     selection.sh) and take its coverage;
 #                                  2. run the rest of the suite and take the whole suite's coverage;
 #                                  and print both, the ratio, and the lines only the rest covers.
+#   scripts/coverage.sh --selection-again
+#                                  step 1 only, against the whole suite's coverage of the last full
+#                                  run (for a changed selection; the code must be the same).
 #
 # The standalone builds, the fuzzers and the Windows build compile programs of their own, not
 # these instrumented ones: they are left out of both runs (they add no line to either). Needs
@@ -21,7 +24,6 @@ not_instrumented='standalone|^fuzz\.|^windows\.'
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" \
     -DCMAKE_CXX_FLAGS=--coverage -DCMAKE_EXE_LINKER_FLAGS=--coverage > /dev/null
 cmake --build "$build" -j "$(nproc)"
-find "$build" -name '*.gcda' -delete
 jobs=$(($(nproc) + 1))
 
 # gcovr over our sources only: common/ and every chapter directory (not tests/, not the
@@ -50,15 +52,24 @@ print(covered, total)
 PY
 }
 
+again=0
+[ "${1:-}" = --selection-again ] && again=1
+if [ $again = 1 ] && [ ! -f "$build/coverage-suite.json" ]; then
+    echo "coverage: no whole-suite coverage in $build to compare with: run scripts/coverage.sh first" >&2
+    exit 2
+fi
+find "$build" -name '*.gcda' -delete
 set +e
 ctest --test-dir "$build" -j "$jobs" -E "$sanitize_skip|$not_instrumented" --output-junit "$build/junit-selection.xml" \
     > "$build/ctest-selection.log" 2>&1
 echo "coverage: the sanitizer stage's selection ran ($(grep -c ' Passed ' "$build/ctest-selection.log") passed): $(tail -n 1 "$build/ctest-selection.log")"
 report selection > /dev/null
-ctest --test-dir "$build" -j "$jobs" -R "$sanitize_skip" -E "$not_instrumented" --output-junit "$build/junit-rest.xml" \
+[ $again = 1 ] || ctest --test-dir "$build" -j "$jobs" -R "$sanitize_skip" -E "$not_instrumented" --output-junit "$build/junit-rest.xml" \
     > "$build/ctest-rest.log" 2>&1
-echo "coverage: the rest of the suite ran ($(grep -c ' Passed ' "$build/ctest-rest.log") passed): $(tail -n 1 "$build/ctest-rest.log")"
-report suite > /dev/null
+if [ $again = 0 ]; then
+    echo "coverage: the rest of the suite ran ($(grep -c ' Passed ' "$build/ctest-rest.log") passed): $(tail -n 1 "$build/ctest-rest.log")"
+    report suite > /dev/null
+fi
 set -e
 read -r sel_covered sel_total < <(lines "$build/coverage-selection.json" "$build/lines-selection.txt")
 read -r all_covered all_total < <(lines "$build/coverage-suite.json" "$build/lines-suite.txt")

@@ -50,10 +50,12 @@ build_release() {
     cmake --build "$build" -j "$(nproc)"
 }
 
-# AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer, optimised with debug info.
+# AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer, optimised with debug info. A unity
+# build (CMAKE_UNITY_BUILD: each target's sources compiled as a few files, about a third less
+# compile time): the Release build has compiled every file on its own, warnings as errors.
 sanitize_build="$root/build-sanitize"
 build_sanitize() {
-    cmake -S "$root" -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVKBOOK_SANITIZE=ON
+    cmake -S "$root" -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVKBOOK_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON
     cmake --build "$sanitize_build" -j "$(nproc)"
 }
 # The tests not run again under the sanitizers, and why: tests/reliability/sanitizer/selection.sh

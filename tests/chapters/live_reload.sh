@@ -63,7 +63,6 @@ fail() {
 }
 
 cp -r "$shaders" "$work/edited" || fail "cannot copy $shaders"
-cp -r "$shaders" "$work/original"
 target="$work/edited/$shader"
 [ -f "$target" ] || fail "no $shader in $shaders"
 good=${GOOD:-'    outColor = vec4(1.0, 0.0, 1.0, 1.0);  // live_reload.sh'}  # GOOD: another shader's output
@@ -105,8 +104,11 @@ wait_for() {
 }
 
 # The references, rendered headless from the start: the unedited shaders and the edited one.
-reference() {  # reference DIR OUT.png
-    "$chapter" "${chapter_options[@]}" --headless --frames 1 --shader-dir "$1" --screenshot "$2" \
+# DIR "build": the build's SPIR-V of the same unedited sources (nothing compiled at start-up).
+reference() {  # reference DIR OUT.png (compiled at full speed: the delay is the live run's)
+    local shader_dir=(--shader-dir "$1")
+    [ "$1" = build ] && shader_dir=()
+    env -u VKBOOK_TEST_COMPILE_DELAY_MS "$chapter" "${chapter_options[@]}" --headless --frames 1 "${shader_dir[@]}" --screenshot "$2" \
         > /dev/null 2> "$work/reference.stderr" || fail "reference run failed: $(cat "$work/reference.stderr")"
 }
 chapter_options=()
@@ -238,7 +240,8 @@ leak)
     ;;
 *) fail "unknown scenario '$scenario'" ;;
 esac
-sleep 0.5  # a few frames with the outcome
+# A few frames with the outcome (frames, not a time: a loaded machine draws them slowly).
+wait_for "$work/stdout" "^test-event: frame " $(($(grep -c '^test-event: frame ' "$work/stdout") + 3))
 
 if [ $headless = 1 ]; then
     kill -INT "$pid"
@@ -276,7 +279,7 @@ fi
 
 # What the last frame shows.
 unset VKBOOK_FAULT VKBOOK_FAULT_LAYER VKBOOK_NAMES_LAYER  # the references are rendered without the layers
-reference "$work/original" "$work/original.png"
+reference build "$work/original.png"
 case $scenario in
 edit | fix | fault | save-* | during-compile | accept)
     reference "$work/edited" "$work/edited.png"
