@@ -32,12 +32,18 @@ extern "C" void interrupt(int signal) {
 
 void watchdog(std::string name, int graceMs) {
     while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const auto seen = std::chrono::steady_clock::now();  // within 10 ms of the signal or the close
     if (gInterrupted.load() != kCloseNow) std::this_thread::sleep_for(std::chrono::milliseconds(graceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();
+    // How long the stop took this process, said in the line: the process's end comes after it, as
+    // soon as the system gives its threads the CPU to end (seconds on a loaded machine).
+    const long long ms =
+        std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - seen)
+            .count();
     // write(), not stdio: the main thread may hold stderr's lock, stuck on a full pipe.
-    std::string line =
-        name + (signal > 0 ? ": interrupted" : ": closed") + " in the middle of a frame or a load; stopped\n";
+    std::string line = name + (signal > 0 ? ": interrupted" : ": closed") +
+                       " in the middle of a frame or a load; stopped after " + std::to_string(ms) + " ms\n";
 #if defined(_WIN32)
     std::fputs(line.c_str(), stderr);
 #else
@@ -68,6 +74,12 @@ void watchForStop(const char* chapterName) {
     if (started) return;
     started = true;
     std::thread(watchdog, std::string(chapterName), stopGraceMs()).detach();
+    // For test scripts (tests/reliability/stop_run.sh): from here on a signal stops the run with
+    // its one line, so a script signals after this line, never after a guessed time.
+    if (std::getenv("VKBOOK_TEST_EVENTS")) {
+        std::printf("test-event: stop handlers installed\n");
+        std::fflush(stdout);
+    }
 }
 
 bool stopRequested() {
