@@ -26,6 +26,7 @@ packages=(
     libimgui-dev libcli11-dev
     libshaderc-dev glslang-dev libspirv-cross-c-shared-dev   # shaders compiled at run time, live reload
     xvfb xauth xdotool jwm clang-format         # tests: windowed runs, key presses, minimising, formatting
+    ccache                                      # tests: the standalone builds share one compiler cache
     clang-14 libclang-rt-14-dev llvm-14         # tests: libFuzzer targets (tests/reliability/fuzz/), symbolized reports
     gdb python3                                 # tests: a run killed mid-save (tests/reliability/cache_crash.sh), docs checks
     libembree-dev                               # tests: the shadow study's reference (rays through a BVH)
@@ -63,21 +64,32 @@ build_sanitize() {
 source "$root/tests/reliability/sanitizer/selection.sh"
 
 # What each stage of `test` costs: its wall time and the CPU time (user + system) of everything it
-# ran, read with the shell's `times` (children waited for, in this shell: not in a subshell, whose
-# counts start at zero), and for a test stage the sum of its tests' times and its 10 slowest.
+# ran, read with the shell's `times` (the children it has waited for, their children included).
+# `times` runs in this shell, never in $(...): a subshell's counts start at zero.
 run_started=$SECONDS
-stage_cpu_file=$(mktemp)
-trap 'rm -f "$stage_cpu_file"' EXIT
-children_cpu() {  # seconds of user + system CPU of this shell's children so far
-    times > "$stage_cpu_file"
+stage_wall=0 stage_cpu=0 stage_times=""
+read_times() {  # the CPU seconds `times` wrote to $stage_times, its second line (the children's)
     awk 'NR == 2 { for (i = 1; i <= 2; i++) { split($i, t, "m"); sub("s", "", t[2]); s += t[1] * 60 + t[2] } printf "%.0f", s }' \
-        "$stage_cpu_file"
+        "$stage_times"
 }
-stage_wall=0 stage_cpu=0
-stage_start() { stage_wall=$SECONDS; stage_cpu=$(children_cpu); }
+stage_start() {
+    stage_wall=$SECONDS
+    times > "$stage_times"
+    stage_cpu=$(read_times)
+}
 stage_end() {  # stage_end NAME [JUNIT]
-    echo "setup: $1 took $((SECONDS - stage_wall)) s wall, $(($(children_cpu) - stage_cpu)) s CPU (user + system)"
+    times > "$stage_times"
+    echo "setup: $1 took $((SECONDS - stage_wall)) s wall, $(($(read_times) - stage_cpu)) s CPU (user + system)"
     [ $# -lt 2 ] || python3 "$root/tests/tools/ctest_report.py" "$2" "$1"
+}
+# A test stage: its report also when a test failed, then the failure ends the command.
+test_stage() {  # test_stage NAME JUNIT ctest-arguments...
+    local name=$1 junit=$2 status=0
+    shift 2
+    stage_start
+    ctest "$@" --output-junit "$junit" || status=$?
+    stage_end "$name" "$junit"
+    [ $status = 0 ] || { echo "setup: $name failed" >&2; exit $status; }
 }
 
 command=${1:-}
@@ -97,6 +109,8 @@ case "$command" in
         echo "setup: wrote $build/$chapter.png"
         ;;
     test)
+        stage_times=$(mktemp)
+        trap 'rm -f "$stage_times"' EXIT
         stage_start
         install_missing
         stage_end "install"
@@ -113,16 +127,12 @@ case "$command" in
         # reload, a reference image being compared), and the cores stay busy meanwhile. Every
         # test waits for events, not for a time, so a busier machine makes them slower, not red.
         jobs=$((2 * $(nproc)))
-        stage_start
-        ctest --test-dir "$build" --output-on-failure -j "$jobs" --output-junit "$build/ctest-junit.xml"
-        stage_end "Release tests" "$build/ctest-junit.xml"
+        test_stage "Release tests" "$build/ctest-junit.xml" --test-dir "$build" --output-on-failure -j "$jobs"
         stage_start
         build_sanitize
         stage_end "sanitizer build"
-        stage_start
-        ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs" -E "$sanitize_skip" \
-            --output-junit "$sanitize_build/ctest-junit.xml"
-        stage_end "sanitizer tests" "$sanitize_build/ctest-junit.xml"
+        test_stage "sanitizer tests" "$sanitize_build/ctest-junit.xml" --test-dir "$sanitize_build" \
+            --output-on-failure -j "$jobs" -E "$sanitize_skip"
         stage_start
         "$root/scripts/windows-cross.sh" test
         stage_end "Windows (packages, sources, build, tests under Wine)" "$root/build-windows/ctest-junit.xml"

@@ -97,10 +97,7 @@ case "$command" in
         "$0" deps
         cd "$root"
         started=$SECONDS
-        # One unity build (CMAKE_UNITY_BUILD: a target's sources compiled as a few files): about a
-        # third less compile time. Every source file compiles on its own in the Linux Release
-        # build, warnings as errors, so nothing is left unproven by it.
-        cmake --preset windows-cross -DCMAKE_UNITY_BUILD=ON
+        cmake --preset windows-cross
         # The build runs its scene generators under Wine, several at once. Without a display no
         # Wine process stays up between them, so each may start a wineserver as the last one's is
         # exiting, and lose it ("wine client error: recvmsg: Connection reset by peer"). One

@@ -33,6 +33,18 @@ extern "C" void interrupt(int signal) {
 void watchdog(std::string name, int graceMs) {
     while (gInterrupted.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     const auto seen = std::chrono::steady_clock::now();  // within 10 ms of the signal or the close
+    static const bool testEvents = std::getenv("VKBOOK_TEST_EVENTS") != nullptr;
+    if (testEvents) {  // when, on the wall clock, for a test that timed its own signal or key press
+        const long long epochMs = std::chrono::duration_cast<std::chrono::milliseconds>(
+                                      std::chrono::system_clock::now().time_since_epoch())
+                                      .count();
+        std::string event = "test-event: stop seen at " + std::to_string(epochMs) + " ms\n";
+#if defined(_WIN32)
+        std::fputs(event.c_str(), stdout);
+#else
+        [[maybe_unused]] ssize_t written = ::write(1, event.data(), event.size());
+#endif
+    }
     if (gInterrupted.load() != kCloseNow) std::this_thread::sleep_for(std::chrono::milliseconds(graceMs));
     const int signal = gInterrupted.load();
     removeRegisteredTemporaries();

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "common/core/check.hpp"
 #include "common/core/files.hpp"
@@ -16,6 +17,12 @@ namespace common {
 
 ModelData loadModel(const std::filesystem::path& path) {
     requireInputFile(path);  // "no such file" before "not a model file" for a mistyped name
+    // For test scripts (tests/reliability/stop_run.sh): a signal after this line lands in the load.
+    static const bool testEvents = std::getenv("VKBOOK_TEST_EVENTS") != nullptr;
+    if (testEvents) {
+        std::printf("test-event: loading %s\n", utf8(path.filename()).c_str());
+        std::fflush(stdout);
+    }
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });

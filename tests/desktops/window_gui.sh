@@ -81,7 +81,10 @@ type-after-resize)
     xdotool keyup a keyup ctrl
     frames 1
     hold BackSpace
-    for digit in 3 0 0; do hold "$digit"; done
+    # Typed, not held: a key held past the X server's repeat delay would repeat. Dear ImGui
+    # queues typed characters, so they need no frames of their own.
+    xdotool type --delay 100 300
+    frames 2
     hold Return
     ;;
 f1)

@@ -15,12 +15,16 @@ window=$(timeout 60 xdotool search --sync --name "chapter-15") || fail "no windo
 window=${window%%$'\n'*}
 xdotool mousemove --window "$window" 20 20  # keyboard focus follows the pointer without a window manager
 # The window appears before the chapter's first frame has read its events: a key held meanwhile
-# may not be seen. Its first frames ended, every key reaches it; each key is held over frames
-# (the chapter reads the keys' state once a frame), not for a time.
+# may not be seen. Its first frames ended, every key reaches it. Each key is held over 8 frames
+# (the chapter reads the keys' state once a frame) and at least 0.7 s: the lights move by the
+# time held, at most 0.1 s worth a frame, so the distance lies within the check's range on a fast
+# machine (0.7 s or a little more) and on a loaded one (8 slow frames: 0.8 s worth at most).
 wait_frames "$out" 2 || fail "no frames drawn"
 for key in 1 4 Left; do
     xdotool keydown "$key"
-    wait_frames "$out" 4 || fail "no frames drawn while $key was held"
+    held_from=$(date +%s%N)
+    wait_frames "$out" 8 || fail "no frames drawn while $key was held"
+    while [ $(($(date +%s%N) - held_from)) -lt 700000000 ]; do sleep 0.05; done
     xdotool keyup "$key"
     wait_frames "$out" 1 || fail "no frames drawn after $key was released"
 done

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # stop_run.sh CHAPTER MODE ARGS...: a run stopped by a signal in the middle of a long frame (MODE
-# frame: SIGINT once the first frame has started) or of a long load (MODE load: SIGTERM half a
-# second after start) ends within a second, with 130 or 143, one line on stderr, and leaves no
+# frame: SIGINT once the first frame has ended) or of a long load (MODE load: SIGTERM once the
+# model's load has begun) stops within a second (what its line says), with 130 or 143, one line on stderr, and leaves no
 # temporary file of the pipeline cache behind. MODE stale: a temporary left beside the cache by a
 # process that no longer runs (killed with SIGKILL halfway through writing it) is removed by the
 # next run that saves the cache.
@@ -43,7 +43,7 @@ if [ "$mode" = frame ]; then
     wait_line '^test-event: frame 0 ended'  # the next frame, of several seconds, is being drawn
     signal=INT expected=130
 else
-    wait_line '^test-event: stop handlers installed'  # the model's load, of several seconds, begins
+    wait_line '^test-event: loading '  # the model's load, of several seconds, has begun
     signal=TERM expected=143
 fi
 kill -0 "$pid" 2> /dev/null || fail "the chapter ended before the signal: $(cat "$work/stderr")"

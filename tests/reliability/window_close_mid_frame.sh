@@ -36,3 +36,12 @@ grep -q "closed in the middle of a frame or a load; stopped after [0-9]* ms" "$w
 # is the system's, as soon as the process's threads get the CPU (seconds on a loaded machine).
 stop_ms=$(sed -n 's/.*; stopped after \([0-9]*\) ms$/\1/p' "$work/stderr")
 [ "$stop_ms" -lt 1000 ] || fail "it took $stop_ms ms to stop, more than a second"
+# And the close was read in the middle of the frame, not at its end: the chapter reads the close
+# while it waits for the frame, waits 0.4 s more for it, then cuts it short and says when (its
+# wall-clock time, test-event: stop seen at N ms) -- within a second of the key press, well inside
+# the frame of 1.4 s it would otherwise have waited out.
+seen_ms=$(sed -n 's/^test-event: stop seen at \([0-9]*\) ms$/\1/p' "$work/stdout")
+[ -n "$seen_ms" ] || fail "the chapter did not say when it saw the close"
+seen_after=$((seen_ms - start / 1000000))
+echo "window_close_mid_frame: the frame cut short ${seen_after} ms after Escape"
+[ "$seen_after" -lt 1000 ] || fail "the frame was cut short $seen_after ms after Escape: the close was not read during it"

@@ -23,6 +23,8 @@ def read(path):
 def groups(path):
     times = read(path)
     total = sum(t for t, _ in times)
+    if not times or total <= 0:
+        sys.exit(f'ctest_report: no test times in {path}')
     by_group = collections.defaultdict(lambda: [0, 0.0])
     for seconds, name in times:
         group = 'standalone builds' if name.endswith('.standalone-build') else name.split('.')[0]
