@@ -71,26 +71,33 @@ good=${GOOD:-'    outColor = vec4(1.0, 0.0, 1.0, 1.0);  // live_reload.sh'}  # G
 second='    outColor = vec4(0.0, 1.0, 1.0, 1.0);  // live_reload.sh'
 broken='    outColor = vec4(1.0, 0.0, 1.0 1.0);  // live_reload.sh'
 interface='    outColor = liveReloadExtra.color;  // live_reload.sh'
+# The test's own edits are saved whole (written next to the file, then renamed over it): a file
+# emptied and then written may be read between the two, and the compile error that follows is not
+# what the scenario checks (the save-* scenarios try each way an editor saves).
 # Puts LINE before the last '}' of the file (a new line of its own); prints its line number.
 insert() {
     python3 - "$target" "$1" << 'EOF'
-import sys
+import os, sys
 path, line = sys.argv[1], sys.argv[2]
 text = open(path).read()
 end = text.rindex('}')
 start = text.rindex('\n', 0, end) + 1
-open(path, 'w').write(text[:start] + line + '\n' + text[start:])
+with open(path + '.saving', 'w') as f:
+    f.write(text[:start] + line + '\n' + text[start:])
+os.replace(path + '.saving', path)
 print(text[:start].count('\n') + 1)
 EOF
 }
 # Replaces the line inserted before.
 replace() {
     python3 - "$target" "$1" << 'EOF'
-import sys
+import os, sys
 path, line = sys.argv[1], sys.argv[2]
 lines = open(path).read().split('\n')
 lines = [line if l.endswith('// live_reload.sh') else l for l in lines]
-open(path, 'w').write('\n'.join(lines))
+with open(path + '.saving', 'w') as f:
+    f.write('\n'.join(lines))
+os.replace(path + '.saving', path)
 EOF
 }
 # Waits up to 60 s for a line matching PATTERN in FILE; COUNT-th match (default 1); GREP_FLAG -E
