@@ -101,7 +101,7 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
     list(GET spec 3 submit)
     list(GET spec 4 wait)
     string(REGEX REPLACE ":.*" "" submitCall "${submit}")
-    # Chapters 14 and 15 call vkQueueSubmit2 through common::vk13 (the core command, or the
+    # Chapter 14 and the frame loop of 15 on call vkQueueSubmit2 through common::vk13 (the core command, or the
     # VK_KHR_synchronization2 one on a Vulkan 1.2 device); the message quotes the call as written.
     string(REPLACE "vkQueueSubmit2" "common::vk13\\.QueueSubmit2" submitText "${submitCall}")
     set(run $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --headless --width 320 --height 180)
