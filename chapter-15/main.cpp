@@ -53,6 +53,10 @@ struct Chapter {
 };
 //< chapter-state
 
+FrameView frameView(const Chapter& c) {
+    return {c.camera, c.scene, c.lightView, c.fxaa};
+}
+
 //> overlay
 // The overlay (--gui): the timings window with the view selector (common/app/gui.cpp) and FXAA; a
 // second window with the book's light controls and the ambient light.
@@ -96,7 +100,7 @@ void setUp(Chapter& c, const common::Options& options) {
         common::sceneRasterView(c.scene, c.context.target.extent.width, c.context.target.extent.height);
     common::checkFrameCost(c.scene, models, {&firstView, 1});
     c.render = createRender(c.context, c.scene, models, options);
-    common::startRunControl(c.context, options, renderPassNames());
+    common::startRunControl(c.context, options, renderPassNames(c.render));
 
     c.camera = {c.scene.camera.position, c.scene.camera.yaw, c.scene.camera.pitch};
     c.lightControls = common::findControlledLights(c.scene);
@@ -133,15 +137,9 @@ void run(const common::Options& options) {
          .overlay = [&] { overlayWidgets(c); },
          .input = [&](GLFWwindow* window, float seconds, bool keys,
                       bool mouse) { handleInput(c, window, seconds, keys, mouse); },
-         .update =
-             [&](uint32_t, uint32_t slot) {
-                 updateRender(c.render, slot, c.context.target.extent,
-                              {c.camera, c.scene, c.lightView, c.fxaa});
-             },
+         .update = [&](uint32_t, uint32_t slot) { updateRender(c.context, c.render, slot, frameView(c)); },
          .record =
-             [&](common::FrameCommands& frame) {
-                 recordRender(c.context, c.render, frame, {c.camera, c.scene, c.lightView, c.fxaa});
-             },
+             [&](common::FrameCommands& frame) { recordRender(c.context, c.render, frame, frameView(c)); },
          .resize = [&] { resizeRender(c.context, c.render); }});
     report(c, options);
     destroyRender(c.context, c.render);

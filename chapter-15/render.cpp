@@ -39,7 +39,7 @@ Render createRender(common::RenderContext& c, const common::Scene& scene, common
     return r;
 }
 
-std::vector<std::string> renderPassNames() {
+std::vector<std::string> renderPassNames(const Render&) {
     return {"scene", "light", "post"};
 }
 
@@ -73,10 +73,10 @@ void remakeRenderPipelines(common::RenderContext& c, Render& r, const common::Sh
 
 //> update-frame
 // This frame's uniforms: the camera, the lights (they may have moved), the scene info.
-void updateRender(Render& r, uint32_t slot, VkExtent2D extent, const FrameView& v) {
+void updateRender(common::RenderContext& c, Render& r, uint32_t slot, const FrameView& v) {
     const common::CameraDesc& lens = v.scene.camera;
     glm::mat4 view = common::viewMatrix(v.camera);
-    glm::mat4 projection = common::projectionMatrix(lens.fov, extent, lens.near, lens.far);
+    glm::mat4 projection = common::projectionMatrix(lens.fov, c.target.extent, lens.near, lens.far);
     setCamera(r.scenePass, slot, projection, view);
     updateLights(r.lightPass, slot, shaderLights(v.scene),
                  {v.camera.position, v.scene.ambientIntensity, v.scene.ambientColor, 0u});

@@ -45,14 +45,14 @@ struct FrameView {
 // or generic). The names of the passes, in recording order, for startRunControl.
 Render createRender(common::RenderContext& context, const common::Scene& scene, common::ModelCache& models,
                     const common::Options& options);
-std::vector<std::string> renderPassNames();
+std::vector<std::string> renderPassNames(const Render& render);
 // The window changed size: every image of its size, and the post pass for its format.
 void resizeRender(common::RenderContext& context, Render& render);
 // Edited shaders: the pipelines of the passes that use them (common/app/frame_loop.hpp).
 void remakeRenderPipelines(common::RenderContext& context, Render& render, const common::ShaderReload& reload,
                            common::PipelineSwap& swap);
 // This frame's uniforms, then its passes.
-void updateRender(Render& render, uint32_t slot, VkExtent2D extent, const FrameView& view);
+void updateRender(common::RenderContext& context, Render& render, uint32_t slot, const FrameView& view);
 void recordRender(common::RenderContext& context, Render& render, common::FrameCommands& frame,
                   const FrameView& view);
 void destroyRender(common::RenderContext& context, Render& render);

@@ -475,3 +475,18 @@ void destroySkinningPass(const common::Device& device, SkinningPass& pass) {
             if (mesh.ownsInfluences) common::destroyBuffer(device, mesh.influences);
     pass = {};
 }
+
+std::string describeSkinning(const SkinningPass& pass) {
+    if (pass.models.empty()) return "none (nothing in the scene is animated)";
+    uint64_t meshes = 0, vertices = 0;
+    for (const SkinnedModel& model : pass.models)
+        for (const SkinnedMesh& mesh : model.meshes) ++meshes, vertices += mesh.vertexCount;
+    char text[256];
+    std::snprintf(
+        text, sizeof(text),
+        "%zu models, %llu meshes, %llu vertices, %u joints; dispatched in %llu frames (%u dispatches each)",
+        pass.models.size(), static_cast<unsigned long long>(meshes),
+        static_cast<unsigned long long>(vertices), pass.paletteJoints,
+        static_cast<unsigned long long>(pass.dispatchedFrames), pass.dispatches);
+    return text;
+}

@@ -101,4 +101,6 @@ void remakeSkinningPipeline(const common::Device& device, VkPipelineCache cache,
 // reference of the same pose (double precision), and the guard past each buffer intact. Prints the
 // largest errors; throws Failure beyond the bound (docs/chapter-17.md).
 void checkSkinning(const common::Device& device, const SkinningPass& pass, const common::GpuScene& scene);
+// What the pass had to do, and did: for the report and --benchmark.
+std::string describeSkinning(const SkinningPass& pass);
 void destroySkinningPass(const common::Device& device, SkinningPass& pass);

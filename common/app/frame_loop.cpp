@@ -52,6 +52,7 @@ void timedPass(const RenderContext& c, FrameCommands& frame, const std::function
 
 namespace {
 
+//> reload
 // Live reload: new pipelines for the passes whose shaders changed are made from the new code
 // while the frames in flight still draw with the old ones; then the new ones take their place,
 // and the old ones are destroyed once the GPU is done with those frames. If one cannot be made,
@@ -71,6 +72,7 @@ void reloadShaders(RenderContext& c, const FrameSteps& steps, const ShaderReload
     swapPipelines(c.device, swap, frame);  // the old ones go once the frames in flight are done
     finishShaderReload();
 }
+//< reload
 
 // The window changed size: the swapchain, then every image of the window's size. False when the
 // window is gone.
