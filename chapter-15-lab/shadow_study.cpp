@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "chapter-15/gpu_types.hpp"
+#include "chapter-16/shadow_controls.hpp"
 #include "common/core/check.hpp"
 #include "common/vk/barriers.hpp"
 #include "common/vk/debug_names.hpp"
@@ -38,9 +39,8 @@ ShadowStudyOptions readShadowStudy(const common::Options& options) {
         throw common::InputError("--shadows reads the G-buffer's positions: --gbuffer book or reference");
     study.filter = ShadowFilter(shadows - 1);
     study.layers = ShadowLayers(chosen("shadow-layers"));
-    const uint32_t kCounts[] = {3, 1, 2, 4}, kSizes[] = {2048, 512, 1024, 4096};
-    study.cascades.count = kCounts[chosen("cascades")];
-    study.cascades.mapSize = kSizes[chosen("shadow-map-size")];
+    study.cascades.count = kCascadeCounts[chosen("cascades")];  // chapter-16's values
+    study.cascades.mapSize = kShadowMapSizes[chosen("shadow-map-size")];
     return study;
 }
 

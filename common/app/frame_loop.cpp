@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "common/core/check.hpp"
+#include "common/vk/debug_names.hpp"
 
 namespace common {
 
@@ -88,6 +89,17 @@ bool recreateTarget(RenderContext& c, const FrameSteps& steps) {
 
 //> frame-loop
 void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
+    // --acquire late: a second command buffer per frame (from the frame's pool) for the passes
+    // that write the acquired image.
+    std::vector<VkCommandBuffer> lateCommands(steps.acquireLate ? c.frames.size() : 0);
+    for (size_t i = 0; i < lateCommands.size(); ++i) {
+        VkCommandBufferAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                              .commandPool = c.frames[i].commandPool,
+                                              .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                              .commandBufferCount = 1};
+        VK_CHECK(vkAllocateCommandBuffers(c.device.handle, &allocInfo, &lateCommands[i]));
+        nameObject(c.device.handle, lateCommands[i], "frame " + std::to_string(i) + " late commands");
+    }
     double lastTime = glfwGetTime();
     for (uint32_t frame = 0;;) {
         bool lastFrame = beginFrame(c.run, c.target, frame);
@@ -109,11 +121,13 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
         releaseRetiredPipelines(c.device, frame, c.framesInFlight);
         collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
-        if (!acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
-            if (!recreateTarget(c, steps)) break;
-            continue;
+        if (!steps.acquireLate) {  // the book's order: the image first
+            if (!acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+                if (!recreateTarget(c, steps)) break;
+                continue;
+            }
+            VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
         }
-        VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
         if (c.gui.enabled) updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
         steps.update(frame, slot);
@@ -128,12 +142,34 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
         FrameCommands commands{
             .cmd = sync.commandBuffer, .slot = slot, .frame = frame, .imageIndex = imageIndex};
         steps.record(commands);
+        if (steps.acquireLate) {
+            // The off-screen passes go to the GPU now, with nothing to wait for; the image is
+            // acquired only for the passes that write it, recorded into a second command buffer.
+            // (Queue order and the passes' barriers still order the two submits.)
+            VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+            VkCommandBufferSubmitInfo offscreen{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                                .commandBuffer = sync.commandBuffer};
+            VkSubmitInfo2 first{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                                .commandBufferInfoCount = 1,
+                                .pCommandBufferInfos = &offscreen};
+            VK_CHECK(common::vk13.QueueSubmit2(c.device.queue, 1, &first, VK_NULL_HANDLE));
+            if (!acquireTargetImage(c.target, c.device, sync.imageAvailable, &imageIndex)) {
+                if (!recreateTarget(c, steps)) break;
+                continue;
+            }
+            VK_CHECK(vkResetFences(c.device.handle, 1, &sync.inFlight));
+            commands.cmd = lateCommands[slot];
+            commands.imageIndex = imageIndex;
+            VK_CHECK(vkBeginCommandBuffer(commands.cmd, &beginInfo));
+        }
+        if (steps.present) steps.present(commands);
         if (c.gui.enabled)
             timedPass(c, commands,
                       [&] { recordGuiPass(commands.cmd, c.guiPass, slot, c.target, imageIndex, overlay); });
-        VK_CHECK(vkEndCommandBuffer(sync.commandBuffer));
+        VK_CHECK(vkEndCommandBuffer(commands.cmd));
 
-        // One submit: wait for the acquired image before writing colour, signal when done.
+        // One submit (the second with --acquire late): every colour write of it waits for the
+        // acquired image; it signals when done.
         VkSemaphoreSubmitInfo wait{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                                    .semaphore = sync.imageAvailable,
                                    .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
@@ -141,7 +177,7 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
                                      .semaphore = c.target.renderFinished[imageIndex],
                                      .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT};
         VkCommandBufferSubmitInfo buffer{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
-                                         .commandBuffer = sync.commandBuffer};
+                                         .commandBuffer = commands.cmd};
         VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
                              .waitSemaphoreInfoCount = 1,
                              .pWaitSemaphoreInfos = &wait,

@@ -81,8 +81,14 @@ struct FrameSteps {
     // Once the frame's slot is free: what the frame draws (the book's update, and its passes'
     // uniforms).
     std::function<void(uint32_t frame, uint32_t slot)> update;
-    // The chapter's passes (timedPass each); the loop then records the GUI pass.
+    // The chapter's passes (timedPass each); the loop then records the GUI pass. With `present`
+    // given, `record` holds the passes that do not write the presented image and `present` those
+    // that do.
     std::function<void(FrameCommands& frame)> record;
+    std::function<void(FrameCommands& frame)> present;
+    // The lab's --acquire late: `record`'s passes submitted before the image is acquired,
+    // `present`'s (and the GUI's) after it, into a second command buffer, alone waiting for it.
+    bool acquireLate = false;
     // The window changed size (the swapchain and its images are made again first): every image of
     // the window's size, and what writes the presented image (the format may change too).
     std::function<void()> resize;
