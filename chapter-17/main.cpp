@@ -199,12 +199,14 @@ void useBookChapter17Scene(common::Scene& scene, const std::filesystem::path& bo
 }
 //< book-scene
 
-// --animation-time SECONDS: a number from 0 to 10^9 (about 32 years), nothing else.
+// --animation-time SECONDS: a decimal number from 0 to 10^9 (about 32 years), nothing else (strtod
+// alone would take 0x10 for 16, and "inf").
 double animationTime(const std::string& text) {
     char* end = nullptr;
     double seconds = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(seconds) || seconds < 0.0 ||
-        seconds > 1e9)
+    bool decimal = text.find_first_not_of("0123456789.eE+-") == std::string::npos;
+    if (text.empty() || !decimal || end != text.c_str() + text.size() || !std::isfinite(seconds) ||
+        seconds < 0.0 || seconds > 1e9)
         throw common::InputError("--animation-time must be a number of seconds from 0 to 1e9, got '" + text +
                                  "'");
     return seconds;

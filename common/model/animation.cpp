@@ -183,6 +183,9 @@ PaletteEntry paletteEntry(const glm::dmat4& joint) {
 
 SkinnedVertex skinVertex(const Vertex& vertex, const VertexSkin& skin,
                          const std::vector<glm::dmat4>& joints) {
+    if (skin.weights == glm::vec4(0.0f))  // no joint moves it: the bind pose
+        return {glm::dvec3(vertex.position), glm::dvec3(vertex.normal), glm::dvec3(vertex.tangent),
+                glm::dvec3(vertex.bitangent)};
     glm::dvec3 p(0.0), n(0.0), t(0.0), b(0.0);
     for (int i = 0; i < 4; ++i) {
         double w = skin.weights[i];
@@ -205,7 +208,14 @@ SkinnedVertex skinVertex(const Vertex& vertex, const VertexSkin& skin,
 SkinBounds skinBounds(const MeshData& mesh) {
     SkinBounds bounds;
     std::vector<int32_t> slot;
-    for (size_t v = 0; v < mesh.skin.size(); ++v)
+    for (size_t v = 0; v < mesh.skin.size(); ++v) {
+        if (mesh.skin[v].weights == glm::vec4(0.0f)) {  // no joint moves it
+            glm::dvec3 p(mesh.vertices[v].position);
+            bounds.stillMin = bounds.still ? glm::min(bounds.stillMin, p) : p;
+            bounds.stillMax = bounds.still ? glm::max(bounds.stillMax, p) : p;
+            bounds.still = true;
+            continue;
+        }
         for (int i = 0; i < 4; ++i) {
             if (!(mesh.skin[v].weights[i] > 0.0f)) continue;
             uint32_t joint = mesh.skin[v].joints[i];
@@ -221,12 +231,14 @@ SkinBounds skinBounds(const MeshData& mesh) {
             bounds.min[s] = glm::min(bounds.min[s], p);
             bounds.max[s] = glm::max(bounds.max[s], p);
         }
+    }
     return bounds;
 }
 
 void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints, glm::vec3& min,
                  glm::vec3& max) {
-    bool first = true;
+    bool first = !bounds.still;
+    if (bounds.still) min = glm::vec3(bounds.stillMin), max = glm::vec3(bounds.stillMax);
     for (size_t s = 0; s < bounds.joints.size(); ++s)
         for (int c = 0; c < 8; ++c) {
             glm::dvec3 p = glm::dvec3(joints[bounds.joints[s]] *
@@ -254,6 +266,7 @@ void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
             continue;
         }
         SkinBounds bounds = skinBounds(mesh);
+        if (bounds.still) add(glm::vec3(bounds.stillMin), glm::vec3(bounds.stillMax));
         for (size_t k = 0; k < bounds.joints.size(); ++k) {
             const uint32_t j = bounds.joints[k];
             if (slot[j] < 0) {

@@ -54,6 +54,9 @@ SkinnedVertex skinVertex(const Vertex& vertex, const VertexSkin& skin, const std
 struct SkinBounds {
     std::vector<uint32_t> joints;  // joints some vertex names with a weight
     std::vector<glm::dvec3> min, max;
+    // The vertices no joint moves (all four weights 0: drawn in the bind pose), where there are any.
+    bool still = false;
+    glm::dvec3 stillMin{0.0}, stillMax{0.0};
 };
 SkinBounds skinBounds(const MeshData& mesh);
 void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints, glm::vec3& min,

@@ -1,6 +1,7 @@
 // The book's converted models (book_model.hpp).
 #include "common/model/book_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -50,9 +51,38 @@ struct Reader {
     }
 };
 
+// What a value taken from the file is, for a message: a number as written (a few characters),
+// anything else by its kind alone -- never printed whole (a list nested 100,000 deep would take the
+// printing's recursion past the stack).
+std::string described(const json& value) {
+    if (value.is_number()) return value.dump();
+    if (value.is_string()) return "a string";
+    if (value.is_array()) return "a list";
+    if (value.is_object()) return "an object";
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    return "null";
+}
+
+// Parses the converted JSON within budgets that count what the parsed document costs, as it is
+// parsed: at most kMaxBookJsonDepth levels of nesting (the format has 6) and kMaxBookJsonValues
+// values, each of which costs some 100 bytes once parsed (docs/reliability.md measures it), so
+// that no file can make the parse itself exhaust memory or the stack.
 json parse(const std::filesystem::path& path) {
     std::string bytes = readInputFile(path);
-    json root = json::parse(bytes, nullptr, false);
+    uint64_t values = 0;
+    json::parser_callback_t budget = [&](int depth, json::parse_event_t event, json&) {
+        if (depth > int(kMaxBookJsonDepth))
+            throw InputError(utf8(path) + ": nested deeper than " + std::to_string(kMaxBookJsonDepth) +
+                             " levels (the book's converted format has 6)");
+        if (event == json::parse_event_t::value || event == json::parse_event_t::object_start ||
+            event == json::parse_event_t::array_start)
+            if (++values > kMaxBookJsonValues)
+                throw InputError(
+                    utf8(path) + ": more than " + std::to_string(kMaxBookJsonValues) +
+                    " JSON values, more than our limits allow (each costs about 100 bytes parsed)");
+        return true;
+    };
+    json root = json::parse(bytes, budget, false);
     if (root.is_discarded()) throw InputError(utf8(path) + ": not JSON (the book's converted model)");
     return root;
 }
@@ -148,11 +178,17 @@ uint64_t readBookAnimations(const json& root, Rig& rig, const Reader& r) {
         clip.name = animation.contains("name") && animation["name"].is_string()
                         ? animation["name"].get<std::string>()
                         : where;
+        // Despite its name, frame_millis holds the clip's length in seconds: the book's generator
+        // writes Assimp's duration over its ticks a second (ModelGenerator.java), and its key frames
+        // span that length, the first at 0 and the last at its end. (The book's own Main steps a
+        // key frame per update instead, at its 30 updates a second.)
         const json& millis = r.field(animation, "frame_millis", where);
         if (!millis.is_number() || !(millis.get<double>() > 0.0) || !(millis.get<double>() <= 1e9))
-            r.fail(where + "'s frame_millis is not a number of milliseconds above 0");
-        clip.frameSeconds = millis.get<double>() / 1000.0;
+            r.fail(where +
+                   "'s frame_millis is not a number above 0 (the clip's length in seconds, as the "
+                   "book's generator writes it)");
         const json& frames = animation["frames"];
+        clip.frameSeconds = millis.get<double>() / double(std::max<size_t>(frames.size() - 1, 1));
         clip.frames.reserve(frames.size() * joints);
         for (size_t f = 0; f < frames.size(); ++f)
             for (const json& m : frames[f]["joint_matrices"]) {
@@ -168,6 +204,12 @@ uint64_t readBookAnimations(const json& root, Rig& rig, const Reader& r) {
                                    "a finite number within 1e15");
                         matrix[c][row] = value.get<float>();
                     }
+                // A joint's transform is affine: its last row (m03, m13, m23, m33) 0, 0, 0, 1. Any
+                // other would be divided away, or taken for 1, unseen.
+                if (std::abs(matrix[0][3]) > 1e-6f || std::abs(matrix[1][3]) > 1e-6f ||
+                    std::abs(matrix[2][3]) > 1e-6f || std::abs(matrix[3][3] - 1.0f) > 1e-6f)
+                    r.fail(where + "'s frame " + std::to_string(f) +
+                           " has a joint matrix whose last row (m03, m13, m23, m33) is not 0, 0, 0, 1");
                 clip.frames.push_back(matrix);
             }
         // The last key frame blends into the first: the clip loops after all of them.
@@ -199,15 +241,22 @@ std::vector<VertexSkin> readBookWeights(const json& animMesh, size_t vertices, u
                        " has a weight that is not a number 0 or more");
             if (!id.is_number_integer() || id.get<int64_t>() < 0 ||
                 uint64_t(id.get<int64_t>()) >= std::max<uint64_t>(joints, 1))
-                r.fail(where + "'s vertex " + std::to_string(v) + " names bone " + id.dump() +
+                r.fail(where + "'s vertex " + std::to_string(v) + " names bone " + described(id) +
                        "; the animations have " + std::to_string(joints) + " joints");
             skin[v].joints[k] = uint16_t(id.get<int64_t>());
             skin[v].weights[int(k)] = weight.get<float>();
             sum += weight.get<double>();
         }
+        // Four weights of 0: a vertex no bone touches (the book's generator writes them for a part
+        // of an animated model that no bone moves), drawn where the mesh puts it.
+        if (sum == 0.0) {
+            skin[v].weights = glm::vec4(0.0f);
+            skin[v].joints[0] = skin[v].joints[1] = skin[v].joints[2] = skin[v].joints[3] = 0;
+            continue;
+        }
         if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
             r.fail(where + "'s vertex " + std::to_string(v) + "'s weights sum to " + std::to_string(sum) +
-                   ", not 1");
+                   ", not 1 (nor 0: no bone)");
         skin[v].weights /= float(sum);
         int heaviest = 0;  // unused slots name the heaviest joint (weight 0), as the glTF loader's
         for (int k = 1; k < 4; ++k)
@@ -264,6 +313,11 @@ ModelData loadBookModel(const std::filesystem::path& path) {
             bookTexture(directory, m.text(entry, "normal_map_path", where), m, where + "'s normal_map_path");
         material.metalRoughTexture =
             bookTexture(directory, m.text(entry, "metal_rough_map", where), m, where + "'s metal_rough_map");
+        // The book's scene shader takes a pixel's colour from the texture when the material has
+        // one, and from diffuse_color only when it has none -- its generator writes (0, 0, 0, 1)
+        // beside a texture. The texture replaces the colour, where glTF's factor multiplies it:
+        // white here makes our multiplication the book's replacement.
+        if (!material.diffuseTexture.empty()) material.diffuse = glm::vec4(1.0f);
         // The book's shaders discard texels of alpha below 0.5: a cut-out wherever there is alpha.
         material.alphaMode = AlphaMode::Auto;
         materialIndex[material.name] = uint32_t(model.materials.size());
@@ -341,14 +395,17 @@ ModelData loadBookModel(const std::filesystem::path& path) {
     }
     model.boundsMin = glm::vec3(std::numeric_limits<float>::max());
     model.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
-    // A range that several meshes name is decoded and kept once: the others draw it again.
+    // A range that several meshes name is decoded and kept once: the others draw it again -- in a
+    // model without animation. An animated model's meshes each have their own anim_meshes entry
+    // (the same vertices weighed to other bones), so each is decoded with its own weights (the
+    // ranges' sums were checked against our limits above).
     std::map<std::array<uint64_t, 4>, uint32_t> decoded;  // range -> its mesh in model.meshes
     for (size_t i = 0; i < ranges.size(); ++i) {
         const Range& range = ranges[i];
         std::string where = "mesh " + std::to_string(i);
         const std::array<uint64_t, 4> key{range.vertexOffset, range.vertexCount, range.indexOffset,
                                           range.indexCount};
-        if (auto found = decoded.find(key); found != decoded.end()) {
+        if (auto found = decoded.find(key); found != decoded.end() && !animMeshes) {
             model.repeats.push_back({found->second, range.material});
             continue;
         }
@@ -379,15 +436,15 @@ ModelData loadBookModel(const std::filesystem::path& path) {
                        ", past its " + std::to_string(range.vertexCount) + " vertices");
             mesh.indices[k] = index;
         }
-        if (mesh.indices.empty()) continue;  // nothing to draw, and no part of the bounds
-        if (animMeshes)
+        if (animMeshes)  // each mesh's entry checked, even a mesh with nothing to draw
             mesh.skin = readBookWeights((*animMeshes)[i], mesh.vertices.size(), joints, r,
                                         "anim_meshes " + std::to_string(i));
+        if (mesh.indices.empty()) continue;  // nothing to draw, and no part of the bounds
         for (const Vertex& vertex : mesh.vertices) {
             model.boundsMin = glm::min(model.boundsMin, vertex.position);
             model.boundsMax = glm::max(model.boundsMax, vertex.position);
         }
-        decoded[key] = uint32_t(model.meshes.size());
+        decoded.emplace(key, uint32_t(model.meshes.size()));
         model.meshes.push_back(std::move(mesh));
     }
     if (model.meshes.empty()) r.fail("no mesh has a triangle");

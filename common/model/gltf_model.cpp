@@ -609,12 +609,16 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Model& model, const tinyg
                 sum += weight;
                 influences.push_back({weight, uint32_t(joint)});
             }
-        if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
-            reader.fail(where + " vertex " + std::to_string(i) + "'s weights sum to " + std::to_string(sum) +
-                        ", not 1");
         VertexSkin& out = skin[v];
         out.weights = glm::vec4(0.0f);
         out.joints[0] = out.joints[1] = out.joints[2] = out.joints[3] = uint16_t(jointBase);
+        // Weights of 0 alone: a vertex no joint moves (the specification asks sums close to 1
+        // with a SHOULD, and the glTF-Validator's own valid samples hold such vertices), drawn
+        // where the mesh puts it.
+        if (sum == 0.0) continue;
+        if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
+            reader.fail(where + " vertex " + std::to_string(i) + "'s weights sum to " + std::to_string(sum) +
+                        ", not 1 (nor 0: no joint)");
         if (sets.size() == 1) {  // each weight stays in its slot
             // An unused slot names the vertex's heaviest joint: its weight 0 times a joint no
             // weight uses (whose matrix might not even be finite) would still be computed.

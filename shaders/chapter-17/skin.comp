@@ -53,6 +53,12 @@ void main() {
     if (index >= dispatch.count) return;  // the book's shader reads and writes past the buffers here
     Vertex v = bindPose[index];
     Influence influence = influences[index];
+    // A vertex no joint moves (four weights of 0: the book's generator writes them for a part of an
+    // animated model that no bone touches) stays where the mesh puts it, the bind pose.
+    if (influence.weights == vec4(0.0)) {
+        skinned[index] = v;
+        return;
+    }
     uint joints[4] = uint[4](influence.joints.x & 0xffffu, influence.joints.x >> 16,
                              influence.joints.y & 0xffffu, influence.joints.y >> 16);
     vec4 position = vec4(0.0);

@@ -103,7 +103,7 @@ endforeach()
 add_test(NAME chapter-17.time-loops-exactly COMMAND image_compare ${TEST_OUT}/chapter-17-time-1000000.png
     --size 320 180 --golden ${TEST_OUT}/chapter-17-time-0.png --max-diff 0 --max-fraction 0)
 set_tests_properties(chapter-17.time-loops-exactly PROPERTIES FIXTURES_REQUIRED "ch17-time-0;ch17-time-1000000")
-foreach(bad -1 nan inf 1e10 2s)
+foreach(bad -1 nan inf 1e10 2s 0x10)
     chapter_test(chapter-17.animation-time-${bad} COMMAND ${CH17} --headless --animation-time "${bad}"
         EXPECT_EXIT 2 EXPECT_STDERR "--animation-time must be a number of seconds from 0 to 1e9, got '${bad}'"
         ONE_LINE_STDERR)
@@ -153,6 +153,11 @@ skin_hostile(joint-past-skin "meshes\\[0\\].primitives\\[0\\] vertex 7 names joi
 skin_hostile(negative-weight "meshes\\[0\\].primitives\\[0\\] vertex 7 has a negative weight" negative_weight.gltf)
 skin_hostile(weights-sum-half "meshes\\[0\\].primitives\\[0\\] vertex 7's weights sum to 0.500000, not 1"
     weights_sum_half.gltf)
+# A vertex whose weights are all 0 is drawn where the mesh puts it (the bind pose), not refused.
+chapter_test(chapter-17.weights-zero WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 3 --check-skinning --model ${SKINS}/weights_zero.gltf
+    EXPECT_STDOUT "skinning check: .*guards intact" QUIET_STDERR)
+set_tests_properties(chapter-17.weights-zero PROPERTIES FIXTURES_REQUIRED gltf-cases)
 skin_hostile(weights-nan "meshes\\[0\\].primitives\\[0\\] WEIGHTS_0 \\(accessor 4\\) holds a non-finite number"
     weights_nan.gltf)
 skin_hostile(times-decreasing
@@ -183,12 +188,33 @@ standalone_build_test(17 --width 320 --height 180 --frames 3 --check-skinning)
 # stand-in in the test clone); what breaks the format refused in one line.
 chapter_test(chapter-17.book-format WORKDIR /
     COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 5 --check-skinning --model ${SKINS}/book_arm.json
-    EXPECT_STDOUT "skinning check: 221 vertices in 1 meshes.*guards intact" QUIET_STDERR)
+    EXPECT_STDOUT "skinning check: 466 vertices in 3 meshes.*guards intact" QUIET_STDERR)
 set_tests_properties(chapter-17.book-format PROPERTIES FIXTURES_REQUIRED gltf-cases)
+# The book's format as its generator writes it (tools/gltf_cases.cpp, writeBookFigure), against a golden
+# image at 0.4 s: the arm textured though its diffuse colour is (0, 0, 0, 1) (the texture replaces the
+# colour, as in the book's shader), the prop no bone touches (weights 0) in its bind pose, the mesh that
+# repeats the arm's vertex ranges swung whole by its own weights; the pose at 0.4 s of the clip's 1 s
+# (frame_millis read as the clip's length: key frame 9.6 of 24). Then the clip loops at its length: 1.25 s
+# is 0.25 s, to the bit.
+foreach(time 0.4 0.25 1.25)
+    chapter_test(chapter-17.book-figure-${time} WORKDIR /
+        COMMAND ${CH17_RUN} --headless --width 320 --height 180 --animation-time ${time}
+                --model ${SKINS}/book_arm.json --screenshot ${TEST_OUT}/chapter-17-book-figure-${time}.png
+        EXPECT_STDOUT "skinning: 1 models, 3 meshes, 466 vertices" QUIET_STDERR)
+    set_tests_properties(chapter-17.book-figure-${time} PROPERTIES FIXTURES_REQUIRED gltf-cases
+                         FIXTURES_SETUP ch17-book-figure-${time})
+endforeach()
+add_test(NAME chapter-17.book-figure-image COMMAND image_compare ${TEST_OUT}/chapter-17-book-figure-0.4.png
+    --size 320 180 --golden ${GOLDEN}/chapter-17-book-figure.png --max-diff 5 --max-fraction 0.001)
+set_tests_properties(chapter-17.book-figure-image PROPERTIES FIXTURES_REQUIRED ch17-book-figure-0.4)
+add_test(NAME chapter-17.book-figure-loops COMMAND image_compare ${TEST_OUT}/chapter-17-book-figure-1.25.png
+    --size 320 180 --golden ${TEST_OUT}/chapter-17-book-figure-0.25.png --max-diff 0 --max-fraction 0)
+set_tests_properties(chapter-17.book-figure-loops PROPERTIES
+                     FIXTURES_REQUIRED "ch17-book-figure-0.25;ch17-book-figure-1.25")
 chapter_test(chapter-17.book-scene WORKDIR /
     COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 5 --check-skinning
             --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book
-    EXPECT_STDOUT "chapter-17: 6 draws.*skinning: 1 models, 1 meshes, 221 vertices, 2 joints.*guards intact" QUIET_STDERR)
+    EXPECT_STDOUT "chapter-17: 8 draws.*skinning: 1 models, 3 meshes, 466 vertices, 2 joints.*guards intact" QUIET_STDERR)
 set_tests_properties(chapter-17.book-scene PROPERTIES FIXTURES_REQUIRED gltf-cases)
 chapter_test(chapter-17.book-scene-without-bob WORKDIR /
     COMMAND ${CH17_RUN} --headless --width 320 --height 180 --book-scene ${CMAKE_CURRENT_BINARY_DIR}/gltf/book-without-tree/booksamples/chapter-15/resources/models/sponza/Sponza.gltf
@@ -196,12 +222,19 @@ chapter_test(chapter-17.book-scene-without-bob WORKDIR /
 set_tests_properties(chapter-17.book-scene-without-bob PROPERTIES FIXTURES_REQUIRED gltf-cases)
 skin_hostile(book-bone-past "anim_meshes 0's vertex 7 names bone 7. the animations have 2 joints" book_bone_past.json)
 skin_hostile(book-weights-sum "anim_meshes 0's vertex 7's weights sum to 0.250000, not 1" book_weights_sum.json)
-skin_hostile(book-anim-meshes-short "\"anim_meshes\" is not a list with an entry for each of its 1 meshes"
+skin_hostile(book-anim-meshes-short "\"anim_meshes\" is not a list with an entry for each of its 3 meshes"
     book_anim_meshes_short.json)
 skin_hostile(book-frames-differ "animation 0's frame 3 has 1 joint matrices where the first frame has 2"
     book_frames_differ.json)
 skin_hostile(book-matrix-nan "animation 0's frame 2 has a matrix value that is not a finite number within 1e15"
     book_matrix_nan.json)
+skin_hostile(book-matrix-m33 "animation 0's frame 2 has a joint matrix whose last row \\(m03, m13, m23, m33\\) is not 0, 0, 0, 1"
+    book_matrix_m33.json)
+skin_hostile(book-repeat-weights-none "anim_meshes 2 has not 4 weights and 4 bone ids for each of its 221 vertices"
+    book_repeat_weights_none.json)
+skin_hostile(book-bone-nested "nested deeper than 16 levels \\(the book's converted format has 6\\)"
+    book_bone_nested.json)
+skin_hostile(book-many-values "more than 8388608 JSON values, more than our limits allow" book_many_values.json)
 skin_hostile(joint-past-skin-at-weight-0 "meshes\\[0\\].primitives\\[0\\] vertex 7 names joint 200. its skin has 2"
     joint_past_skin_at_weight_0.gltf)
 skin_hostile(joints-normalized "meshes\\[0\\].primitives\\[0\\] JOINTS_0 is normalized \\(joint ids are whole numbers\\)"

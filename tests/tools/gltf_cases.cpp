@@ -996,30 +996,56 @@ void writeBookTreeObj(const fs::path& dir) {
 // (0, 5, 0), looking along +x and down) and lights show in one picture.
 // tree: the chapter-16 tree in the converted format, as OBJ only, or none.
 enum class BookTree { Converted, Obj, None };
-// The book's converted format with its chapter-17 animation (a stand-in for its Bob): a bending
-// arm as figures.hpp makes it, in 14-float big-endian vertices, with "anim_meshes" (4 weights and
-// bone ids a vertex) and "animations" (24 key frames of joint matrices, JOML's m00..m33 fields).
-// `edit` breaks it for the hostile cases; `scale` sizes it.
+// The book's converted format with its chapter-17 animation (a stand-in for its Bob), written by the
+// rules of the book's ModelGenerator rather than by its field names' reading: a bending arm as
+// figures.hpp makes it, in 14-float big-endian vertices, textured, with the (0, 0, 0, 1) diffuse
+// colour the generator writes beside a texture; "frame_millis" the clip's length in seconds
+// (Assimp's duration over its ticks a second: 24 key frames at 24 a second span 23/24 s); a prop
+// no bone touches (weights 0, 0, 0, 0, as the generator writes them); and the arm's vertex ranges
+// named again by a third mesh with weights of its own (every vertex on the elbow's bone: the arm
+// swung whole about the elbow), in a second texture. "anim_meshes": 4 weights and bone ids a
+// vertex; "animations": joint matrices by JOML's m00..m33 fields. `edit` breaks it for the
+// hostile cases; `scale` sizes it.
 void writeBookModel(const fs::path& dir, const std::string& name, const std::vector<float>& vertices,
                     const std::vector<uint32_t>& indices, json meshes, json materials);
 json bookMaterial(const std::string& id, const std::string& texture);
 
 void writeBookFigure(const fs::path& dir, const std::string& name,
                      const std::function<void(json&)>& edit = nullptr, float scale = 1.0f) {
-    figures::SkinnedMesh arm;
+    figures::SkinnedMesh arm, prop;
     arm.tube(0.0f, 2.0f, 0.15f, 16, 12,
              [](float x, glm::u16vec4& j, glm::vec4& w) { figures::blend(x, 0.8f, 1.2f, 0, 1, j, w); });
+    prop.box({0.0f, -0.45f, 0.0f}, {0.15f, 0.15f, 0.15f}, 0);
     std::vector<float> vertices;
-    json weights = json::array(), ids = json::array();
-    for (size_t v = 0; v < arm.positions.size(); ++v) {
-        vec3 n = arm.normals[v], t = glm::normalize(glm::cross(vec3(1, 0, 0), n)), b = glm::cross(n, t);
-        for (vec3 x : {arm.positions[v] * scale, n, t, b}) vertices.insert(vertices.end(), {x.x, x.y, x.z});
-        vertices.insert(vertices.end(), {arm.uvs[v].x, arm.uvs[v].y});
-        for (int k = 0; k < 4; ++k) {
-            weights.push_back(arm.weights[v][k]);
-            ids.push_back(arm.joints[v][k]);
+    std::vector<uint32_t> indices = arm.indices;
+    auto putVertices = [&](const figures::SkinnedMesh& mesh) {
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            vec3 n = mesh.normals[v],
+                 t = glm::normalize(glm::cross(std::abs(n.x) < 0.9f ? vec3(1, 0, 0) : vec3(0, 1, 0), n)),
+                 b = glm::cross(n, t);
+            for (vec3 x : {mesh.positions[v] * scale, n, t, b})
+                vertices.insert(vertices.end(), {x.x, x.y, x.z});
+            vec2 uv = v < mesh.uvs.size() ? mesh.uvs[v] : vec2(0.5f);
+            vertices.insert(vertices.end(), {uv.x, uv.y});
         }
-    }
+    };
+    putVertices(arm);
+    putVertices(prop);
+    indices.insert(indices.end(), prop.indices.begin(), prop.indices.end());
+    json armWeights = json::array(), armIds = json::array(), swungWeights = json::array(),
+         swungIds = json::array(), propWeights = json::array(), propIds = json::array();
+    for (size_t v = 0; v < arm.positions.size(); ++v)
+        for (int k = 0; k < 4; ++k) {
+            armWeights.push_back(arm.weights[v][k]);
+            armIds.push_back(arm.joints[v][k]);
+            swungWeights.push_back(k == 0 ? 1.0 : 0.0);
+            swungIds.push_back(k == 0 ? 1 : 0);
+        }
+    for (size_t v = 0; v < prop.positions.size(); ++v)
+        for (int k = 0; k < 4; ++k) {
+            propWeights.push_back(0.0);  // no bone: the generator's weights for such a vertex
+            propIds.push_back(0);
+        }
     auto matrix = [](const glm::mat4& m) {
         json out = {{"properties", 0}};
         for (int c = 0; c < 4; ++c)
@@ -1037,17 +1063,48 @@ void writeBookFigure(const fs::path& dir, const std::string& name,
                           glm::translate(glm::mat4(1), vec3(-scale, 0, 0));
         frames.push_back({{"joint_matrices", {matrix(glm::mat4(1)), matrix(elbow)}}});
     }
+    const size_t armVertexBytes = arm.positions.size() * 14 * 4, armIndexBytes = arm.indices.size() * 4;
     json meshes = json::array({{{"id", "arm"},
                                 {"material_id", "skin"},
                                 {"offset_vtx", 0},
-                                {"vtx_size", vertices.size() * 4},
+                                {"vtx_size", armVertexBytes},
                                 {"offset_idx", 0},
-                                {"idx_size", arm.indices.size() * 4}}});
-    writeBookModel(dir, name, vertices, arm.indices, meshes, json::array({bookMaterial("skin", "")}));
+                                {"idx_size", armIndexBytes}},
+                               {{"id", "prop"},
+                                {"material_id", "prop"},
+                                {"offset_vtx", armVertexBytes},
+                                {"vtx_size", prop.positions.size() * 14 * 4},
+                                {"offset_idx", armIndexBytes},
+                                {"idx_size", prop.indices.size() * 4}},
+                               {{"id", "arm swung"},
+                                {"material_id", "skin2"},
+                                {"offset_vtx", 0},
+                                {"vtx_size", armVertexBytes},
+                                {"offset_idx", 0},
+                                {"idx_size", armIndexBytes}}});
+    // The generator's materials: a textured one has the diffuse colour (0, 0, 0, 1).
+    json skin = bookMaterial("skin", "arm.png"), skin2 = bookMaterial("skin2", "arm2.png"),
+         propMaterial = bookMaterial("prop", "");
+    for (json* m : {&skin, &skin2}) (*m)["diffuse_color"] = {{"x", 0.0}, {"y", 0.0}, {"z", 0.0}, {"w", 1.0}};
+    propMaterial["diffuse_color"] = {{"x", 0.9}, {"y", 0.8}, {"z", 0.2}, {"w", 1.0}};
+    writeBookModel(dir, name, vertices, indices, meshes, json::array({skin, propMaterial, skin2}));
+    // Stripes along the arm (u runs along it): orange and white; blue and white.
+    std::vector<uint8_t> stripes(8 * 8 * 3), stripes2(8 * 8 * 3);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            bool light = (x / 2) % 2 == 0;
+            uint8_t* a = &stripes[size_t(y * 8 + x) * 3];
+            uint8_t* b = &stripes2[size_t(y * 8 + x) * 3];
+            a[0] = light ? 240 : 230, a[1] = light ? 240 : 120, a[2] = light ? 240 : 30;
+            b[0] = light ? 240 : 40, b[1] = light ? 240 : 90, b[2] = light ? 240 : 220;
+        }
+    writePng(dir / "arm.png", 8, 8, 3, stripes);
+    writePng(dir / "arm2.png", 8, 8, 3, stripes2);
     json root = json::parse(readBytesText(dir / (name + ".json")));
-    root["anim_meshes"] = json::array({{{"weights", weights}, {"bone_ids", ids}}});
-    root["animations"] =
-        json::array({{{"name", "bend"}, {"frame_millis", 1000.0 / 24.0}, {"frames", frames}}});
+    root["anim_meshes"] = json::array({{{"weights", armWeights}, {"bone_ids", armIds}},
+                                       {{"weights", propWeights}, {"bone_ids", propIds}},
+                                       {{"weights", swungWeights}, {"bone_ids", swungIds}}});
+    root["animations"] = json::array({{{"name", "bend"}, {"frame_millis", 23.0 / 24.0}, {"frames", frames}}});
     if (edit) edit(root);
     writeText(dir / (name + ".json"), root.dump());
 }
@@ -1493,6 +1550,14 @@ void writeSkinHostile(const fs::path& dir) {
             m.weights[7] = {1.5f, -0.5f, 0, 0};
         },
         nullptr);
+    // Weights of 0 alone (legal: the specification asks sums close to 1 with a SHOULD, and the
+    // glTF-Validator's own valid samples hold such vertices): drawn, vertex 7 in the bind pose.
+    make(
+        "weights_zero.gltf",
+        [](figures::SkinnedMesh& m) {
+            m.weights[7] = {0, 0, 0, 0};
+        },
+        nullptr);
     make(
         "weights_sum_half.gltf",
         [](figures::SkinnedMesh& m) {
@@ -1582,6 +1647,36 @@ void writeSkinHostile(const fs::path& dir) {
     writeBookFigure(dir, "book_matrix_nan", [](json& root) {
         root["animations"][0]["frames"][2]["joint_matrices"][1]["m30"] = "NaN";
     });
+    // A joint matrix that is not affine (m33 2), refused rather than taken for 1.
+    writeBookFigure(dir, "book_matrix_m33",
+                    [](json& root) { root["animations"][0]["frames"][2]["joint_matrices"][1]["m33"] = 2.0; });
+    // A malformed entry of the mesh that repeats the arm's ranges: checked like any.
+    writeBookFigure(dir, "book_repeat_weights_none",
+                    [](json& root) { root["anim_meshes"][2]["weights"] = "none"; });
+    // A bone id nested 100,000 lists deep (a 200 KB file): refused at the parse, never printed (a
+    // recursive print of it overflowed the stack). Spliced in as text: writing it with the JSON
+    // library would recurse as deep.
+    writeBookFigure(dir, "book_bone_nested",
+                    [](json& root) { root["anim_meshes"][0]["bone_ids"][29] = "NESTED_HERE"; });
+    {
+        std::string text = readBytesText(dir / "book_bone_nested.json");
+        const std::string mark = "\"NESTED_HERE\"";
+        text.replace(text.find(mark), mark.size(), std::string(100000, '[') + "0" + std::string(100000, ']'));
+        writeText(dir / "book_bone_nested.json", text);
+    }
+    // More JSON values than the parse budget: 9 Mi zeros in a list the format does not read
+    // (18 MB): refused as it is parsed, before the document's memory grows past the budget.
+    writeBookFigure(dir, "book_many_values", [](json& root) { root["padding"] = "PADDING_HERE"; });
+    {
+        std::string text = readBytesText(dir / "book_many_values.json");
+        const std::string mark = "\"PADDING_HERE\"";
+        std::string zeros = "[";
+        zeros.reserve(2 * (size_t(9) << 20) + 2);
+        for (size_t i = 0; i < (size_t(9) << 20); ++i) zeros += i ? ",0" : "0";
+        zeros += "]";
+        text.replace(text.find(mark), mark.size(), zeros);
+        writeText(dir / "book_many_values.json", text);
+    }
 }
 
 int main(int argc, char** argv) {
