@@ -163,11 +163,27 @@ void poseRig(const Rig& rig, int clip, double seconds, Pose& pose) {
 
 namespace {
 
+// The normals' matrix of a joint: the inverse-transpose of its upper 3x3, which is the matrix of
+// its cofactors (columns b x c, c x a, a x b of columns a, b, c) over its determinant. Where that
+// quotient leaves 32-bit floats (a legal tiny scale: 1e-40 makes it 1e40), the cofactors alone,
+// scaled to a largest entry of 1, with the determinant's sign: the same directions, which is all a
+// normal needs (the joint's share in a blend of several then shrinks with it, as its size does).
+// A singular joint (a scale of 0) gives 0: the normal falls back to the bind pose's.
 glm::dmat3 normalMatrix(const glm::dmat4& joint) {
-    glm::dmat3 linear(joint);
-    double det = glm::determinant(linear);
-    if (!(std::abs(det) > 1e-300) || !std::isfinite(det)) return glm::dmat3(0.0);
-    return glm::transpose(glm::inverse(linear));
+    glm::dmat3 m(joint);
+    glm::dmat3 cofactors(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
+    double det = glm::dot(m[0], cofactors[0]);
+    if (!(det != 0.0) || !std::isfinite(det)) return glm::dmat3(0.0);
+    glm::dmat3 inverseTranspose = cofactors / det;
+    double largest = 0.0, largestCofactor = 0.0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) {
+            largest = std::max(largest, std::abs(inverseTranspose[c][r]));
+            largestCofactor = std::max(largestCofactor, std::abs(cofactors[c][r]));
+        }
+    if (largest <= 1e30 && std::isfinite(largest)) return inverseTranspose;
+    if (!(largestCofactor > 0.0) || !std::isfinite(largestCofactor)) return glm::dmat3(0.0);
+    return cofactors * ((det < 0.0 ? -1.0 : 1.0) / largestCofactor);
 }
 
 glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {

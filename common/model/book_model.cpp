@@ -64,10 +64,16 @@ std::string described(const json& value) {
 }
 
 // Parses the converted JSON within budgets that count what the parsed document costs, as it is
-// parsed: at most kMaxBookJsonDepth levels of nesting (the format has 6) and kMaxBookJsonValues
-// values, each of which costs some 100 bytes once parsed (docs/reliability.md measures it), so
-// that no file can make the parse itself exhaust memory or the stack.
+// parsed: at most kMaxBookJsonBytes of text, kMaxBookJsonDepth levels of nesting (the format has
+// 6) and kMaxBookJsonValues values, each of which costs some 100 bytes once parsed
+// (docs/reliability.md measures it), so that no file can make the parse itself exhaust memory or
+// the stack.
 json parse(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxBookJsonBytes)
+        throw InputError(utf8(path) + ": " + std::to_string(size) + " bytes, more than the " +
+                         std::to_string(kMaxBookJsonBytes) +
+                         " our limits allow for the book's converted JSON");
     std::string bytes = readInputFile(path);
     uint64_t values = 0;
     json::parser_callback_t budget = [&](int depth, json::parse_event_t event, json&) {

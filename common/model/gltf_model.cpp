@@ -545,7 +545,16 @@ uint32_t skinJoints(RigReader& rig, const tinygltf::Model& model, int skinIndex,
     for (size_t j = 0; j < skin.joints.size(); ++j) {
         reader.get(model.nodes, skin.joints[j], at + ".joints: node");
         RigJoint joint{.node = uint32_t(rig.rigNode[size_t(skin.joints[j])])};
-        if (inverseBind) joint.inverseBind = glm::dmat4(glm::make_mat4(&(*inverseBind)[16 * j]));
+        if (inverseBind) {
+            joint.inverseBind = glm::dmat4(glm::make_mat4(&(*inverseBind)[16 * j]));
+            // 3.7.3.1: an inverse bind matrix is an affine transform, its fourth row (0, 0, 0, 1)
+            // (to an exporter's rounding); another would distort the pose unseen.
+            const glm::dmat4& m = joint.inverseBind;
+            if (std::abs(m[0][3]) > 1e-5 || std::abs(m[1][3]) > 1e-5 || std::abs(m[2][3]) > 1e-5 ||
+                std::abs(m[3][3] - 1.0) > 1e-5)
+                reader.fail(at + ".inverseBindMatrices[" + std::to_string(j) +
+                            "]'s fourth row is not 0, 0, 0, 1 (not an affine transform)");
+        }
         rig.rig.joints.push_back(joint);
     }
     rig.skinBase[skinIndex] = base;

@@ -153,11 +153,19 @@ skin_hostile(joint-past-skin "meshes\\[0\\].primitives\\[0\\] vertex 7 names joi
 skin_hostile(negative-weight "meshes\\[0\\].primitives\\[0\\] vertex 7 has a negative weight" negative_weight.gltf)
 skin_hostile(weights-sum-half "meshes\\[0\\].primitives\\[0\\] vertex 7's weights sum to 0.500000, not 1"
     weights_sum_half.gltf)
+# A legal tiny scale (1e-40 on the elbow) is drawn, its normals' matrix by the cofactors, not refused as
+# not finite.
+chapter_test(chapter-17.scale-tiny WORKDIR /
+    COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 3 --check-skinning --model ${SKINS}/scale_tiny.gltf
+    EXPECT_STDOUT "skinning check: .*guards intact" QUIET_STDERR)
+set_tests_properties(chapter-17.scale-tiny PROPERTIES FIXTURES_REQUIRED gltf-cases)
 # A vertex whose weights are all 0 is drawn where the mesh puts it (the bind pose), not refused.
 chapter_test(chapter-17.weights-zero WORKDIR /
     COMMAND ${CH17_RUN} --headless --width 320 --height 180 --frames 3 --check-skinning --model ${SKINS}/weights_zero.gltf
     EXPECT_STDOUT "skinning check: .*guards intact" QUIET_STDERR)
 set_tests_properties(chapter-17.weights-zero PROPERTIES FIXTURES_REQUIRED gltf-cases)
+skin_hostile(inverse-bind-not-affine "skins\\[0\\].inverseBindMatrices\\[1\\]'s fourth row is not 0, 0, 0, 1 \\(not an affine transform\\)"
+    inverse_bind_not_affine.gltf)
 skin_hostile(weights-nan "meshes\\[0\\].primitives\\[0\\] WEIGHTS_0 \\(accessor 4\\) holds a non-finite number"
     weights_nan.gltf)
 skin_hostile(times-decreasing
@@ -235,6 +243,8 @@ skin_hostile(book-repeat-weights-none "anim_meshes 2 has not 4 weights and 4 bon
 skin_hostile(book-bone-nested "nested deeper than 16 levels \\(the book's converted format has 6\\)"
     book_bone_nested.json)
 skin_hostile(book-many-values "more than 8388608 JSON values, more than our limits allow" book_many_values.json)
+skin_hostile(book-json-too-large "314572800 bytes, more than the 268435456 our limits allow for the book's converted JSON"
+    book_json_too_large.json)
 skin_hostile(joint-past-skin-at-weight-0 "meshes\\[0\\].primitives\\[0\\] vertex 7 names joint 200. its skin has 2"
     joint_past_skin_at_weight_0.gltf)
 skin_hostile(joints-normalized "meshes\\[0\\].primitives\\[0\\] JOINTS_0 is normalized \\(joint ids are whole numbers\\)"

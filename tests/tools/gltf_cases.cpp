@@ -1636,6 +1636,23 @@ void writeSkinHostile(const fs::path& dir) {
                                                        {"output", f.values(values, gltf::kFloat, "VEC3")}});
         f.root["animations"][0]["channels"].push_back(channel);
     });
+    // An inverse bind matrix that is not affine (its fourth row 0.5, 0, 0, 1): refused, not drawn
+    // distorted.
+    make("inverse_bind_not_affine.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<glm::mat4> inverseBind{glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), vec3(-1, 0, 0))};
+        inverseBind[1][0][3] = 0.5f;
+        f.root["skins"][0]["inverseBindMatrices"] = f.values(inverseBind, gltf::kFloat, "MAT4");
+    });
+    // Legal tiny scales (not faults: drawn): a scale key of 1e-40, a denormal float, on the elbow;
+    // the normals' matrix, the inverse-transpose, would be 1e40 there.
+    make("scale_tiny.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> times{0.0f, 1.0f};
+        std::vector<float> values{1e-40f, 1e-40f, 1e-40f, 1e-40f, 1e-40f, 1e-40f};
+        json channel = {{"sampler", 1}, {"target", {{"node", 1}, {"path", "scale"}}}};
+        f.root["animations"][0]["samplers"].push_back({{"input", f.values(times, gltf::kFloat, "SCALAR")},
+                                                       {"output", f.values(values, gltf::kFloat, "VEC3")}});
+        f.root["animations"][0]["channels"].push_back(channel);
+    });
     // The book's format: the arm, and what breaks it.
     writeBookFigure(dir, "book_arm");
     writeBookFigure(dir, "book_bone_past", [](json& root) { root["anim_meshes"][0]["bone_ids"][29] = 7; });
@@ -1664,6 +1681,10 @@ void writeSkinHostile(const fs::path& dir) {
         text.replace(text.find(mark), mark.size(), std::string(100000, '[') + "0" + std::string(100000, ']'));
         writeText(dir / "book_bone_nested.json", text);
     }
+    // More text than the book's JSON may hold (a sparse file of 300 MiB: refused by its size, before
+    // a byte of it is read).
+    writeBookFigure(dir, "book_json_too_large");
+    fs::resize_file(dir / "book_json_too_large.json", uintmax_t{300} << 20);
     // More JSON values than the parse budget: 9 Mi zeros in a list the format does not read
     // (18 MB): refused as it is parsed, before the document's memory grows past the budget.
     writeBookFigure(dir, "book_many_values", [](json& root) { root["padding"] = "PADDING_HERE"; });
