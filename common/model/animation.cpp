@@ -265,6 +265,53 @@ void posedBounds(const SkinBounds& bounds, const std::vector<glm::dmat4>& joints
         }
 }
 
+namespace {
+
+// Where a CUBICSPLINE channel's curve turns: for each segment and component, the times within it
+// where the Hermite cubic's derivative is 0 (a quadratic's roots). A cubic segment may overshoot
+// its keys (a tangent of 455,000 between two keys of 1 peaks at 67,408, a third of the way, past
+// the key times and midpoints that are sampled otherwise); posed there too, each translation and
+// scale component's reach is in the bounds exactly.
+std::vector<double> cubicExtremeTimes(const AnimationClip& clip) {
+    std::vector<double> result;
+    for (const AnimationChannel& channel : clip.channels) {
+        if (channel.interpolation != Interpolation::CubicSpline) continue;
+        const size_t components = channel.path == AnimatedPath::Rotation ? 4 : 3;
+        for (size_t k = 0; k + 1 < channel.times.size(); ++k) {
+            const double t0 = channel.times[k], span = double(channel.times[k + 1]) - t0;
+            if (!(span > 0.0)) continue;
+            const glm::dvec4 p0 = keyValue(channel, k, components), p1 = keyValue(channel, k + 1, components);
+            const glm::dvec4 m0 = span * tangentValue(channel, k, components, true),
+                             m1 = span * tangentValue(channel, k + 1, components, false);
+            for (size_t c = 0; c < components; ++c) {
+                // d/du of (2u^3 - 3u^2 + 1) p0 + (u^3 - 2u^2 + u) m0 + (-2u^3 + 3u^2) p1 + (u^3 - u^2) m1.
+                const int i = int(c);
+                const double a = 6 * p0[i] + 3 * m0[i] - 6 * p1[i] + 3 * m1[i];
+                const double b = -6 * p0[i] - 4 * m0[i] + 6 * p1[i] - 2 * m1[i];
+                const double e = m0[i];
+                double roots[2];
+                int found = 0;
+                if (std::abs(a) < 1e-300) {
+                    if (std::abs(b) > 1e-300) roots[found++] = -e / b;
+                } else {
+                    const double discriminant = b * b - 4 * a * e;
+                    if (discriminant >= 0.0) {
+                        const double root = std::sqrt(discriminant);
+                        roots[found++] = (-b - root) / (2 * a);
+                        roots[found++] = (-b + root) / (2 * a);
+                    }
+                }
+                for (int r = 0; r < found; ++r)
+                    if (roots[r] > 0.0 && roots[r] < 1.0 && std::isfinite(roots[r]))
+                        result.push_back(t0 + roots[r] * span);
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace
+
 void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
     bool first = true;
     auto add = [&](const glm::vec3& lo, const glm::vec3& hi) {
@@ -326,6 +373,7 @@ void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
         times.clear();
         for (const AnimationChannel& channel : clip.channels)
             for (float t : channel.times) times.push_back(t);
+        std::vector<double> extremes = cubicExtremeTimes(clip);
         if (!clip.frames.empty()) {
             const size_t frames = clip.frames.size() / std::max<size_t>(jointCount, 1);
             for (size_t f = 0; f < frames; ++f) times.push_back(clip.frameSeconds * double(f));
@@ -334,6 +382,7 @@ void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
         times.erase(std::unique(times.begin(), times.end()), times.end());
         const size_t keys = times.size();
         for (size_t k = 0; k + 1 < keys; ++k) times.push_back(0.5 * (times[k] + times[k + 1]));
+        times.insert(times.end(), extremes.begin(), extremes.end());
         std::sort(times.begin(), times.end());
         const size_t samples = std::min(times.size(), cap);
         for (size_t i = 0; i < samples; ++i) {

@@ -1643,6 +1643,18 @@ void writeSkinHostile(const fs::path& dir) {
         inverseBind[1][0][3] = 0.5f;
         f.root["skins"][0]["inverseBindMatrices"] = f.values(inverseBind, gltf::kFloat, "MAT4");
     });
+    // A CUBICSPLINE translation that overshoots between its keys: both keys put the elbow at
+    // x = 1, the first out-tangent 455,000 lifts it to 67,408 a third of the way (past the 65,504
+    // of the G-buffer's 16-bit positions), where the key times and midpoints alone reach 56,876.
+    make("cubic_overshoot.gltf", nullptr, [&](gltf::File& f) {
+        std::vector<float> times{0.0f, 1.0f};
+        std::vector<float> values{0, 0, 0, 1, 0, 0, 455000, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0};
+        json channel = {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}};
+        f.root["animations"][0]["samplers"].push_back({{"input", f.values(times, gltf::kFloat, "SCALAR")},
+                                                       {"output", f.values(values, gltf::kFloat, "VEC3")},
+                                                       {"interpolation", "CUBICSPLINE"}});
+        f.root["animations"][0]["channels"].push_back(channel);
+    });
     // Legal tiny scales (not faults: drawn): a scale key of 1e-40, a denormal float, on the elbow;
     // the normals' matrix, the inverse-transpose, would be 1e40 there.
     make("scale_tiny.gltf", nullptr, [&](gltf::File& f) {
