@@ -272,12 +272,15 @@ namespace {
 // its keys (a tangent of 455,000 between two keys of 1 peaks at 67,408, a third of the way, past
 // the key times and midpoints that are sampled otherwise); posed there too, each translation and
 // scale component's reach is in the bounds exactly.
-std::vector<double> cubicExtremeTimes(const AnimationClip& clip) {
+// At most `limit` of them (the samples a clip is thinned to): a clip of very many keys is sampled,
+// not bounded exactly.
+std::vector<double> cubicExtremeTimes(const AnimationClip& clip, size_t limit) {
     std::vector<double> result;
     for (const AnimationChannel& channel : clip.channels) {
+        if (result.size() >= limit) break;
         if (channel.interpolation != Interpolation::CubicSpline) continue;
         const size_t components = channel.path == AnimatedPath::Rotation ? 4 : 3;
-        for (size_t k = 0; k + 1 < channel.times.size(); ++k) {
+        for (size_t k = 0; k + 1 < channel.times.size() && result.size() < limit; ++k) {
             const double t0 = channel.times[k], span = double(channel.times[k + 1]) - t0;
             if (!(span > 0.0)) continue;
             const glm::dvec4 p0 = keyValue(channel, k, components), p1 = keyValue(channel, k + 1, components);
@@ -302,7 +305,7 @@ std::vector<double> cubicExtremeTimes(const AnimationClip& clip) {
                     }
                 }
                 for (int r = 0; r < found; ++r)
-                    if (roots[r] > 0.0 && roots[r] < 1.0 && std::isfinite(roots[r]))
+                    if (roots[r] > 0.0 && roots[r] < 1.0 && std::isfinite(roots[r]) && result.size() < limit)
                         result.push_back(t0 + roots[r] * span);
             }
         }
@@ -373,7 +376,7 @@ void animatedBounds(const ModelData& model, glm::vec3& min, glm::vec3& max) {
         times.clear();
         for (const AnimationChannel& channel : clip.channels)
             for (float t : channel.times) times.push_back(t);
-        std::vector<double> extremes = cubicExtremeTimes(clip);
+        std::vector<double> extremes = cubicExtremeTimes(clip, cap);
         if (!clip.frames.empty()) {
             const size_t frames = clip.frames.size() / std::max<size_t>(jointCount, 1);
             for (size_t f = 0; f < frames; ++f) times.push_back(clip.frameSeconds * double(f));

@@ -64,33 +64,40 @@ std::string described(const json& value) {
 }
 
 // Parses the converted JSON within budgets that count what the parsed document costs, as it is
-// parsed: at most kMaxBookJsonBytes of text, kMaxBookJsonDepth levels of nesting (the format has
-// 6) and kMaxBookJsonValues values, each of which costs some 100 bytes once parsed
-// (docs/reliability.md measures it), so that no file can make the parse itself exhaust memory or
-// the stack.
-json parse(const std::filesystem::path& path) {
+// parsed: at most kMaxBookJsonBytes of text, kMaxBookJsonDepth levels of nesting (the format nests
+// 7) and kMaxBookJsonValues values and object keys, each of which costs about 100 bytes once
+// parsed (docs/reliability.md measures it), so that no file can make the parse itself exhaust
+// memory or the stack. `values` counts across the model's two files (NAME.json is still held while
+// NAME_mat.json is parsed): one budget for both.
+json parse(const std::filesystem::path& path, uint64_t& values) {
     std::error_code ec;
     if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxBookJsonBytes)
         throw InputError(utf8(path) + ": " + std::to_string(size) + " bytes, more than the " +
                          std::to_string(kMaxBookJsonBytes) +
                          " our limits allow for the book's converted JSON");
     std::string bytes = readInputFile(path);
-    uint64_t values = 0;
     json::parser_callback_t budget = [&](int depth, json::parse_event_t event, json&) {
         if (depth > int(kMaxBookJsonDepth))
             throw InputError(utf8(path) + ": nested deeper than " + std::to_string(kMaxBookJsonDepth) +
-                             " levels (the book's converted format has 6)");
-        if (event == json::parse_event_t::value || event == json::parse_event_t::object_start ||
-            event == json::parse_event_t::array_start)
+                             " levels (the book's converted format nests 7)");
+        if (event == json::parse_event_t::value || event == json::parse_event_t::key ||
+            event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
             if (++values > kMaxBookJsonValues)
-                throw InputError(
-                    utf8(path) + ": more than " + std::to_string(kMaxBookJsonValues) +
-                    " JSON values, more than our limits allow (each costs about 100 bytes parsed)");
+                throw InputError(utf8(path) + ": more than " + std::to_string(kMaxBookJsonValues) +
+                                 " JSON values and keys in the model's files, more than our limits allow "
+                                 "(each costs about 100 bytes parsed)");
         return true;
     };
     json root = json::parse(bytes, budget, false);
     if (root.is_discarded()) throw InputError(utf8(path) + ": not JSON (the book's converted model)");
     return root;
+}
+
+// A sum of weights for a message: six significant digits (a file's 1e300 is not 300 of them).
+std::string sumText(double sum) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", sum);
+    return text;
 }
 
 // A path of the book's ("resources\\models\\tree\\trunk.png", from its sample directory, with
@@ -191,8 +198,8 @@ uint64_t readBookAnimations(const json& root, Rig& rig, const Reader& r) {
         const json& millis = r.field(animation, "frame_millis", where);
         if (!millis.is_number() || !(millis.get<double>() > 0.0) || !(millis.get<double>() <= 1e9))
             r.fail(where +
-                   "'s frame_millis is not a number above 0 (the clip's length in seconds, as the "
-                   "book's generator writes it)");
+                   "'s frame_millis is not a number above 0 and at most 1e9 (the clip's length in "
+                   "seconds, as the book's generator writes it)");
         const json& frames = animation["frames"];
         clip.frameSeconds = millis.get<double>() / double(std::max<size_t>(frames.size() - 1, 1));
         clip.frames.reserve(frames.size() * joints);
@@ -212,8 +219,8 @@ uint64_t readBookAnimations(const json& root, Rig& rig, const Reader& r) {
                     }
                 // A joint's transform is affine: its last row (m03, m13, m23, m33) 0, 0, 0, 1. Any
                 // other would be divided away, or taken for 1, unseen.
-                if (std::abs(matrix[0][3]) > 1e-6f || std::abs(matrix[1][3]) > 1e-6f ||
-                    std::abs(matrix[2][3]) > 1e-6f || std::abs(matrix[3][3] - 1.0f) > 1e-6f)
+                if (std::abs(matrix[0][3]) > 1e-4f || std::abs(matrix[1][3]) > 1e-4f ||
+                    std::abs(matrix[2][3]) > 1e-4f || std::abs(matrix[3][3] - 1.0f) > 1e-4f)
                     r.fail(where + "'s frame " + std::to_string(f) +
                            " has a joint matrix whose last row (m03, m13, m23, m33) is not 0, 0, 0, 1");
                 clip.frames.push_back(matrix);
@@ -261,7 +268,7 @@ std::vector<VertexSkin> readBookWeights(const json& animMesh, size_t vertices, u
             continue;
         }
         if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
-            r.fail(where + "'s vertex " + std::to_string(v) + "'s weights sum to " + std::to_string(sum) +
+            r.fail(where + "'s vertex " + std::to_string(v) + "'s weights sum to " + sumText(sum) +
                    ", not 1 (nor 0: no bone)");
         skin[v].weights /= float(sum);
         int heaviest = 0;  // unused slots name the heaviest joint (weight 0), as the glTF loader's
@@ -278,7 +285,8 @@ std::vector<VertexSkin> readBookWeights(const json& animMesh, size_t vertices, u
 //> book-model
 ModelData loadBookModel(const std::filesystem::path& path) {
     Reader r{utf8(path)};
-    json root = parse(path);
+    uint64_t jsonValues = 0;  // the budget of both files
+    json root = parse(path, jsonValues);
     std::filesystem::path directory = path.parent_path();
     const json& meshes = r.field(root, "meshes", "the model");
     if (!meshes.is_array() || meshes.empty()) r.fail("\"meshes\" is not a list of meshes");
@@ -298,7 +306,7 @@ ModelData loadBookModel(const std::filesystem::path& path) {
     std::map<std::string, uint32_t> materialIndex;
     std::filesystem::path materialsPath = directory / pathFromUtf8(utf8(path.stem()) + "_mat.json");
     Reader m{utf8(materialsPath)};
-    json materials = parse(materialsPath);
+    json materials = parse(materialsPath, jsonValues);
     if (!materials.is_array()) m.fail("not a list of materials");
     for (size_t i = 0; i < materials.size(); ++i) {
         const json& entry = materials[i];

@@ -35,6 +35,13 @@
 namespace common {
 namespace {
 
+// A sum of weights for a message: six significant digits.
+std::string sumText(double sum) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", sum);
+    return text;
+}
+
 // The deepest node hierarchy we walk (a longer chain is almost surely a hostile file). The walk
 // keeps its own stack, so depth costs no call stack; the limit is on what a real scene does.
 constexpr int kMaxNodeDepth = 1024;
@@ -550,8 +557,8 @@ uint32_t skinJoints(RigReader& rig, const tinygltf::Model& model, int skinIndex,
             // 3.7.3.1: an inverse bind matrix is an affine transform, its fourth row (0, 0, 0, 1)
             // (to an exporter's rounding); another would distort the pose unseen.
             const glm::dmat4& m = joint.inverseBind;
-            if (std::abs(m[0][3]) > 1e-5 || std::abs(m[1][3]) > 1e-5 || std::abs(m[2][3]) > 1e-5 ||
-                std::abs(m[3][3] - 1.0) > 1e-5)
+            if (std::abs(m[0][3]) > 1e-4 || std::abs(m[1][3]) > 1e-4 || std::abs(m[2][3]) > 1e-4 ||
+                std::abs(m[3][3] - 1.0) > 1e-4)
                 reader.fail(at + ".inverseBindMatrices[" + std::to_string(j) +
                             "]'s fourth row is not 0, 0, 0, 1 (not an affine transform)");
         }
@@ -626,7 +633,7 @@ std::vector<VertexSkin> readInfluences(const tinygltf::Model& model, const tinyg
         // where the mesh puts it.
         if (sum == 0.0) continue;
         if (!(std::abs(sum - 1.0) <= kWeightSumTolerance))
-            reader.fail(where + " vertex " + std::to_string(i) + "'s weights sum to " + std::to_string(sum) +
+            reader.fail(where + " vertex " + std::to_string(i) + "'s weights sum to " + sumText(sum) +
                         ", not 1 (nor 0: no joint)");
         if (sets.size() == 1) {  // each weight stays in its slot
             // An unused slot names the vertex's heaviest joint: its weight 0 times a joint no

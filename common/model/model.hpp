@@ -214,13 +214,14 @@ inline constexpr uint64_t kMaxRigJoints = 4096;
 inline constexpr uint64_t kMaxRigNodes = 65536;
 inline constexpr uint64_t kMaxAnimationClips = 1024;
 inline constexpr uint64_t kMaxAnimationKeys = uint64_t{1} << 24;
-// The book's converted JSON, parsed: at most 256 MiB of text, 16 levels of nesting (the format has
-// 6), and 8 Mi values (numbers, strings, lists, objects), about 100 bytes each once parsed: 0.8 GB
-// at most for the document, the text and a string's copy beside it, within the 2 GB a model may
-// peak at (docs/reliability.md). Bob's animation is some 70,000 values.
+// The book's converted JSON (NAME.json and NAME_mat.json), parsed: at most 256 MiB of text a file,
+// 16 levels of nesting (the format nests 7), and 4 Mi values and object keys in the two files
+// together (numbers, strings, lists, objects, keys), some 100 bytes each once parsed: about 0.5 GB
+// for the documents, beside the text, the .vtx and .idx bytes and the meshes decoded from them,
+// within the 2 GB a model may peak at (docs/reliability.md). Bob's animation is some 150,000.
 inline constexpr uint64_t kMaxBookJsonBytes = uint64_t{256} << 20;
 inline constexpr uint64_t kMaxBookJsonDepth = 16;
-inline constexpr uint64_t kMaxBookJsonValues = uint64_t{1} << 23;
+inline constexpr uint64_t kMaxBookJsonValues = uint64_t{1} << 22;
 // How far a vertex's weights may sum from 1 and still be taken (renormalised): what 8-bit
 // quantised weights can miss by (four roundings of 1/510 each). Beyond it a model is refused.
 inline constexpr double kWeightSumTolerance = 1.0 / 64.0;
