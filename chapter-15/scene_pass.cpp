@@ -116,6 +116,9 @@ std::vector<VkPipeline> makeScenePipelineSet(const common::Device& device, VkPip
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kNormal | common::kTangent |
                                                       common::kBitangent | common::kUv);
     //< scene-pipeline
+    // Vertex pulling (chapter-18): no vertex buffers, no attributes; the vertex shader reads the mesh.
+    VkPipelineVertexInputStateCreateInfo noVertexInput{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     common::ShaderModule vertex(device, target.shaders.vertex);
     common::ShaderModule fragment(device, target.shaders.fragment);
     std::vector<VkPipeline> made;
@@ -146,7 +149,7 @@ std::vector<VkPipeline> makeScenePipelineSet(const common::Device& device, VkPip
                     .name = className(materialClass, generic),
                     .stages = {common::shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
                                common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization)},
-                    .vertexInput = &vertexInput.state,
+                    .vertexInput = target.vertexInput ? &vertexInput.state : &noVertexInput,
                     // Back faces are never seen on closed meshes (the book culls none): culling them
                     // saves their fragments, and removes depth ties where a back face meets a front face
                     // at a silhouette edge -- ties that standard and reversed-Z break differently. Models
@@ -180,12 +183,15 @@ ScenePipelines createScenePipelines(const common::Device& device, VkPipelineCach
     std::vector<VkDescriptorSetLayout> layouts{pass.cameraLayout, pass.materialsLayout, pass.texturesLayout};
     layouts.insert(layouts.end(), target.moreSets.begin(), target.moreSets.end());
     std::array<VkPushConstantRange, 2> pushConstants{{
-        {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = sizeof(DrawConstants)},
-        {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT, .offset = kDrawMaterialOffset, .size = sizeof(uint32_t)},
+        {.stageFlags = VK_SHADER_STAGE_VERTEX_BIT, .offset = 0, .size = pass.drawing.vertexConstants},
+        {.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT,
+         .offset = pass.drawing.materialOffset,
+         .size = sizeof(uint32_t)},
     }};
     pipelines.layout = common::createPipelineLayout(device, layouts, pushConstants, "scene");
 
     pipelines.target = target;
+    pipelines.target.vertexInput = pass.drawing.vertexInput;
     //> material-classes
     // The classes the scene's materials have (common::MaterialClasses). Generic pipelines are
     // told only what the pipeline state itself needs: the alpha test (so opaque draws keep early
@@ -223,9 +229,10 @@ void destroyScenePipelines(const common::Device& device, ScenePipelines& pipelin
 
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight, const GBufferLayout& layout,
-                          const SceneShaders& shaders, bool genericPipelines) {
+                          const SceneShaders& shaders, bool genericPipelines, const MeshDrawing& drawing) {
     ScenePass pass;
     pass.layout = &layout;
+    pass.drawing = drawing;
     pass.genericPipelines = genericPipelines;
     for (VkFormat format : common::colorFormats(layout.formats)) {
         VkFormatProperties properties;
@@ -307,24 +314,28 @@ void recordSceneDraws(VkCommandBuffer cmd, ScenePass& pass, const ScenePipelines
         VkPipeline pipeline =
             pipelines.pipelines[pipelines.materialClasses.ofMaterial[draw.material]];  // its class's
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
-        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        VkDeviceSize offset = 0;
-        vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
-        vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout, 2, 1,
                                 &pass.materialTextureSets[draw.material], 0, nullptr);
-        // Normals need the inverse-transpose of the model matrix: computed when the draw was
-        // placed (common::setDrawModel), not once per vertex in the shader as the book does.
-        const glm::mat3& normalMatrix = draw.normalMatrix;
-        DrawConstants constants{draw.model,
-                                {glm::vec4(normalMatrix[0], 0.0f), glm::vec4(normalMatrix[1], 0.0f),
-                                 glm::vec4(normalMatrix[2], 0.0f)}};
-        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants),
-                           &constants);
-        vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset,
-                           sizeof(uint32_t), &draw.material);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+        pass.drawing.record(cmd, pipelines.layout, pass.drawing, scene, draw, 0);
     }
+}
+
+void recordBoundMesh(VkCommandBuffer cmd, VkPipelineLayout layout, const MeshDrawing& drawing,
+                     const common::GpuScene& scene, const common::Draw& draw, uint32_t firstInstance) {
+    const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+    VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
+    // Normals need the inverse-transpose of the model matrix: computed when the draw was
+    // placed (common::setDrawModel), not once per vertex in the shader as the book does.
+    const glm::mat3& normalMatrix = draw.normalMatrix;
+    DrawConstants constants{draw.model,
+                            {glm::vec4(normalMatrix[0], 0.0f), glm::vec4(normalMatrix[1], 0.0f),
+                             glm::vec4(normalMatrix[2], 0.0f)}};
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, drawing.materialOffset, sizeof(uint32_t),
+                       &draw.material);
+    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
 }
 //< record-scene
 

@@ -22,6 +22,25 @@
 #include "common/vk/device.hpp"
 #include "common/vk/pipeline.hpp"
 #include "gbuffer_layout.hpp"
+#include "gpu_types.hpp"
+
+struct MeshDrawing;
+// Chapter-15's way to draw one of the scene's draws, its pipeline and sets bound: the mesh's vertex
+// and index buffers bound (the pipeline's vertex input reads them), the model and normal matrices
+// and the material pushed, vkCmdDrawIndexed. `firstInstance` reaches the vertex shader as
+// gl_InstanceIndex (chapter-16's shadow pass sends the cascades a draw goes to so).
+void recordBoundMesh(VkCommandBuffer cmd, VkPipelineLayout layout, const MeshDrawing& drawing,
+                     const common::GpuScene& scene, const common::Draw& draw, uint32_t firstInstance);
+
+// How a draw's mesh and constants reach the shaders, for the scene pass and chapter-16's shadow
+// pass alike: chapter-15's by default; chapter-18's vertex shaders read the buffers themselves
+// through the addresses the draw pushes (chapter-18/mesh_pulling.hpp).
+struct MeshDrawing {
+    bool vertexInput = true;                            // the pipelines' vertex input state reads the mesh
+    uint32_t vertexConstants = sizeof(DrawConstants);   // push constant bytes of the vertex stage, from 0
+    uint32_t materialOffset = kDrawMaterialOffset;      // the fragment stage's material index (4 bytes)
+    decltype(&recordBoundMesh) record = recordBoundMesh;
+};
 
 // The compiled shaders of a scene pipeline, files under <build>/bin/shaders/: the book's by
 // default. A fragment shader starts from scene_surface.glsl's sceneSurface().
@@ -37,6 +56,7 @@ struct ScenePipelineTarget {
     VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
     bool reversedZ = false;
     std::vector<VkDescriptorSetLayout> moreSets;  // sets 3.. after the scene pass's own
+    bool vertexInput = true;                      // the scene pass's MeshDrawing's (set when made)
 };
 
 // A material class: the features of a material that a scene pipeline is specialised for
@@ -74,6 +94,7 @@ struct ScenePass {
     std::vector<MaterialClass> classOfMaterial;  // per material: the features it uses
     std::vector<bool> materialUsed;              // per material: whether a draw uses it
     bool genericPipelines = false;               // --pipelines generic
+    MeshDrawing drawing;                         // how its draws (and the shadow pass's) reach the shaders
     ScenePipelines pipelines;
     std::vector<uint32_t> order;  // the draws' indices in the order they are recorded
     glm::vec3 orderedFrom{0.0f};  // the camera position `order` was made for
@@ -85,7 +106,7 @@ struct ScenePass {
 ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, VkExtent2D extent,
                           const common::GpuScene& scene, uint32_t framesInFlight,
                           const GBufferLayout& layout = kBookGBuffer, const SceneShaders& shaders = {},
-                          bool genericPipelines = false);
+                          bool genericPipelines = false, const MeshDrawing& drawing = {});
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.

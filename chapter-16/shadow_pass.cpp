@@ -35,6 +35,8 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
     stages.push_back(common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization));
     common::SceneVertexInput vertexInput;
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
+    VkPipelineVertexInputStateCreateInfo noVertexInput{  // vertex pulling (chapter-18)
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
         .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
@@ -76,7 +78,8 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
                                       .pNext = &rendering,
                                       .stageCount = uint32_t(stages.size()),
                                       .pStages = stages.data(),
-                                      .pVertexInputState = &vertexInput.state,
+                                      .pVertexInputState =
+                                          shaders.vertexInput ? &vertexInput.state : &noVertexInput,
                                       .pInputAssemblyState = &inputAssembly,
                                       .pViewportState = &viewport,
                                       .pRasterizationState = &rasterization,
@@ -110,8 +113,8 @@ VkPipelineLayout createShadowPipelineLayout(const common::Device& device, VkDesc
     std::array<VkDescriptorSetLayout, 3> layouts{cascades, scenePass.materialsLayout,
                                                  scenePass.texturesLayout};
     std::array<VkPushConstantRange, 2> pushConstants{{
-        {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawConstants)},
-        {VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t)},
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, scenePass.drawing.vertexConstants},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, scenePass.drawing.materialOffset, sizeof(uint32_t)},
     }};
     return common::createPipelineLayout(device, layouts, pushConstants, "shadow");
 }
@@ -154,6 +157,7 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
     ShadowPass pass;
     pass.settings = settings;
     pass.shaders = shaders;
+    pass.shaders.vertexInput = scenePass.drawing.vertexInput;
     pass.cache = createShadowCache(redraw, settings.mapSize, settings.count, scene.draws.size());
     // The scene pass's depth format (D32_SFLOAT, as the book's; X8_D24 on a device without it): the
     // depth only orders the casters, the moments keep their depth in 32-bit floats.
@@ -385,17 +389,10 @@ void recordShadowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline o
     const common::Draw& draw = scene.draws[drawIndex];
     VkPipeline pipeline = scene.materials[draw.material].alphaTested ? cutout : opaque;
     if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
-    const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-    VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &mesh.vertices.handle, &offset);
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle, 0, VK_INDEX_TYPE_UINT32);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
                             &scenePass.materialTextureSets[draw.material], 0, nullptr);
-    DrawConstants constants{draw.model, {}};
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kDrawMaterialOffset, sizeof(uint32_t),
-                       &draw.material);
-    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, firstInstance);
+    // The mesh, the model matrix and the material as the scene pass draws them (its MeshDrawing).
+    scenePass.drawing.record(cmd, layout, scenePass.drawing, scene, draw, firstInstance);
 }
 
 void recordShadowDraws(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipeline opaque, VkPipeline cutout,

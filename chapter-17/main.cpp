@@ -277,7 +277,7 @@ void report(Chapter& c, const common::Options& options) {
         checkShadowInputs(kChapter.name, c.scene, c.lightControls.sun, c.render.cascades);
     }
     if (options.switches.count("check-skinning"))
-        checkSkinning(c.context.device, c.render.skinningPass, c.render.gpuScene);
+        checkSkinning(kChapter.name, c.context.device, c.render.skinningPass, c.render.gpuScene);
 }
 
 //> run

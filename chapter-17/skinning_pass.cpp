@@ -58,15 +58,48 @@ VkPipeline makeSkinningPipeline(const common::Device& device, VkPipelineCache ca
 // vertices, --check-skinning copies it out. Filled with 0xFF bytes, guard included, in the
 // staging batch's submission.
 common::Buffer createPosedBuffer(const common::Device& device, common::StagingBatch& batch, uint32_t vertices,
-                                 const std::string& name) {
+                                 VkBufferUsageFlags addressed, const std::string& name) {
     VkDeviceSize size = VkDeviceSize(vertices + kGuardVertices) * sizeof(common::Vertex);
     common::Buffer buffer =
         common::createBuffer(device, size,
                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | addressed,
                              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     vkCmdFillBuffer(batch.commandBuffer, buffer.handle, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // with the uploads
     return buffer;
+}
+
+// chapter-18's end of createSkinningPass: no descriptor sets; each chunk's addresses, per frame in
+// flight, pushed with its dispatch. A pointer reaches the whole buffer, so only the dispatch's group
+// limit cuts a mesh into chunks.
+SkinningPass createAddressedSkinning(const common::Device& device, VkPipelineCache cache, SkinningPass pass,
+                                     const common::GpuScene& scene, uint32_t framesInFlight) {
+    for (uint32_t slot = 0; slot < framesInFlight; ++slot)
+        pass.palettes.push_back(
+            common::createBuffer(device, VkDeviceSize(pass.paletteJoints) * sizeof(common::PaletteEntry),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                 "joint palette " + std::to_string(slot)));
+    const uint64_t chunkVertices = uint64_t(pass.maxGroups) * 32;
+    for (SkinnedModel& model : pass.models)
+        for (SkinnedMesh& mesh : model.meshes)
+            for (uint64_t first = 0; first < mesh.vertexCount; first += chunkVertices) {
+                SkinnedMesh::Chunk chunk{
+                    uint32_t(first), uint32_t(std::min<uint64_t>(chunkVertices, mesh.vertexCount - first)), {}, {}};
+                for (uint32_t slot = 0; slot < framesInFlight; ++slot)
+                    chunk.addresses.push_back(
+                        {.bindPose = scene.meshes[mesh.sourceMesh].vertices.address + first * sizeof(common::Vertex),
+                         .influences = mesh.influences.address + first * sizeof(GpuInfluence),
+                         .palette = pass.palettes[slot].address +
+                                    uint64_t(model.paletteBase) * sizeof(common::PaletteEntry),
+                         .skinned = scene.meshes[mesh.outputMesh].vertices.address + first * sizeof(common::Vertex),
+                         .count = chunk.count});
+                mesh.chunks.push_back(std::move(chunk));
+            }
+    VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(SkinningAddresses)};
+    pass.pipelineLayout = common::createPipelineLayout(device, {}, {&push, 1}, "skinning");
+    pass.pipeline = makeSkinningPipeline(device, cache, pass);
+    return pass;
 }
 
 }  // namespace
@@ -74,8 +107,13 @@ common::Buffer createPosedBuffer(const common::Device& device, common::StagingBa
 //> create-skinning
 SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache cache, common::GpuScene& scene,
                                 const common::Scene& sceneDesc, common::ModelCache& models,
-                                uint32_t framesInFlight) {
+                                uint32_t framesInFlight, const SkinningOptions& options) {
     SkinningPass pass;
+    pass.shader = options.shader;
+    pass.deviceAddresses = options.deviceAddresses;
+    // chapter-18: every buffer the shader reads or writes is found by its address.
+    const VkBufferUsageFlags addressed =
+        options.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) : 0u;
     pass.maxGroups = device.properties.limits.maxComputeWorkGroupCount[0];
     // Each instance's draws, in the order loadGpuScene made them: its model's meshes, then its repeats.
     std::vector<std::vector<uint32_t>> drawsOf(sceneDesc.models.size());
@@ -143,7 +181,7 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
                 common::GpuMesh posed = scene.meshes[draw.mesh];
                 posed.ownsIndices = false;
                 posed.ownsVertices = true;
-                posed.vertices = createPosedBuffer(device, batch, mesh.vertexCount,
+                posed.vertices = createPosedBuffer(device, batch, mesh.vertexCount, addressed,
                                                    "posed vertices: model " + std::to_string(instance) +
                                                        ", mesh " + std::to_string(meshIndex));
                 mesh.outputMesh = uint32_t(scene.meshes.size());
@@ -178,7 +216,8 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
             }
             mesh.influences = common::uploadStaged(device, batch, influences.data(),
                                                    influences.size() * sizeof(GpuInfluence),
-                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "skin influences");
+                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | addressed,
+                                                   "skin influences");
             influenceOwner[mesh.data] = ownerPlace.size();
             ownerPlace.push_back({pass.models.size(), size_t(&mesh - skinned.meshes.data())});
         }
@@ -194,6 +233,7 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     }
     common::endStaging(device, batch);
     if (pass.models.empty()) return pass;  // nothing animated: no pass at all
+    if (pass.deviceAddresses) return createAddressedSkinning(device, cache, std::move(pass), scene, framesInFlight);
 
     // Set 0: the bind pose, the influences, the palette, the posed vertices -- all storage buffers.
     pass.setLayout = common::createDescriptorSetLayout(
@@ -323,10 +363,12 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
     // The posed buffers are read as vertices by the frames before this one (same queue): their
     // reads end before the shader writes, and the last frame's writes (and the fill that made
     // the buffers) are ordered before these.
+    // Read by the vertex input (chapter-17), or by the vertex shaders that pull them (chapter-18).
+    const VkPipelineStageFlags2 vertexReads = pass.deviceAddresses ? VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT
+                                                                   : VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT;
     VkMemoryBarrier2 beforeWrites{
         .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-        .srcStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+        .srcStageMask = vertexReads | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
         .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
         .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
         .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
@@ -343,6 +385,13 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
             // A dispatch a chunk: ceil(count / 32) groups; the shader returns for the last group's
             // invocations past the chunk.
             for (const SkinnedMesh::Chunk& chunk : mesh.chunks) {
+                if (pass.deviceAddresses) {  // chapter-18: the chunk's buffers by their addresses
+                    vkCmdPushConstants(cmd, pass.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                                       sizeof(SkinningAddresses), &chunk.addresses[slot]);
+                    vkCmdDispatch(cmd, (chunk.count + 31) / 32, 1, 1);
+                    ++dispatches;
+                    continue;
+                }
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipelineLayout, 0, 1,
                                         &chunk.sets[slot], 0, nullptr);
                 DispatchConstants constants{chunk.count, model.paletteBase};
@@ -358,8 +407,9 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
     VkMemoryBarrier2 afterWrites{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
                                  .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                  .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                 .dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
-                                 .dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT};
+                                 .dstStageMask = vertexReads,
+                                 .dstAccessMask = pass.deviceAddresses ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT
+                                                                       : VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT};
     VkDependencyInfo after{
         .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &afterWrites};
     common::vk13.CmdPipelineBarrier2(cmd, &after);
@@ -376,9 +426,10 @@ void remakeSkinningPipeline(const common::Device& device, VkPipelineCache cache,
     pass.stale = true;  // skinned again with the new shader, even when paused
 }
 
-void checkSkinning(const common::Device& device, const SkinningPass& pass, const common::GpuScene& scene) {
+void checkSkinning(const char* chapter, const common::Device& device, const SkinningPass& pass,
+                   const common::GpuScene& scene) {
     if (pass.models.empty()) {
-        std::printf("chapter-17: skinning check: nothing is skinned\n");
+        std::printf("%s: skinning check: nothing is skinned\n", chapter);
         return;
     }
     double maxPosition = 0.0, maxNormal = 0.0;
@@ -450,10 +501,10 @@ void checkSkinning(const common::Device& device, const SkinningPass& pass, const
     double p99 =
         positionErrors[std::min(positionErrors.size() - 1, size_t(double(positionErrors.size()) * 0.99))];
     std::printf(
-        "chapter-17: skinning check: %llu vertices in %llu meshes at %.6f s against the double-precision "
+        "%s: skinning check: %llu vertices in %llu meshes at %.6f s against the double-precision "
         "reference: position error max %.3g, p99 %.3g of the model's size; normal error max %.4f degrees; "
         "guards intact\n",
-        static_cast<unsigned long long>(checked), static_cast<unsigned long long>(meshes), pass.posedAt,
+        chapter, static_cast<unsigned long long>(checked), static_cast<unsigned long long>(meshes), pass.posedAt,
         maxPosition, p99, maxNormal);
     // fp32 arithmetic on coordinates of the model's size: a few units in the last place of 2^-24.
     constexpr double kPositionBound = 1e-5, kNormalBoundDegrees = 0.01;

@@ -33,6 +33,18 @@ struct AnimationClock {
     float speed = 1.0f;
 };
 
+// chapter-18's skinning (its skin.comp): the shader reads and writes through the buffers' device
+// addresses, pushed with each dispatch, and has no descriptor sets (40 bytes, scalar layout).
+struct SkinningAddresses {
+    VkDeviceAddress bindPose = 0;    // the chunk's first bind-pose vertex
+    VkDeviceAddress influences = 0;  // its first influence
+    VkDeviceAddress palette = 0;     // the frame's palette, at the model's first joint
+    VkDeviceAddress skinned = 0;     // its first posed vertex
+    uint32_t count = 0;              // the chunk's vertices
+    uint32_t padding = 0;
+};
+static_assert(sizeof(SkinningAddresses) == 40);
+
 // The CPU side of one skinned mesh of one model instance.
 struct SkinnedMesh {
     uint32_t sourceMesh = 0;  // GpuScene mesh with the bind pose (its vertex buffer is read)
@@ -43,10 +55,12 @@ struct SkinnedMesh {
     bool ownsInfluences = true;
     common::SkinBounds bounds;  // per joint, the bind-pose box of the vertices it moves
     // The vertices in chunks a binding and a dispatch can hold (skinning_pass.cpp), each with its
-    // sets, one per frame in flight (the palette is per frame).
+    // sets, one per frame in flight (the palette is per frame) -- or, with device addresses
+    // (chapter-18), the addresses pushed for it, per frame in flight.
     struct Chunk {
         uint32_t first = 0, count = 0;
         std::vector<VkDescriptorSet> sets;
+        std::vector<SkinningAddresses> addresses;
     };
     std::vector<Chunk> chunks;
 };
@@ -65,8 +79,17 @@ struct SkinnedModel {
 // --check-skinning finds intact: an invocation past the mesh's end would write there first.
 inline constexpr uint32_t kGuardVertices = 64;
 
+// How the pass's shader reaches its buffers: chapter-17's descriptor sets, or chapter-18's device
+// addresses (its buffers then made with SHADER_DEVICE_ADDRESS usage, and the posed vertices read by
+// the vertex shader, which pulls them, instead of the vertex input).
+struct SkinningOptions {
+    std::string shader = "chapter-17/skin.comp";
+    bool deviceAddresses = false;
+};
+
 struct SkinningPass {
     std::string shader = "chapter-17/skin.comp";
+    bool deviceAddresses = false;
     std::vector<SkinnedModel> models;
     uint32_t paletteJoints = 0;
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
@@ -89,7 +112,7 @@ struct SkinningPass {
 // them a vertex buffer of its own and points their draws at it. Makes nothing when there are none.
 SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache cache, common::GpuScene& scene,
                                 const common::Scene& sceneDesc, common::ModelCache& models,
-                                uint32_t framesInFlight);
+                                uint32_t framesInFlight, const SkinningOptions& options = {});
 // This frame's pose at `clock` into frame slot `slot`'s palette, and the skinned meshes' bounds;
 // decides whether the pass records a dispatch this frame.
 void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const AnimationClock& clock,
@@ -100,7 +123,8 @@ void remakeSkinningPipeline(const common::Device& device, VkPipelineCache cache,
 // --check-skinning, after the last frame: every skinned vertex read back against the CPU's
 // reference of the same pose (double precision), and the guard past each buffer intact. Prints the
 // largest errors; throws Failure beyond the bound (docs/chapter-17.md).
-void checkSkinning(const common::Device& device, const SkinningPass& pass, const common::GpuScene& scene);
+void checkSkinning(const char* chapter, const common::Device& device, const SkinningPass& pass,
+                   const common::GpuScene& scene);
 // What the pass had to do, and did: for the report and --benchmark.
 std::string describeSkinning(const SkinningPass& pass);
 void destroySkinningPass(const common::Device& device, SkinningPass& pass);

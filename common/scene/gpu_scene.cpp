@@ -440,12 +440,16 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     const std::vector<Vertex>& vertices = posed.empty() ? mesh.vertices : posed;
                     VkBufferUsageFlags usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
                     if (wanted.skins && !mesh.skin.empty()) usage |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+                    const VkBufferUsageFlags addressed =
+                        wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) : 0u;
+                    usage |= addressed;
                     out.vertices =
                         uploadStaged(device, batch, vertices.data(), vertices.size() * sizeof(Vertex), usage,
                                      meshName(instance.file, gpu.meshes.size(), "vertices"));
                     out.indices =
                         uploadStaged(device, batch, mesh.indices.data(),
-                                     mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                     mesh.indices.size() * sizeof(uint32_t),
+                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT | addressed,
                                      meshName(instance.file, gpu.meshes.size(), "indices"));
                     out.indexCount = uint32_t(mesh.indices.size());
                     out.boundsMin = out.boundsMax = vertices.front().position;
@@ -463,7 +467,9 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     for (size_t k = 0; k + 2 < turned.size(); k += 3) std::swap(turned[k + 1], turned[k + 2]);
                     out.indices =
                         uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
-                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                         (wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+                                                                 : 0u),
                                      meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
                     gpu.meshes.push_back(out);
                 }

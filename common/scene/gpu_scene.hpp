@@ -96,6 +96,9 @@ struct GpuSceneOptions {
     // (with STORAGE_BUFFER usage: the pass reads them). Before it: posed at rest on the CPU here,
     // with a warning that the model's animations are not played.
     bool skins = false;
+    // chapter-18 on: vertex and index buffers made with SHADER_DEVICE_ADDRESS usage (their
+    // Buffer::address), for vertex shaders that read them through pointers.
+    bool deviceAddresses = false;
 };
 
 // Throws InputError (naming the file) for a bad model or a corrupt texture; a missing texture

@@ -24,8 +24,15 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device.handle, buffer.handle, &requirements);
-    buffer.memory = allocateMemory(device, requirements, memoryFlags, name);
+    const bool addressed = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
+    buffer.memory = allocateMemory(device, requirements, memoryFlags, name,
+                                   addressed ? VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT : 0);
     VK_CHECK(vkBindBufferMemory(device.handle, buffer.handle, buffer.memory, 0));
+    if (addressed) {  // chapter-18 writes this call out (chapter-18/mesh_pulling.cpp)
+        VkBufferDeviceAddressInfo addressInfo{.sType = VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO,
+                                              .buffer = buffer.handle};
+        buffer.address = vkGetBufferDeviceAddress(device.handle, &addressInfo);
+    }
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device.handle, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped));
     return buffer;

@@ -18,6 +18,9 @@ struct Buffer {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkDeviceSize size = 0;
     void* mapped = nullptr;  // persistently mapped when the memory is host-visible
+    // Where shaders find it (chapter-18 on): for a buffer made with
+    // VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, vkGetBufferDeviceAddress's answer; else 0.
+    VkDeviceAddress address = 0;
 };
 
 // `name`: what graphics debuggers and validation messages call it (common/vk/debug_names.hpp).

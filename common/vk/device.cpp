@@ -80,7 +80,7 @@ struct FeatureChain {
             structure.pNext = head;
             head = &structure;
         };
-        if (api >= VK_API_VERSION_1_2 && wanted.scalarBlockLayout) link(v12);
+        if (api >= VK_API_VERSION_1_2 && (wanted.scalarBlockLayout || wanted.bufferDeviceAddress)) link(v12);
         if (wanted.multiview) link(multiview);
         if (api >= VK_API_VERSION_1_3 && needsVulkan13Commands(wanted)) link(v13);
         if (api < VK_API_VERSION_1_3 && wanted.dynamicRendering) link(dynamicRendering);
@@ -108,7 +108,8 @@ std::vector<const char*> featureExtensions(uint32_t api, const DeviceFeatures& w
 // Why the device cannot give the chapter what it asks for, or an empty string when it can.
 std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const DeviceFeatures& wanted) {
     uint32_t needed = needsVulkan13Commands(wanted) ? VK_API_VERSION_1_2 : wanted.minApiVersion;
-    if (wanted.scalarBlockLayout) needed = std::max(needed, uint32_t(VK_API_VERSION_1_2));
+    if (wanted.scalarBlockLayout || wanted.bufferDeviceAddress)
+        needed = std::max(needed, uint32_t(VK_API_VERSION_1_2));
     if (api < needed)
         return "it supports Vulkan " + versionText(api) + "; this chapter needs " + requirement(wanted);
     std::string lacking;
@@ -128,6 +129,10 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
         return "it lacks the synchronization2 feature";
     if (wanted.scalarBlockLayout && !chain.v12.scalarBlockLayout)
         return "it lacks the scalarBlockLayout feature";
+    if (wanted.bufferDeviceAddress && !chain.v12.bufferDeviceAddress)
+        return "it lacks the bufferDeviceAddress feature";
+    if (wanted.bufferDeviceAddress && !features.features.shaderInt64)
+        return "it lacks the shaderInt64 feature";
     if (wanted.geometryShader && !features.features.geometryShader)
         return "it lacks the geometryShader feature";
     if (wanted.multiview && !chain.multiview.multiview) return "it lacks the multiview feature";
@@ -284,6 +289,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     // Exactly the features asked for, no more: what a chapter uses is what it enables.
     FeatureChain enabled(device.apiVersion, features);
     enabled.v12.scalarBlockLayout = features.scalarBlockLayout;
+    enabled.v12.bufferDeviceAddress = features.bufferDeviceAddress;
     enabled.multiview.multiview = features.multiview;
     enabled.v13.dynamicRendering = enabled.dynamicRendering.dynamicRendering = features.dynamicRendering;
     enabled.v13.synchronization2 = enabled.synchronization2.synchronization2 = features.synchronization2;
@@ -298,6 +304,7 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     coreFeatures.geometryShader = features.geometryShader ? VK_TRUE : VK_FALSE;
     coreFeatures.vertexPipelineStoresAndAtomics = features.vertexStores ? VK_TRUE : VK_FALSE;
     coreFeatures.occlusionQueryPrecise = features.preciseOcclusion ? VK_TRUE : VK_FALSE;
+    coreFeatures.shaderInt64 = features.bufferDeviceAddress ? VK_TRUE : VK_FALSE;
     device.depthClamp = features.depthClampWhereAvailable && available.depthClamp;
     coreFeatures.depthClamp = device.depthClamp ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo createInfo{

@@ -57,6 +57,8 @@ struct DeviceFeatures {
     bool multiview = false;                 // chapter-15-lab's shadow study: a view per cascade (core 1.1)
     bool vertexStores = false;      // chapter-15-lab's skinning study: a vertex shader writes a buffer
     bool preciseOcclusion = false;  // chapter-15-lab's skinning study: exact occlusion query counts
+    // chapter-18 on: shaders read buffers through 64-bit pointers (core 1.2, shaderInt64 core 1.0).
+    bool bufferDeviceAddress = false;
 };
 
 // The commands of dynamic rendering and synchronization2. A Vulkan 1.3 device has them in its

@@ -14,12 +14,18 @@ uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropert
 }
 
 VkDeviceMemory allocateMemory(const Device& device, const VkMemoryRequirements& requirements,
-                              VkMemoryPropertyFlags flags, const std::string& name) {
+                              VkMemoryPropertyFlags flags, const std::string& name,
+                              VkMemoryAllocateFlags allocateFlags) {
     // SHORTCUT: one allocation per buffer or image, as the book does. A real engine sub-allocates
     // large blocks (e.g. with the Vulkan Memory Allocator); maxMemoryAllocationCount can be as low
     // as 4096.
+    // A buffer read through its device address needs memory allocated with that flag (chapter-18):
+    // any memory type, no dedicated allocation.
+    VkMemoryAllocateFlagsInfo flagsInfo{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO,
+                                        .flags = allocateFlags};
     VkMemoryAllocateInfo allocInfo{
         .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .pNext = allocateFlags != 0 ? &flagsInfo : nullptr,
         .allocationSize = requirements.size,
         .memoryTypeIndex = findMemoryType(device, requirements.memoryTypeBits, flags),
     };

@@ -16,7 +16,10 @@ namespace common {
 uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropertyFlags required);
 // Memory for one buffer or image, of a type with `flags` that `requirements` allows, named `name`
 // (chapter-06/buffer.cpp writes the same out). The caller binds it.
+// `allocateFlags`: VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT for a buffer whose address shaders read
+// (chapter-18 on).
 VkDeviceMemory allocateMemory(const Device& device, const VkMemoryRequirements& requirements,
-                              VkMemoryPropertyFlags flags, const std::string& name);
+                              VkMemoryPropertyFlags flags, const std::string& name,
+                              VkMemoryAllocateFlags allocateFlags = 0);
 
 }  // namespace common

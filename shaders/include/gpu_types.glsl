@@ -56,7 +56,9 @@ struct DrawConstants {
 };
 // The fragment stage's push constant, the draw's material index, follows the vertex stage's:
 // at sizeof(DrawConstants). C++: kDrawMaterialOffset (chapter-15/gpu_types.hpp).
+#ifndef DRAW_MATERIAL_OFFSET  // chapter-18 compiles the fragment shaders with its own (chapter-18/mesh_pulling.hpp)
 #define DRAW_MATERIAL_OFFSET 112
+#endif
 
 // The light pass's push constants (std430): 112 bytes.
 struct LightView {
