@@ -36,9 +36,9 @@ void recordBoundMesh(VkCommandBuffer cmd, VkPipelineLayout layout, const MeshDra
 // pass alike: chapter-15's by default; chapter-18's vertex shaders read the buffers themselves
 // through the addresses the draw pushes (chapter-18/mesh_pulling.hpp).
 struct MeshDrawing {
-    bool vertexInput = true;                            // the pipelines' vertex input state reads the mesh
-    uint32_t vertexConstants = sizeof(DrawConstants);   // push constant bytes of the vertex stage, from 0
-    uint32_t materialOffset = kDrawMaterialOffset;      // the fragment stage's material index (4 bytes)
+    bool vertexInput = true;                           // the pipelines' vertex input state reads the mesh
+    uint32_t vertexConstants = sizeof(DrawConstants);  // push constant bytes of the vertex stage, from 0
+    uint32_t materialOffset = kDrawMaterialOffset;     // the fragment stage's material index (4 bytes)
     decltype(&recordBoundMesh) record = recordBoundMesh;
 };
 

@@ -35,7 +35,8 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
     stages.push_back(common::shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment, &specialization));
     common::SceneVertexInput vertexInput;
     common::describeSceneVertexInput(vertexInput, common::kPosition | common::kUv);
-    VkPipelineVertexInputStateCreateInfo noVertexInput{  // vertex pulling (chapter-18)
+    VkPipelineVertexInputStateCreateInfo noVertexInput{
+        // vertex pulling (chapter-18)
         .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
@@ -74,20 +75,20 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
                                             .colorAttachmentCount = shaders.moments ? 1u : 0u,
                                             .pColorAttachmentFormats = &kMomentsFormat,
                                             .depthAttachmentFormat = depthFormat};
-    VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                      .pNext = &rendering,
-                                      .stageCount = uint32_t(stages.size()),
-                                      .pStages = stages.data(),
-                                      .pVertexInputState =
-                                          shaders.vertexInput ? &vertexInput.state : &noVertexInput,
-                                      .pInputAssemblyState = &inputAssembly,
-                                      .pViewportState = &viewport,
-                                      .pRasterizationState = &rasterization,
-                                      .pMultisampleState = &multisample,
-                                      .pDepthStencilState = &depth,
-                                      .pColorBlendState = &colorBlend,
-                                      .pDynamicState = &dynamicState,
-                                      .layout = layout};
+    VkGraphicsPipelineCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+        .pNext = &rendering,
+        .stageCount = uint32_t(stages.size()),
+        .pStages = stages.data(),
+        .pVertexInputState = shaders.vertexInput ? &vertexInput.state : &noVertexInput,
+        .pInputAssemblyState = &inputAssembly,
+        .pViewportState = &viewport,
+        .pRasterizationState = &rasterization,
+        .pMultisampleState = &multisample,
+        .pDepthStencilState = &depth,
+        .pColorBlendState = &colorBlend,
+        .pDynamicState = &dynamicState,
+        .layout = layout};
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device.handle, cache, 1, &info, nullptr, &pipeline));
     common::nameObject(device.handle, pipeline,

@@ -53,7 +53,8 @@ struct ShadowPipelineShaders {
     const char* fragment = "chapter-16/shadow.frag";
     bool moments = true;    // a colour attachment of kMomentsFormat; false: depth alone
     uint32_t viewMask = 0;  // multiview: a bit per cascade
-    bool vertexInput = true;  // the scene pass's MeshDrawing's: false when the vertex shader pulls (chapter-18)
+    bool vertexInput =
+        true;  // the scene pass's MeshDrawing's: false when the vertex shader pulls (chapter-18)
 };
 // `alphaTest`: the cut-outs' pipeline (constant_id 0 ALPHA_TEST); `layout` as ShadowPass's.
 VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache cache, VkPipelineLayout layout,

@@ -60,11 +60,11 @@ VkPipeline makeSkinningPipeline(const common::Device& device, VkPipelineCache ca
 common::Buffer createPosedBuffer(const common::Device& device, common::StagingBatch& batch, uint32_t vertices,
                                  VkBufferUsageFlags addressed, const std::string& name) {
     VkDeviceSize size = VkDeviceSize(vertices + kGuardVertices) * sizeof(common::Vertex);
-    common::Buffer buffer =
-        common::createBuffer(device, size,
-                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | addressed,
-                             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
+    common::Buffer buffer = common::createBuffer(
+        device, size,
+        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | addressed,
+        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     vkCmdFillBuffer(batch.commandBuffer, buffer.handle, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // with the uploads
     return buffer;
 }
@@ -75,24 +75,29 @@ common::Buffer createPosedBuffer(const common::Device& device, common::StagingBa
 SkinningPass createAddressedSkinning(const common::Device& device, VkPipelineCache cache, SkinningPass pass,
                                      const common::GpuScene& scene, uint32_t framesInFlight) {
     for (uint32_t slot = 0; slot < framesInFlight; ++slot)
-        pass.palettes.push_back(
-            common::createBuffer(device, VkDeviceSize(pass.paletteJoints) * sizeof(common::PaletteEntry),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                 "joint palette " + std::to_string(slot)));
+        pass.palettes.push_back(common::createBuffer(
+            device, VkDeviceSize(pass.paletteJoints) * sizeof(common::PaletteEntry),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+            "joint palette " + std::to_string(slot)));
     const uint64_t chunkVertices = uint64_t(pass.maxGroups) * 32;
     for (SkinnedModel& model : pass.models)
         for (SkinnedMesh& mesh : model.meshes)
             for (uint64_t first = 0; first < mesh.vertexCount; first += chunkVertices) {
                 SkinnedMesh::Chunk chunk{
-                    uint32_t(first), uint32_t(std::min<uint64_t>(chunkVertices, mesh.vertexCount - first)), {}, {}};
+                    uint32_t(first),
+                    uint32_t(std::min<uint64_t>(chunkVertices, mesh.vertexCount - first)),
+                    {},
+                    {}};
                 for (uint32_t slot = 0; slot < framesInFlight; ++slot)
                     chunk.addresses.push_back(
-                        {.bindPose = scene.meshes[mesh.sourceMesh].vertices.address + first * sizeof(common::Vertex),
+                        {.bindPose =
+                             scene.meshes[mesh.sourceMesh].vertices.address + first * sizeof(common::Vertex),
                          .influences = mesh.influences.address + first * sizeof(GpuInfluence),
                          .palette = pass.palettes[slot].address +
                                     uint64_t(model.paletteBase) * sizeof(common::PaletteEntry),
-                         .skinned = scene.meshes[mesh.outputMesh].vertices.address + first * sizeof(common::Vertex),
+                         .skinned =
+                             scene.meshes[mesh.outputMesh].vertices.address + first * sizeof(common::Vertex),
                          .count = chunk.count});
                 mesh.chunks.push_back(std::move(chunk));
             }
@@ -214,10 +219,9 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
                                   uint32_t(s.joints[2]) | uint32_t(s.joints[3]) << 16},
                                  s.weights};
             }
-            mesh.influences = common::uploadStaged(device, batch, influences.data(),
-                                                   influences.size() * sizeof(GpuInfluence),
-                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | addressed,
-                                                   "skin influences");
+            mesh.influences = common::uploadStaged(
+                device, batch, influences.data(), influences.size() * sizeof(GpuInfluence),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | addressed, "skin influences");
             influenceOwner[mesh.data] = ownerPlace.size();
             ownerPlace.push_back({pass.models.size(), size_t(&mesh - skinned.meshes.data())});
         }
@@ -233,7 +237,8 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     }
     common::endStaging(device, batch);
     if (pass.models.empty()) return pass;  // nothing animated: no pass at all
-    if (pass.deviceAddresses) return createAddressedSkinning(device, cache, std::move(pass), scene, framesInFlight);
+    if (pass.deviceAddresses)
+        return createAddressedSkinning(device, cache, std::move(pass), scene, framesInFlight);
 
     // Set 0: the bind pose, the influences, the palette, the posed vertices -- all storage buffers.
     pass.setLayout = common::createDescriptorSetLayout(
@@ -364,11 +369,13 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
     // reads end before the shader writes, and the last frame's writes (and the fill that made
     // the buffers) are ordered before these.
     // Read by the vertex input (chapter-17), or by the vertex shaders that pull them (chapter-18).
-    const VkPipelineStageFlags2 vertexReads = pass.deviceAddresses ? VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT
-                                                                   : VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT;
+    const VkPipelineStageFlags2 vertexReads = pass.deviceAddresses
+                                                  ? VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT
+                                                  : VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT;
     VkMemoryBarrier2 beforeWrites{
         .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-        .srcStageMask = vertexReads | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+        .srcStageMask =
+            vertexReads | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
         .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
         .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
         .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
@@ -408,8 +415,9 @@ void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) 
                                  .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                  .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                                  .dstStageMask = vertexReads,
-                                 .dstAccessMask = pass.deviceAddresses ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT
-                                                                       : VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT};
+                                 .dstAccessMask = pass.deviceAddresses
+                                                      ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT
+                                                      : VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT};
     VkDependencyInfo after{
         .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &afterWrites};
     common::vk13.CmdPipelineBarrier2(cmd, &after);
@@ -504,8 +512,8 @@ void checkSkinning(const char* chapter, const common::Device& device, const Skin
         "%s: skinning check: %llu vertices in %llu meshes at %.6f s against the double-precision "
         "reference: position error max %.3g, p99 %.3g of the model's size; normal error max %.4f degrees; "
         "guards intact\n",
-        chapter, static_cast<unsigned long long>(checked), static_cast<unsigned long long>(meshes), pass.posedAt,
-        maxPosition, p99, maxNormal);
+        chapter, static_cast<unsigned long long>(checked), static_cast<unsigned long long>(meshes),
+        pass.posedAt, maxPosition, p99, maxNormal);
     // fp32 arithmetic on coordinates of the model's size: a few units in the last place of 2^-24.
     constexpr double kPositionBound = 1e-5, kNormalBoundDegrees = 0.01;
     if (!(maxPosition <= kPositionBound) || !(maxNormal <= kNormalBoundDegrees))

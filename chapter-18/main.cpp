@@ -35,7 +35,8 @@ namespace {
 
 const common::ChapterInfo kChapter{
     "chapter-18",
-    "buffer device addresses: chapter-17's frame with vertices pulled through pointers (the book's chapter 18)",
+    "buffer device addresses: chapter-17's frame with vertices pulled through pointers (the book's chapter "
+    "18)",
     // The order of shade_pixel.glsl's `view`, then light.frag's own.
     {"final", "position", "albedo", "normal", "pbr", "depth", "shadow-map", "cascades", "visibility"},
     {{"fxaa", "anti-alias the final image with FXAA (F toggles it in the window)"},

@@ -25,7 +25,8 @@ struct PulledDrawConstants {
     VkDeviceAddress vertices;  // common::Vertex, 56 bytes
     float normalMatrix[9];     // column-major 3x3, packed
 };
-inline constexpr uint32_t kPulledVertexConstants = offsetof(PulledDrawConstants, normalMatrix) + 9 * sizeof(float);
+inline constexpr uint32_t kPulledVertexConstants =
+    offsetof(PulledDrawConstants, normalMatrix) + 9 * sizeof(float);
 static_assert(offsetof(PulledDrawConstants, indices) == 64 && kPulledVertexConstants == 116);
 // The fragment stage's material index: chapter-15's and chapter-16's fragment shaders are compiled
 // for chapter-18 with DRAW_MATERIAL_OFFSET=116 (CMakeLists.txt).

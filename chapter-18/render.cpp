@@ -26,9 +26,9 @@ Render createRender(common::RenderContext& c, const common::Scene& scene, common
                                        .deviceAddresses = true});
     // The skinning shader reads the bind pose, the influences and the palette and writes the posed
     // vertices through the addresses each dispatch pushes: no descriptor sets.
-    r.skinningPass = createSkinningPass(c.device, c.pipelineCache.handle, r.gpuScene, scene, models,
-                                        c.framesInFlight,
-                                        {.shader = "chapter-18/skin.comp", .deviceAddresses = true});
+    r.skinningPass =
+        createSkinningPass(c.device, c.pipelineCache.handle, r.gpuScene, scene, models, c.framesInFlight,
+                           {.shader = "chapter-18/skin.comp", .deviceAddresses = true});
     // The book's G-buffer keeps world positions in 16-bit floats: a scene within +-65504.
     common::checkPositionRange(kBookGBuffer.formats, r.gpuScene.boundsMin, r.gpuScene.boundsMax,
                                common::utf8(options.scene.empty() ? options.model : options.scene));
@@ -42,10 +42,9 @@ Render createRender(common::RenderContext& c, const common::Scene& scene, common
     bool generic = common::genericPipelines(options);
     r.shadow = shadowOptions(options, c.device);
     double start = common::millisecondsSinceStart();
-    r.scenePass =
-        createScenePass(c.device, c.pipelineCache.handle, c.target.extent, r.gpuScene, c.framesInFlight,
-                        kBookGBuffer, {"chapter-18/scene.vert", "chapter-18/scene-pulled.frag"}, generic,
-                        kPulledMeshes);
+    r.scenePass = createScenePass(
+        c.device, c.pipelineCache.handle, c.target.extent, r.gpuScene, c.framesInFlight, kBookGBuffer,
+        {"chapter-18/scene.vert", "chapter-18/scene-pulled.frag"}, generic, kPulledMeshes);
     r.shadowPass = createShadowPass(c.device, c.pipelineCache.handle, r.shadow.settings, r.shadow.redraw,
                                     r.scenePass, r.gpuScene, c.framesInFlight,
                                     {.vertex = "chapter-18/shadow.vert",

@@ -13,6 +13,7 @@
 #include "chapter-16/cascades.hpp"
 #include "chapter-16/shadow_controls.hpp"
 #include "chapter-16/shadow_pass.hpp"
+#include "chapter-17/skinning_pass.hpp"
 #include "common/app/cli.hpp"
 #include "common/app/frame_loop.hpp"
 #include "common/model/load_model.hpp"
@@ -20,7 +21,6 @@
 #include "common/scene/camera.hpp"
 #include "common/scene/gpu_scene.hpp"
 #include "common/scene/scene.hpp"
-#include "chapter-17/skinning_pass.hpp"
 
 struct Render {
     common::GpuScene gpuScene;

@@ -441,16 +441,16 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     VkBufferUsageFlags usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
                     if (wanted.skins && !mesh.skin.empty()) usage |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
                     const VkBufferUsageFlags addressed =
-                        wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) : 0u;
+                        wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+                                               : 0u;
                     usage |= addressed;
                     out.vertices =
                         uploadStaged(device, batch, vertices.data(), vertices.size() * sizeof(Vertex), usage,
                                      meshName(instance.file, gpu.meshes.size(), "vertices"));
-                    out.indices =
-                        uploadStaged(device, batch, mesh.indices.data(),
-                                     mesh.indices.size() * sizeof(uint32_t),
-                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT | addressed,
-                                     meshName(instance.file, gpu.meshes.size(), "indices"));
+                    out.indices = uploadStaged(device, batch, mesh.indices.data(),
+                                               mesh.indices.size() * sizeof(uint32_t),
+                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT | addressed,
+                                               meshName(instance.file, gpu.meshes.size(), "indices"));
                     out.indexCount = uint32_t(mesh.indices.size());
                     out.boundsMin = out.boundsMax = vertices.front().position;
                     for (const Vertex& v : vertices) {
@@ -468,8 +468,9 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     out.indices =
                         uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                                         (wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
-                                                                 : 0u),
+                                         (wanted.deviceAddresses
+                                              ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+                                              : 0u),
                                      meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
                     gpu.meshes.push_back(out);
                 }

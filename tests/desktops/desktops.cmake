@@ -228,10 +228,17 @@ endforeach()
 
 # A device without the scalarBlockLayout feature: chapters 15 and 16 and the lab refused in one
 # line naming it.
-foreach(chapter 15 15-lab 16 17)
+foreach(chapter 15 15-lab 16 17 18)
     desktop_device_test(desktop.no-scalar-block-layout.chapter-${chapter} VKBOOK_HIDE=scalarBlockLayout
         COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the scalarBlockLayout feature" ONE_LINE_STDERR)
+endforeach()
+# chapter-18 on a device without buffer device addresses or 64-bit integers in shaders: refused in
+# one line naming the feature, before anything is made.
+foreach(feature bufferDeviceAddress shaderInt64)
+    desktop_device_test(desktop.no-${feature}.chapter-18 VKBOOK_HIDE=${feature}
+        COMMAND $<TARGET_FILE:chapter-18> --device llvmpipe --validation --headless
+        EXPECT_EXIT 1 EXPECT_STDERR "it lacks the ${feature} feature" ONE_LINE_STDERR)
 endforeach()
 # Headless on a device that cannot render to B8G8R8A8_SRGB: R8G8B8A8_SRGB, the same image.
 desktop_image_test(desktop.no-bgra-srgb.chapter-06 ${GOLDEN}/chapter-06.png

@@ -23,7 +23,7 @@
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...),
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
 //                                   among a surface's formats) and the features scalarBlockLayout,
-//                                   geometryShader and depthClamp.
+//                                   bufferDeviceAddress, shaderInt64, geometryShader and depthClamp.
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
 //   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
@@ -291,7 +291,8 @@ Profile parseProfile() {
         p.maxAllocations = uint32_t(std::strtoul(count, nullptr, 10));
     for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE"))) {
         if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout" &&
-            name != "geometryShader" && name != "depthClamp")
+            name != "geometryShader" && name != "depthClamp" && name != "bufferDeviceAddress" &&
+            name != "shaderInt64")
             std::fprintf(stderr,
                          "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
                          "nor a format it knows\n",
@@ -859,6 +860,7 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceMemoryProperties2(VkPhysicalDevice p
 void hideCoreFeatures(VkPhysicalDeviceFeatures& features) {
     if (hidden("geometryShader")) features.geometryShader = VK_FALSE;
     if (hidden("depthClamp")) features.depthClamp = VK_FALSE;
+    if (hidden("shaderInt64")) features.shaderInt64 = VK_FALSE;
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures(VkPhysicalDevice physical,
@@ -880,6 +882,14 @@ VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures2(VkPhysicalDevice physical,
         reinterpret_cast<VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT*>(maintenance1.found)
             ->swapchainMaintenance1 = profile().maintenance1 ? VK_TRUE : VK_FALSE;
     hideCoreFeatures(features->features);
+    if (hidden("bufferDeviceAddress"))
+        for (auto* s = reinterpret_cast<VkBaseOutStructure*>(features); s; s = s->pNext) {
+            if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES)
+                reinterpret_cast<VkPhysicalDeviceVulkan12Features*>(s)->bufferDeviceAddress = VK_FALSE;
+            if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES)
+                reinterpret_cast<VkPhysicalDeviceBufferDeviceAddressFeatures*>(s)->bufferDeviceAddress =
+                    VK_FALSE;
+        }
     if (hidden("scalarBlockLayout"))
         for (auto* s = reinterpret_cast<VkBaseOutStructure*>(features); s; s = s->pNext) {
             if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES)
