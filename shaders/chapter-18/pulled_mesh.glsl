@@ -27,7 +27,12 @@ layout(push_constant, scalar) uniform DrawBlock {
     mat3 normalMatrix;  // packed columns: the inverse-transpose of the model matrix
 } draw;
 
+// The index of the vertex this invocation shades: gl_VertexIndex runs over 0 .. the draw's count - 1
+// (tests/chapters/pointer_test.cpp reads through the same block from a compute shader).
+#ifndef PULLED_INDEX
+#define PULLED_INDEX gl_VertexIndex
+#endif
 Vertex pulledVertex() {
-    return draw.vertexBuffer.vertices[draw.indexBuffer.indices[gl_VertexIndex]];
+    return draw.vertexBuffer.vertices[draw.indexBuffer.indices[PULLED_INDEX]];
 }
 //< pulled-mesh

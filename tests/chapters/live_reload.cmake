@@ -218,3 +218,10 @@ live_test(live-reload.chapter-17.skin-edit edit chapter-17/skin.comp COMMAND $<T
 set_property(TEST live-reload.chapter-17.skin-edit APPEND PROPERTY ENVIRONMENT
              XDG_DATA_HOME=${FAULT_LAYER_DIR} VKBOOK_FAULT_LAYER=1 EXPECT_PIPELINES=2
              "GOOD=    skinned[index].position.y += 0.5\;  // live_reload.sh")
+# chapter-18: its pulled scene vertex shader edited (every normal made to point up): the scene
+# pipelines, made without vertex input, made again from it; the image is the one the edited shader
+# gives from the start.
+live_test(live-reload.chapter-18.pulled-vertex-edit edit chapter-18/scene.vert COMMAND $<TARGET_FILE:chapter-18>
+    --device llvmpipe --animation-time 0.4)
+set_property(TEST live-reload.chapter-18.pulled-vertex-edit APPEND PROPERTY ENVIRONMENT
+             "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")
