@@ -271,7 +271,7 @@ void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, con
 
 //> record-scene
 void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene, uint32_t frame,
-                     glm::vec3 cameraPosition) {
+                     glm::vec3 cameraPosition, const SceneDrawsRecorder& draws) {
     common::gbufferRenderInit(cmd, pass.gbuffer);
     common::beginGBufferRendering(cmd, pass.gbuffer, pass.layout->reversedZ ? 0.0f : 1.0f);
     VkExtent2D extent = pass.gbuffer.depth.extent;
@@ -282,7 +282,10 @@ void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScen
     std::array<VkDescriptorSet, 2> shared{pass.cameras[frame].set, pass.materialsSet};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipelines.layout, 0, 2, shared.data(),
                             0, nullptr);
-    recordSceneDraws(cmd, pass, pass.pipelines, scene, cameraPosition);
+    if (draws)
+        draws(cmd);
+    else
+        recordSceneDraws(cmd, pass, pass.pipelines, scene, cameraPosition);
     common::vk13.CmdEndRendering(cmd);
     common::gbufferRenderFinish(cmd, pass.gbuffer);
 }

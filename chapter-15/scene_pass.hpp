@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -109,9 +110,12 @@ ScenePass createScenePass(const common::Device& device, VkPipelineCache cache, V
                           bool genericPipelines = false, const MeshDrawing& drawing = {});
 void resizeScenePass(const common::Device& device, ScenePass& pass, VkExtent2D extent);
 void setCamera(ScenePass& pass, uint32_t frame, const glm::mat4& projection, const glm::mat4& view);
+// What records the scene's draws inside the pass's rendering (sets 0 and 1 bound): chapter-15's
+// recordSceneDraws by default; chapter-19 draws indirectly.
+using SceneDrawsRecorder = std::function<void(VkCommandBuffer cmd)>;
 // Opaque draws nearest first (so hidden fragments fail the depth test before shading), then cut-outs.
 void recordScenePass(VkCommandBuffer cmd, ScenePass& pass, const common::GpuScene& scene, uint32_t frame,
-                     glm::vec3 cameraPosition);
+                     glm::vec3 cameraPosition, const SceneDrawsRecorder& draws = {});
 void destroyScenePass(const common::Device& device, ScenePass& pass);
 
 // The scene pass's pipelines for a target and shaders (createScenePass makes the G-buffer's), and

@@ -273,7 +273,8 @@ namespace {
 void recordShadowRendering(VkCommandBuffer cmd, const ShadowPass& pass, const ScenePass& scenePass,
                            const common::GpuScene& scene, uint32_t frame, const common::Image& moments,
                            VkImageLayout before, const std::vector<std::pair<uint32_t, TexelRect>>& clears,
-                           const std::vector<ShadowBatch>& batches, bool clearBatches) {
+                           const std::vector<ShadowBatch>& batches, bool clearBatches,
+                           const ShadowDrawsRecorder& draws) {
     VkPipelineStageFlags2 depthStages =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     // The moments to ATTACHMENT_OPTIMAL once earlier frames' light passes have read them, keeping
@@ -336,6 +337,10 @@ void recordShadowRendering(VkCommandBuffer cmd, const ShadowPass& pass, const Sc
         const TexelRect& r = batch.scissor;
         VkRect2D scissor{{r.x0, r.y0}, {uint32_t(r.x1 - r.x0), uint32_t(r.y1 - r.y0)}};
         vkCmdSetScissor(cmd, 0, 1, &scissor);
+        if (draws) {
+            draws(cmd, batch.draws, bound);
+            continue;
+        }
         for (const ShadowDraw& draw : batch.draws)
             recordShadowDraw(cmd, pass.pipelineLayout, pass.opaque, pass.cutout, bound, scenePass, scene,
                              draw.draw, draw.layers);
@@ -355,14 +360,14 @@ void recordShadowRendering(VkCommandBuffer cmd, const ShadowPass& pass, const Sc
 
 //> record-shadow
 void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
-                      const common::GpuScene& scene, uint32_t frame) {
+                      const common::GpuScene& scene, uint32_t frame, const ShadowDrawsRecorder& draws) {
     const ShadowPlan& plan = pass.plan;
     // The cached map: the layers and bands this frame draws (nothing when nothing changed).
     if (!plan.cached.empty()) {
         recordShadowRendering(
             cmd, pass, scenePass, scene, frame, pass.moments,
             pass.momentsDefined ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, {},
-            plan.cached, true);
+            plan.cached, true, draws);
         pass.momentsDefined = true;
     }
     // The moving casters' map: cleared where it held casters, then this frame's moving casters.
@@ -378,7 +383,7 @@ void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& sc
     }
     recordShadowRendering(cmd, pass, scenePass, scene, frame, pass.movingMoments,
                           pass.movingDefined ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
-                          clears, plan.moving, false);
+                          clears, plan.moving, false, draws);
     pass.movingDefined = true;
 }
 //< record-shadow

@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -118,8 +119,13 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
 bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
                     const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
                     const common::GpuScene& scene);
+// What records a batch's draws inside the shadow rendering (viewport, scissor and sets 0 and 1 set;
+// `bound` the pipeline bound last): one recordShadowDraw each by default; chapter-19 draws them
+// indirectly.
+using ShadowDrawsRecorder =
+    std::function<void(VkCommandBuffer cmd, const std::vector<ShadowDraw>& draws, VkPipeline& bound)>;
 void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
-                      const common::GpuScene& scene, uint32_t frame);
+                      const common::GpuScene& scene, uint32_t frame, const ShadowDrawsRecorder& draws = {});
 void destroyShadowPass(const common::Device& device, ShadowPass& pass);
 // Every layer drawn whole next frame (a resize; a change of --shadow-redraw in the overlay).
 void invalidateShadowCache(ShadowPass& pass, ShadowRedraw redraw);

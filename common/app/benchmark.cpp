@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -88,6 +89,12 @@ void addCpuFrame(FrameStats& stats, uint32_t frame, double ms) {
     if (frame >= stats.warmup) stats.cpuMs.push_back(ms);
 }
 
+void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs) {
+    if (frame < stats.warmup) return;
+    stats.updateMs.push_back(updateMs);
+    stats.recordMs.push_back(recordMs);
+}
+
 namespace {
 
 struct Summary {
@@ -126,6 +133,13 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     Summary cpu = summarize(stats.cpuMs);
     std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", "CPU frame", cpu.median, cpu.p95, cpu.min, cpu.max);
     report["cpu_frame_ms"] = toJson(cpu, stats.cpuMs);
+    for (const auto& [name, key, values] : {std::tuple{"CPU update", "cpu_update_ms", &stats.updateMs},
+                                            std::tuple{"CPU record", "cpu_record_ms", &stats.recordMs}}) {
+        if (values->empty()) continue;
+        Summary step = summarize(*values);
+        std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", name, step.median, step.p95, step.min, step.max);
+        report[key] = toJson(step, *values);
+    }
     bool timestamps = !stats.gpuMs.empty();
     report["gpu_timestamps"] = timestamps;
     if (timestamps) {

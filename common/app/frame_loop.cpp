@@ -130,7 +130,9 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
         }
         if (c.gui.enabled) updateGuiBuffers(c.device, c.guiPass, slot, overlay);
 
+        double updateStart = millisecondsSinceStart();
         steps.update(frame, slot);
+        double updateMs = millisecondsSinceStart() - updateStart;
 
         // The frame's passes into one command buffer, each labelled for graphics debuggers and
         // timed for --benchmark; the overlay last.
@@ -141,7 +143,9 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
         timeFrameStart(c.run, sync.commandBuffer, slot, frame);
         FrameCommands commands{
             .cmd = sync.commandBuffer, .slot = slot, .frame = frame, .imageIndex = imageIndex};
+        double recordStart = millisecondsSinceStart();
         steps.record(commands);
+        addCpuSteps(c.run.stats, frame, updateMs, millisecondsSinceStart() - recordStart);
         if (steps.acquireLate) {
             // The off-screen passes go to the GPU now, with nothing to wait for; the image is
             // acquired only for the passes that write it, recorded into a second command buffer.

@@ -133,6 +133,10 @@ std::string missingFeatures(VkPhysicalDevice physical, uint32_t api, const Devic
         return "it lacks the bufferDeviceAddress feature";
     if (wanted.bufferDeviceAddress && !features.features.shaderInt64)
         return "it lacks the shaderInt64 feature";
+    if (wanted.indirectDrawing && !features.features.multiDrawIndirect)
+        return "it lacks the multiDrawIndirect feature";
+    if (wanted.indirectDrawing && !features.features.drawIndirectFirstInstance)
+        return "it lacks the drawIndirectFirstInstance feature";
     if (wanted.geometryShader && !features.features.geometryShader)
         return "it lacks the geometryShader feature";
     if (wanted.multiview && !chain.multiview.multiview) return "it lacks the multiview feature";
@@ -305,6 +309,8 @@ Device createDevice(const Instance& instance, VkSurfaceKHR surface, std::string_
     coreFeatures.vertexPipelineStoresAndAtomics = features.vertexStores ? VK_TRUE : VK_FALSE;
     coreFeatures.occlusionQueryPrecise = features.preciseOcclusion ? VK_TRUE : VK_FALSE;
     coreFeatures.shaderInt64 = features.bufferDeviceAddress ? VK_TRUE : VK_FALSE;
+    coreFeatures.multiDrawIndirect = features.indirectDrawing ? VK_TRUE : VK_FALSE;
+    coreFeatures.drawIndirectFirstInstance = features.indirectDrawing ? VK_TRUE : VK_FALSE;
     device.depthClamp = features.depthClampWhereAvailable && available.depthClamp;
     coreFeatures.depthClamp = device.depthClamp ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo createInfo{

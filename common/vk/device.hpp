@@ -59,6 +59,9 @@ struct DeviceFeatures {
     bool preciseOcclusion = false;  // chapter-15-lab's skinning study: exact occlusion query counts
     // chapter-18 on: shaders read buffers through 64-bit pointers (core 1.2, shaderInt64 core 1.0).
     bool bufferDeviceAddress = false;
+    // chapter-19 on: a vkCmdDrawIndirect of many commands (multiDrawIndirect), each with its own
+    // firstInstance (drawIndirectFirstInstance); both core 1.0 features.
+    bool indirectDrawing = false;
 };
 
 // The commands of dynamic rendering and synchronization2. A Vulkan 1.3 device has them in its

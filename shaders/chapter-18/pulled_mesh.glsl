@@ -1,24 +1,9 @@
 // chapter-18: the draw's mesh, read through the pointers it pushes (chapter-18/mesh_pulling.hpp):
 // index gl_VertexIndex of the index buffer, then that vertex of the vertex buffer.
-#extension GL_EXT_buffer_reference : require
-#extension GL_EXT_scalar_block_layout : require
+#extension GL_GOOGLE_include_directive : require
+#include "mesh_pointers.glsl"  // Vertex, IndexBuffer, VertexBuffer
 
 //> pulled-mesh
-// common::Vertex, 56 bytes, as chapter-15's vertex input reads it.
-struct Vertex {
-    vec3 position;
-    vec3 normal;
-    vec3 tangent;
-    vec3 bitangent;
-    vec2 uv;
-};
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer IndexBuffer {
-    uint indices[];
-};
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer VertexBuffer {
-    Vertex vertices[];
-};
-
 // PulledDrawConstants: 116 bytes; the fragment stage's material index follows at 116.
 layout(push_constant, scalar) uniform DrawBlock {
     mat4 model;

@@ -23,7 +23,8 @@
 //   VKBOOK_HIDE=NAME[,NAME...]      hides device extensions (VK_KHR_dynamic_rendering, ...),
 //                                   formats (D32_SFLOAT, B8G8R8A8_SRGB, ... : no features, and not
 //                                   among a surface's formats) and the features scalarBlockLayout,
-//                                   bufferDeviceAddress, shaderInt64, geometryShader and depthClamp.
+//                                   bufferDeviceAddress, shaderInt64, multiDrawIndirect,
+//                                   drawIndirectFirstInstance, geometryShader and depthClamp.
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
 //   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
@@ -292,7 +293,7 @@ Profile parseProfile() {
     for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE"))) {
         if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout" &&
             name != "geometryShader" && name != "depthClamp" && name != "bufferDeviceAddress" &&
-            name != "shaderInt64")
+            name != "shaderInt64" && name != "multiDrawIndirect" && name != "drawIndirectFirstInstance")
             std::fprintf(stderr,
                          "VK_LAYER_VKBOOK_fault_injection: VKBOOK_HIDE names '%s', neither an extension "
                          "nor a format it knows\n",
@@ -861,6 +862,8 @@ void hideCoreFeatures(VkPhysicalDeviceFeatures& features) {
     if (hidden("geometryShader")) features.geometryShader = VK_FALSE;
     if (hidden("depthClamp")) features.depthClamp = VK_FALSE;
     if (hidden("shaderInt64")) features.shaderInt64 = VK_FALSE;
+    if (hidden("multiDrawIndirect")) features.multiDrawIndirect = VK_FALSE;
+    if (hidden("drawIndirectFirstInstance")) features.drawIndirectFirstInstance = VK_FALSE;
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceFeatures(VkPhysicalDevice physical,
