@@ -30,35 +30,6 @@ void reserve(const common::Device& device, GrowingBuffer& growing, VkDeviceSize 
 constexpr VkBufferUsageFlags kAddressed =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
 
-// Commands for `draws` (draw indices into the scene, each with its cascades), in the order given:
-// one command per run of draws of one mesh and material, its instances theirs; a group per run of
-// one material. Appended to the slot's buffers at the counts they hold.
-void writeCommands(FrameBuffers& frame, const common::GpuScene& scene,
-                   const std::vector<std::pair<uint32_t, uint32_t>>& draws,
-                   std::vector<IndirectGroup>& groups) {
-    auto* instances = static_cast<InstanceData*>(frame.instances.buffer.mapped);
-    auto* commands = static_cast<VkDrawIndirectCommand*>(frame.commands.buffer.mapped);
-    uint32_t lastMesh = UINT32_MAX, lastMaterial = UINT32_MAX;
-    for (const auto& [drawIndex, layers] : draws) {
-        const common::Draw& draw = scene.draws[drawIndex];
-        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
-        if (draw.material != lastMaterial) {
-            groups.push_back(
-                {draw.material, scene.materials[draw.material].alphaTested, frame.commandCount, 0});
-            lastMesh = UINT32_MAX;
-        }
-        if (draw.mesh != lastMesh) {
-            // A vertex per index, pulled by the shader: vertexCount is the index count.
-            commands[frame.commandCount++] = {mesh.indexCount, 0, 0, frame.instanceCount};
-            ++groups.back().commandCount;
-        }
-        ++commands[frame.commandCount - 1].instanceCount;
-        instances[frame.instanceCount++] = {drawIndex, layers, mesh.indices.address, mesh.vertices.address};
-        lastMesh = draw.mesh;
-        lastMaterial = draw.material;
-    }
-}
-
 // vkCmdDrawIndirect for each group: its pipeline (when it changes) and its material's textures
 // and index bound first; at most maxDrawIndirectCount commands a call.
 void drawGroups(VkCommandBuffer cmd, const GlobalBuffers& buffers, const FrameBuffers& frame,
@@ -89,6 +60,43 @@ void pushAddresses(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameBuff
 
 }  // namespace
 
+std::vector<uint32_t> sceneDrawOrder(const common::GpuScene& scene, const std::vector<uint32_t>& classOf) {
+    auto key = [&](uint32_t d) {
+        const common::Draw& draw = scene.draws[d];
+        return std::tuple(scene.materials[draw.material].alphaTested, classOf[draw.material], draw.material,
+                          draw.mesh, d);
+    };
+    std::vector<uint32_t> order(scene.draws.size());
+    for (uint32_t d = 0; d < order.size(); ++d) order[d] = d;
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    return order;
+}
+
+//> append-commands
+void appendCommands(const common::GpuScene& scene, const std::vector<std::pair<uint32_t, uint32_t>>& draws,
+                    InstanceData* instances, uint32_t& instanceCount, VkDrawIndirectCommand* commands,
+                    uint32_t& commandCount, std::vector<IndirectGroup>& groups) {
+    uint32_t lastMesh = UINT32_MAX, lastMaterial = UINT32_MAX;
+    for (const auto& [drawIndex, layers] : draws) {
+        const common::Draw& draw = scene.draws[drawIndex];
+        const common::GpuMesh& mesh = scene.meshes[draw.mesh];
+        if (draw.material != lastMaterial) {
+            groups.push_back({draw.material, scene.materials[draw.material].alphaTested, commandCount, 0});
+            lastMesh = UINT32_MAX;
+        }
+        if (draw.mesh != lastMesh) {
+            // A vertex per index, pulled by the shader: vertexCount is the index count.
+            commands[commandCount++] = {mesh.indexCount, 0, 0, instanceCount};
+            ++groups.back().commandCount;
+        }
+        ++commands[commandCount - 1].instanceCount;
+        instances[instanceCount++] = {drawIndex, layers, mesh.indices.address, mesh.vertices.address};
+        lastMesh = draw.mesh;
+        lastMaterial = draw.material;
+    }
+}
+//< append-commands
+
 GlobalBuffers createGlobalBuffers(const common::Device& device, uint32_t framesInFlight) {
     GlobalBuffers buffers;
     buffers.frames.resize(framesInFlight);
@@ -102,21 +110,10 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
                          const common::GpuScene& scene, const ScenePass& scenePass, uint64_t shadowDraws) {
     FrameBuffers& frame = buffers.frames[slot];
     const size_t draws = scene.draws.size();
-    // The order the scene pass draws in: opaque classes before cut-outs, then by class, material and
-    // mesh, so that each material is one run and each mesh in it one command. Made once: draws keep
-    // their mesh and material (only their matrices move).
-    if (buffers.sceneOrder.size() != draws) {
-        const auto& ofMaterial = scenePass.pipelines.materialClasses.ofMaterial;
-        auto key = [&](uint32_t d) {
-            const common::Draw& draw = scene.draws[d];
-            return std::tuple(scene.materials[draw.material].alphaTested, ofMaterial[draw.material],
-                              draw.material, draw.mesh, d);
-        };
-        buffers.sceneOrder.resize(draws);
-        for (uint32_t d = 0; d < draws; ++d) buffers.sceneOrder[d] = d;
-        std::sort(buffers.sceneOrder.begin(), buffers.sceneOrder.end(),
-                  [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-    }
+    // The order the scene pass draws in (sceneDrawOrder), made once: draws keep their mesh and
+    // material (only their matrices move).
+    if (buffers.sceneOrder.size() != draws)
+        buffers.sceneOrder = sceneDrawOrder(scene, scenePass.pipelines.materialClasses.ofMaterial);
     // Room for the scene's instances and commands and the shadow plan's; matrices for every draw.
     const uint64_t instances = draws + shadowDraws;
     if (instances > UINT32_MAX) throw common::Failure("more instances in a frame than 2^32");
@@ -143,7 +140,9 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
     std::vector<std::pair<uint32_t, uint32_t>> order;
     order.reserve(draws);
     for (uint32_t d : buffers.sceneOrder) order.push_back({d, 0u});
-    writeCommands(frame, scene, order, buffers.sceneGroups);
+    appendCommands(scene, order, static_cast<InstanceData*>(frame.instances.buffer.mapped),
+                   frame.instanceCount, static_cast<VkDrawIndirectCommand*>(frame.commands.buffer.mapped),
+                   frame.commandCount, buffers.sceneGroups);
     buffers.sceneCommands = frame.commandCount;
     buffers.sceneInstances = frame.instanceCount;
 }
@@ -187,7 +186,9 @@ void recordIndirectShadowBatch(VkCommandBuffer cmd, GlobalBuffers& buffers, uint
     });
     const uint32_t firstCommand = frame.commandCount, firstInstance = frame.instanceCount;
     std::vector<IndirectGroup> groups;
-    writeCommands(frame, scene, order, groups);
+    appendCommands(scene, order, static_cast<InstanceData*>(frame.instances.buffer.mapped),
+                   frame.instanceCount, static_cast<VkDrawIndirectCommand*>(frame.commands.buffer.mapped),
+                   frame.commandCount, groups);
     buffers.shadowCommands += frame.commandCount - firstCommand;
     buffers.shadowInstances += frame.instanceCount - firstInstance;
     pushAddresses(cmd, shadowPass.pipelineLayout, frame);

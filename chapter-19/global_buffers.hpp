@@ -76,6 +76,17 @@ struct GlobalBuffers {
     uint64_t grown = 0;  // buffers made or made larger since the start
 };
 
+// The order the scene pass draws in: opaque materials' classes before cut-outs', then by class,
+// material and mesh (`classOf`: each material's pipeline class), so that each material is one run
+// and each mesh in it one command.
+std::vector<uint32_t> sceneDrawOrder(const common::GpuScene& scene, const std::vector<uint32_t>& classOf);
+// Commands for `draws` (draw index, cascades), in the order given, appended at `instanceCount` and
+// `commandCount` of the two arrays: one command per run of draws of one mesh and material (its
+// vertexCount the mesh's index count, its instances the run's), one group per run of one material.
+void appendCommands(const common::GpuScene& scene, const std::vector<std::pair<uint32_t, uint32_t>>& draws,
+                    InstanceData* instances, uint32_t& instanceCount, VkDrawIndirectCommand* commands,
+                    uint32_t& commandCount, std::vector<IndirectGroup>& groups);
+
 GlobalBuffers createGlobalBuffers(const common::Device& device, uint32_t framesInFlight);
 // Frame slot `slot`'s matrices, the scene pass's instances and commands (its groups in
 // `sceneGroups`), and room for `shadowDraws` more instances and commands (the shadow plan's draws).

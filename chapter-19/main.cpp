@@ -267,7 +267,6 @@ void report(Chapter& c, const common::Options& options) {
     info.push_back({"light_pipeline", describeLightKinds(c.render.lightPass.kinds)});
     info.push_back({"skinning", describeSkinning(c.render.skinningPass)});
     info.push_back({"indirect", describeGlobalBuffers(c.render.globalBuffers)});
-    info.push_back({"indirect", describeGlobalBuffers(c.render.globalBuffers)});
     addShadowInfo(info, c.context.device, c.render.cascades, c.render.shadowPass.cache, c.firstFrameCost);
     common::reportChapterRun(kChapter, c.context, info, c.scene, c.camera, c.lightControls);
     printShadowReport(kChapter.name, c.render.shadowPass.cache, c.render.shadow.settings.count,

@@ -225,3 +225,9 @@ live_test(live-reload.chapter-18.pulled-vertex-edit edit chapter-18/scene.vert C
     --device llvmpipe --animation-time 0.4)
 set_property(TEST live-reload.chapter-18.pulled-vertex-edit APPEND PROPERTY ENVIRONMENT
              "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")
+# chapter-19: its indirect scene vertex shader edited: the pipelines made again, the indirect draws
+# drawing with them.
+live_test(live-reload.chapter-19.indirect-vertex-edit edit chapter-19/scene.vert COMMAND $<TARGET_FILE:chapter-19>
+    --device llvmpipe --animation-time 0.4)
+set_property(TEST live-reload.chapter-19.indirect-vertex-edit APPEND PROPERTY ENVIRONMENT
+             "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")

@@ -228,7 +228,7 @@ endforeach()
 
 # A device without the scalarBlockLayout feature: chapters 15 and 16 and the lab refused in one
 # line naming it.
-foreach(chapter 15 15-lab 16 17 18)
+foreach(chapter 15 15-lab 16 17 18 19)
     desktop_device_test(desktop.no-scalar-block-layout.chapter-${chapter} VKBOOK_HIDE=scalarBlockLayout
         COMMAND $<TARGET_FILE:chapter-${chapter}> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the scalarBlockLayout feature" ONE_LINE_STDERR)
@@ -238,6 +238,13 @@ endforeach()
 foreach(feature bufferDeviceAddress shaderInt64)
     desktop_device_test(desktop.no-${feature}.chapter-18 VKBOOK_HIDE=${feature}
         COMMAND $<TARGET_FILE:chapter-18> --device llvmpipe --validation --headless
+        EXPECT_EXIT 1 EXPECT_STDERR "it lacks the ${feature} feature" ONE_LINE_STDERR)
+endforeach()
+# chapter-19 on a device that cannot draw many indirect commands at once, or give each its first
+# instance: refused in one line naming the feature.
+foreach(feature multiDrawIndirect drawIndirectFirstInstance)
+    desktop_device_test(desktop.no-${feature}.chapter-19 VKBOOK_HIDE=${feature}
+        COMMAND $<TARGET_FILE:chapter-19> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the ${feature} feature" ONE_LINE_STDERR)
 endforeach()
 # Headless on a device that cannot render to B8G8R8A8_SRGB: R8G8B8A8_SRGB, the same image.

@@ -85,6 +85,13 @@ windows_test(windows.chapter-18-final WORKDIR /
     EXPECT_STDOUT "skinning check: 1241 vertices in 2 meshes.*guards intact" QUIET_STDERR)
 windows_image(windows.chapter-18-final ${WIN_OUT}/chapter-18-final.png --size 640 360
     --golden ${GOLDEN}/chapter-17-final.png ${GOLDEN_MATCH})
+# chapter-19: the same figures drawn indirectly.
+windows_test(windows.chapter-19-final WORKDIR /
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-19> --device llvmpipe --validation --headless ${SIZE}
+            --animation-time 0.4 --check-skinning --screenshot ${WIN_OUT}/chapter-19-final.png
+    EXPECT_STDOUT "skinning check: 1241 vertices in 2 meshes.*guards intact" QUIET_STDERR)
+windows_image(windows.chapter-19-final ${WIN_OUT}/chapter-19-final.png --size 640 360
+    --golden ${GOLDEN}/chapter-17-final.png ${GOLDEN_MATCH})
 # The default courtyard as glTF (tinygltf, fetched for this build): the OBJ form's golden images.
 foreach(number 10 14 15)
     windows_test(windows.chapter-${number}-gltf WORKDIR /
@@ -130,7 +137,7 @@ set_tests_properties(windows.chapter-15-concurrent-runs PROPERTIES LABELS window
                      TIMEOUT 180 FIXTURES_REQUIRED "${WIN_FIXTURES}")
 
 # Bad command lines: exit 2 and one line naming the problem, as on Linux.
-foreach(number 06 10 14 15 16 17 18)
+foreach(number 06 10 14 15 16 17 18 19)
     windows_test(windows.chapter-${number}-bad-option
         COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-${number}> --headless --frames-in-flight 4
         EXPECT_EXIT 2 EXPECT_STDERR "--frames-in-flight" ONE_LINE_STDERR)

@@ -159,7 +159,7 @@ set_tests_properties(extremes.warnings-capped PROPERTIES FIXTURES_REQUIRED gltf-
 set(MIRRORS ${EXT}/mirrors)
 # (Chapters 15, 16 and the lab: chapters 10 and 14 cull no face and read no gl_FrontFacing, so
 # their pictures do not depend on the winding.)
-foreach(chapter 15 16 15-lab)
+foreach(chapter 15 16 15-lab 18 19)
     foreach(scene mirror_plain mirror_scene mirror_node mirror_twice mirror_turned mirror_book_plain mirror_book_scene)
         extreme_drawn(${scene}-${chapter} ${chapter} "draws" --scene ${MIRRORS}/${scene}.json
             --screenshot ${TEST_OUT}/extremes-${scene}-${chapter}.png)
