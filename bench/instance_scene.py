@@ -13,8 +13,8 @@ import math
 import pathlib
 import sys
 
-if len(sys.argv) != 4 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 99999:
-    sys.exit("usage: instance_scene.py N OUT.json DEFAULT_SCENE_DIR   (N from 1 to 99999)")
+if len(sys.argv) != 4 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 100000:
+    sys.exit("usage: instance_scene.py N OUT.json DEFAULT_SCENE_DIR   (N from 1 to 100000)")
 n = int(sys.argv[1])
 out = pathlib.Path(sys.argv[2])
 cube = (pathlib.Path(sys.argv[3]) / "cube.obj").resolve()

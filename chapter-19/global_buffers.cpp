@@ -2,12 +2,13 @@
 #include "global_buffers.hpp"
 
 #include <algorithm>
-#include <cstring>
+#include <map>
 #include <string>
 #include <tuple>
 
 #include "chapter-15/gpu_types.hpp"
 #include "common/core/check.hpp"
+#include "common/vk/commands.hpp"
 
 namespace {
 
@@ -30,12 +31,12 @@ void reserve(const common::Device& device, GrowingBuffer& growing, VkDeviceSize 
 constexpr VkBufferUsageFlags kAddressed =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
 
-// vkCmdDrawIndirect for each group: its pipeline (when it changes) and its material's textures
-// and index bound first; at most maxDrawIndirectCount commands a call.
+// One indirect draw per group (more past maxDrawIndirectCount), its pipeline (when it changes), its
+// material's textures and index bound first.
+template <typename PipelineOf>
 void drawGroups(VkCommandBuffer cmd, const GlobalBuffers& buffers, const FrameBuffers& frame,
                 const std::vector<IndirectGroup>& groups, VkPipelineLayout layout, const ScenePass& scenePass,
-                const std::function<VkPipeline(const IndirectGroup&)>& pipelineOf, VkPipeline& bound,
-                uint32_t& calls) {
+                PipelineOf pipelineOf, VkPipeline& bound, uint32_t& calls) {
     for (const IndirectGroup& group : groups) {
         VkPipeline pipeline = pipelineOf(group);
         if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
@@ -45,20 +46,70 @@ void drawGroups(VkCommandBuffer cmd, const GlobalBuffers& buffers, const FrameBu
                            sizeof(uint32_t), &group.material);
         for (uint32_t first = 0; first < group.commandCount; first += buffers.maxDrawIndirectCount) {
             uint32_t count = std::min(buffers.maxDrawIndirectCount, group.commandCount - first);
-            vkCmdDrawIndirect(cmd, frame.commands.buffer.handle,
-                              VkDeviceSize(group.firstCommand + first) * sizeof(VkDrawIndirectCommand), count,
-                              sizeof(VkDrawIndirectCommand));
+            vkCmdDrawIndexedIndirect(
+                cmd, frame.commands.buffer.handle,
+                VkDeviceSize(group.firstCommand + first) * sizeof(VkDrawIndexedIndirectCommand), count,
+                sizeof(VkDrawIndexedIndirectCommand));
             ++calls;
         }
     }
 }
 
-void pushAddresses(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameBuffers& frame) {
+// What every draw of a pass reads: the frame's instances and matrices (their addresses), and the
+// scene's index buffer.
+void bindFrame(VkCommandBuffer cmd, VkPipelineLayout layout, const GlobalBuffers& buffers,
+               const FrameBuffers& frame) {
     IndirectConstants constants{frame.instances.buffer.address, frame.matrices.buffer.address};
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(constants), &constants);
+    vkCmdBindIndexBuffer(cmd, buffers.indices.buffer.handle, 0, VK_INDEX_TYPE_UINT32);
+}
+
+void append(FrameBuffers& frame, const common::GpuScene& scene, const std::vector<uint32_t>& firstIndex,
+            const std::vector<std::pair<uint32_t, uint32_t>>& draws, std::vector<IndirectGroup>& groups) {
+    appendCommands(scene, firstIndex, draws, static_cast<InstanceData*>(frame.instances.buffer.mapped),
+                   frame.instanceCount,
+                   static_cast<VkDrawIndexedIndirectCommand*>(frame.commands.buffer.mapped),
+                   frame.commandCount, groups);
 }
 
 }  // namespace
+
+//> scene-indices
+SceneIndices createSceneIndices(const common::Device& device, const common::GpuScene& scene) {
+    SceneIndices indices;
+    // Each distinct index buffer once (a posed mesh draws its source's; a mirrored copy has its own).
+    std::map<VkBuffer, uint32_t> placed;
+    std::vector<std::pair<const common::GpuMesh*, uint32_t>> copies;
+    for (const common::GpuMesh& mesh : scene.meshes) {
+        auto [at, fresh] = placed.emplace(mesh.indices.handle, uint32_t(indices.count));
+        if (fresh) {
+            copies.push_back({&mesh, uint32_t(indices.count)});
+            indices.count += mesh.indexCount;
+            if (indices.count > UINT32_MAX)
+                throw common::Failure("the scene's meshes have more than 2^32 indices in all");
+        }
+        indices.firstIndex.push_back(at->second);
+    }
+    if (indices.count == 0) return indices;  // no mesh: no buffer
+    indices.buffer = common::createBuffer(device, indices.count * sizeof(uint32_t),
+                                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                          VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "scene indices");
+    // Copied on the GPU from the meshes' own index buffers, once; waited for before the first frame.
+    VkCommandBuffer cmd = common::beginOneTimeCommands(device);
+    for (const auto& [mesh, first] : copies) {
+        VkBufferCopy region{0, VkDeviceSize(first) * sizeof(uint32_t),
+                            VkDeviceSize(mesh->indexCount) * sizeof(uint32_t)};
+        if (region.size > 0) vkCmdCopyBuffer(cmd, mesh->indices.handle, indices.buffer.handle, 1, &region);
+    }
+    common::submitOneTimeCommands(device, cmd);
+    return indices;
+}
+//< scene-indices
+
+void destroySceneIndices(const common::Device& device, SceneIndices& indices) {
+    if (indices.buffer.handle != VK_NULL_HANDLE) common::destroyBuffer(device, indices.buffer);
+    indices = {};
+}
 
 std::vector<uint32_t> sceneDrawOrder(const common::GpuScene& scene, const std::vector<uint32_t>& classOf) {
     auto key = [&](uint32_t d) {
@@ -73,9 +124,10 @@ std::vector<uint32_t> sceneDrawOrder(const common::GpuScene& scene, const std::v
 }
 
 //> append-commands
-void appendCommands(const common::GpuScene& scene, const std::vector<std::pair<uint32_t, uint32_t>>& draws,
-                    InstanceData* instances, uint32_t& instanceCount, VkDrawIndirectCommand* commands,
-                    uint32_t& commandCount, std::vector<IndirectGroup>& groups) {
+void appendCommands(const common::GpuScene& scene, const std::vector<uint32_t>& firstIndex,
+                    const std::vector<std::pair<uint32_t, uint32_t>>& draws, InstanceData* instances,
+                    uint32_t& instanceCount, VkDrawIndexedIndirectCommand* commands, uint32_t& commandCount,
+                    std::vector<IndirectGroup>& groups) {
     uint32_t lastMesh = UINT32_MAX, lastMaterial = UINT32_MAX;
     for (const auto& [drawIndex, layers] : draws) {
         const common::Draw& draw = scene.draws[drawIndex];
@@ -85,20 +137,23 @@ void appendCommands(const common::GpuScene& scene, const std::vector<std::pair<u
             lastMesh = UINT32_MAX;
         }
         if (draw.mesh != lastMesh) {
-            // A vertex per index, pulled by the shader: vertexCount is the index count.
-            commands[commandCount++] = {mesh.indexCount, 0, 0, instanceCount};
+            // The mesh's indices where the scene's index buffer holds them; the index values are the
+            // mesh's own (vertexOffset 0), the vertices pulled from the instance's vertex buffer.
+            commands[commandCount++] = {mesh.indexCount, 0, firstIndex[draw.mesh], 0, instanceCount};
             ++groups.back().commandCount;
         }
         ++commands[commandCount - 1].instanceCount;
-        instances[instanceCount++] = {drawIndex, layers, mesh.indices.address, mesh.vertices.address};
+        instances[instanceCount++] = {drawIndex, layers, mesh.vertices.address};
         lastMesh = draw.mesh;
         lastMaterial = draw.material;
     }
 }
 //< append-commands
 
-GlobalBuffers createGlobalBuffers(const common::Device& device, uint32_t framesInFlight) {
+GlobalBuffers createGlobalBuffers(const common::Device& device, const common::GpuScene& scene,
+                                  uint32_t framesInFlight) {
     GlobalBuffers buffers;
+    buffers.indices = createSceneIndices(device, scene);
     buffers.frames.resize(framesInFlight);
     // A device with multiDrawIndirect draws at least 65,535 commands a call.
     buffers.maxDrawIndirectCount = std::max(1u, device.properties.limits.maxDrawIndirectCount);
@@ -107,7 +162,7 @@ GlobalBuffers createGlobalBuffers(const common::Device& device, uint32_t framesI
 
 //> update-buffers
 void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, uint32_t slot,
-                         const common::GpuScene& scene, const ScenePass& scenePass, uint64_t shadowDraws) {
+                         const common::GpuScene& scene, const ScenePass& scenePass, const ShadowPlan& plan) {
     FrameBuffers& frame = buffers.frames[slot];
     const size_t draws = scene.draws.size();
     // The order the scene pass draws in (sceneDrawOrder), made once: draws keep their mesh and
@@ -115,6 +170,9 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
     if (buffers.sceneOrder.size() != draws)
         buffers.sceneOrder = sceneDrawOrder(scene, scenePass.pipelines.materialClasses.ofMaterial);
     // Room for the scene's instances and commands and the shadow plan's; matrices for every draw.
+    uint64_t shadowDraws = 0;
+    for (const std::vector<ShadowBatch>* batches : {&plan.cached, &plan.moving})
+        for (const ShadowBatch& batch : *batches) shadowDraws += batch.draws.size();
     const uint64_t instances = draws + shadowDraws;
     if (instances > UINT32_MAX) throw common::Failure("more instances in a frame than 2^32");
     std::string name = "frame " + std::to_string(slot) + " ";
@@ -122,11 +180,13 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
             buffers.grown);
     reserve(device, frame.instances, instances * sizeof(InstanceData), kAddressed, name + "instances",
             buffers.grown);
-    reserve(device, frame.commands, instances * sizeof(VkDrawIndirectCommand),
+    reserve(device, frame.commands, instances * sizeof(VkDrawIndexedIndirectCommand),
             VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, name + "draw commands", buffers.grown);
     frame.instanceCount = frame.commandCount = 0;
     buffers.sceneGroups.clear();
-    buffers.shadowCommands = buffers.shadowInstances = buffers.shadowIndirectDraws = 0;
+    buffers.shadowBatches.clear();
+    buffers.sceneCommands = buffers.sceneInstances = buffers.shadowCommands = buffers.shadowInstances = 0;
+    buffers.sceneIndirectDraws = buffers.shadowIndirectDraws = 0;
     if (draws == 0) return;  // nothing to draw: nothing made, nothing written
 
     // Every draw's matrices, where this frame has put them.
@@ -137,26 +197,42 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
                        {glm::vec4(draw.normalMatrix[0], 0.0f), glm::vec4(draw.normalMatrix[1], 0.0f),
                         glm::vec4(draw.normalMatrix[2], 0.0f)}};
     }
+    // The scene pass: every draw, a command per mesh and material.
     std::vector<std::pair<uint32_t, uint32_t>> order;
     order.reserve(draws);
     for (uint32_t d : buffers.sceneOrder) order.push_back({d, 0u});
-    appendCommands(scene, order, static_cast<InstanceData*>(frame.instances.buffer.mapped),
-                   frame.instanceCount, static_cast<VkDrawIndirectCommand*>(frame.commands.buffer.mapped),
-                   frame.commandCount, buffers.sceneGroups);
+    append(frame, scene, buffers.indices.firstIndex, order, buffers.sceneGroups);
     buffers.sceneCommands = frame.commandCount;
     buffers.sceneInstances = frame.instanceCount;
+    // The shadow pass: each batch of the plan's, its draws by (opaque before cut-out, material,
+    // mesh), each instance with the cascades the plan sends it to.
+    for (const std::vector<ShadowBatch>* batches : {&plan.cached, &plan.moving})
+        for (const ShadowBatch& batch : *batches) {
+            if (batch.draws.empty()) continue;
+            order.clear();
+            for (const ShadowDraw& draw : batch.draws) order.push_back({draw.draw, draw.layers});
+            std::sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
+                const common::Draw& x = scene.draws[a.first];
+                const common::Draw& y = scene.draws[b.first];
+                return std::tuple(scene.materials[x.material].alphaTested, x.material, x.mesh, a.first) <
+                       std::tuple(scene.materials[y.material].alphaTested, y.material, y.mesh, b.first);
+            });
+            buffers.shadowBatches.push_back({&batch.draws, {}});
+            append(frame, scene, buffers.indices.firstIndex, order, buffers.shadowBatches.back().groups);
+        }
+    buffers.shadowCommands = frame.commandCount - buffers.sceneCommands;
+    buffers.shadowInstances = frame.instanceCount - buffers.sceneInstances;
 }
 //< update-buffers
 
 //> record-scene
 void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                          const ScenePass& scenePass) {
-    const FrameBuffers& frame = buffers.frames[slot];
     if (buffers.sceneGroups.empty()) return;
+    const FrameBuffers& frame = buffers.frames[slot];
     const ScenePipelines& pipelines = scenePass.pipelines;
-    pushAddresses(cmd, pipelines.layout, frame);
+    bindFrame(cmd, pipelines.layout, buffers, frame);
     VkPipeline bound = VK_NULL_HANDLE;
-    buffers.sceneIndirectDraws = 0;
     drawGroups(
         cmd, buffers, frame, buffers.sceneGroups, pipelines.layout, scenePass,
         [&](const IndirectGroup& group) {
@@ -169,31 +245,16 @@ void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t s
 //> record-shadow
 void recordIndirectShadowBatch(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                                const ShadowPass& shadowPass, const ScenePass& scenePass,
-                               const common::GpuScene& scene, const std::vector<ShadowDraw>& draws,
-                               VkPipeline& bound) {
-    if (draws.empty()) return;
-    FrameBuffers& frame = buffers.frames[slot];
-    // The batch's draws by (opaque before cut-out, material, mesh): a command per mesh, its instances
-    // each with the cascades the plan sends it to.
-    std::vector<std::pair<uint32_t, uint32_t>> order;
-    order.reserve(draws.size());
-    for (const ShadowDraw& draw : draws) order.push_back({draw.draw, draw.layers});
-    std::sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
-        const common::Draw& x = scene.draws[a.first];
-        const common::Draw& y = scene.draws[b.first];
-        return std::tuple(scene.materials[x.material].alphaTested, x.material, x.mesh, a.first) <
-               std::tuple(scene.materials[y.material].alphaTested, y.material, y.mesh, b.first);
-    });
-    const uint32_t firstCommand = frame.commandCount, firstInstance = frame.instanceCount;
-    std::vector<IndirectGroup> groups;
-    appendCommands(scene, order, static_cast<InstanceData*>(frame.instances.buffer.mapped),
-                   frame.instanceCount, static_cast<VkDrawIndirectCommand*>(frame.commands.buffer.mapped),
-                   frame.commandCount, groups);
-    buffers.shadowCommands += frame.commandCount - firstCommand;
-    buffers.shadowInstances += frame.instanceCount - firstInstance;
-    pushAddresses(cmd, shadowPass.pipelineLayout, frame);
+                               const std::vector<ShadowDraw>& draws, VkPipeline& bound) {
+    auto batch = std::find_if(buffers.shadowBatches.begin(), buffers.shadowBatches.end(),
+                              [&](const GlobalBuffers::ShadowBatchGroups& b) { return b.draws == &draws; });
+    if (batch == buffers.shadowBatches.end())
+        throw common::Failure(
+            "chapter-19: a shadow batch was recorded that the frame's update did not write");
+    const FrameBuffers& frame = buffers.frames[slot];
+    bindFrame(cmd, shadowPass.pipelineLayout, buffers, frame);
     drawGroups(
-        cmd, buffers, frame, groups, shadowPass.pipelineLayout, scenePass,
+        cmd, buffers, frame, batch->groups, shadowPass.pipelineLayout, scenePass,
         [&](const IndirectGroup& group) { return group.alphaTested ? shadowPass.cutout : shadowPass.opaque; },
         bound, buffers.shadowIndirectDraws);
 }
@@ -211,5 +272,6 @@ void destroyGlobalBuffers(const common::Device& device, GlobalBuffers& buffers) 
     for (FrameBuffers& frame : buffers.frames)
         for (GrowingBuffer* growing : {&frame.matrices, &frame.instances, &frame.commands})
             if (growing->buffer.handle != VK_NULL_HANDLE) common::destroyBuffer(device, growing->buffer);
+    destroySceneIndices(device, buffers.indices);
     buffers = {};
 }

@@ -1,10 +1,16 @@
 // chapter-19: the book's GlobalBuffers -- what indirect drawing reads, per frame in flight, built on
 // the host every frame: the draws' matrices, one InstanceData per instance drawn, and the draw
-// commands (VkDrawIndirectCommand). The scene pass then records one vkCmdDrawIndirect per material
-// (its pipeline and textures bound before it), each drawing all of that material's commands; the
-// shadow pass the same per batch of the shadow cache's plan. A mesh that several draws share with one
-// material (a model placed many times) is one command, its instanceCount the number of draws: the
-// vertex shader finds each draw's matrices by gl_InstanceIndex (shaders/chapter-19/instances.glsl).
+// commands. The scene pass then records one indirect draw per material (its pipeline and textures
+// bound before it), each drawing all of that material's commands; the shadow pass the same per batch
+// of the shadow cache's plan. A mesh that several draws share with one material (a model placed many
+// times) is one command, its instanceCount the number of draws: the vertex shader finds each draw's
+// matrices by gl_InstanceIndex (shaders/chapter-19/instances.glsl).
+//
+// Where we differ from the book: its commands are VkDrawIndirectCommand over each mesh's index count,
+// the shader reading the index through a pointer (chapter 18's way). Ours are
+// VkDrawIndexedIndirectCommand into one index buffer holding every mesh's indices (each at its
+// firstIndex), so that the GPU reuses a vertex shared by several triangles instead of shading it once
+// per index (docs/chapter-18.md, "What pulling costs"); the vertices are still pulled.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -19,16 +25,27 @@
 #include "common/vk/buffer.hpp"
 #include "common/vk/device.hpp"
 
-// What the vertex shaders read per instance (instances.glsl's Instance; scalar, 24 bytes). The
-// book's holds the material index too; ours draws one material per indirect draw (its textures are
-// bound per material: see docs/chapter-19.md), and carries the cascades a shadow draw goes to instead.
+// What the vertex shaders read per instance (instances.glsl's Instance; scalar, 16 bytes). The
+// book's holds the material index and the index buffer's address too; ours draws one material per
+// indirect draw (its textures are bound per material: see docs/chapter-19.md) and reads indices from
+// the bound index buffer, and carries the cascades a shadow draw goes to instead.
 struct InstanceData {
     uint32_t matrix = 0;  // the draw's DrawConstants in the matrices buffer
     uint32_t layers = 0;  // shadow pass: bit i, cascade i; 0 in the scene pass
-    VkDeviceAddress indices = 0;
     VkDeviceAddress vertices = 0;
 };
-static_assert(sizeof(InstanceData) == 24);
+static_assert(sizeof(InstanceData) == 16);
+
+// Every mesh's indices in one index buffer (made once, copied from the meshes' own on the GPU):
+// mesh m's at firstIndex[m]. Meshes that share an index buffer share their place.
+struct SceneIndices {
+    common::Buffer buffer;
+    std::vector<uint32_t> firstIndex;  // per GpuScene mesh
+    uint64_t count = 0;
+};
+// Throws Failure past 2^32 indices in all (firstIndex is 32-bit).
+SceneIndices createSceneIndices(const common::Device& device, const common::GpuScene& scene);
+void destroySceneIndices(const common::Device& device, SceneIndices& indices);
 
 // The vertex stage's push constants (instances.glsl's DrawBlock): 16 bytes; the fragment stage's
 // material index follows at 16 (the fragment shaders compiled with DRAW_MATERIAL_OFFSET=16).
@@ -66,9 +83,16 @@ struct IndirectGroup {
 };
 
 struct GlobalBuffers {
+    SceneIndices indices;              // what every command's indices index
     std::vector<FrameBuffers> frames;  // per frame in flight
     std::vector<uint32_t> sceneOrder;  // the scene's draws by (opaque before cut-out, class, material, mesh)
     std::vector<IndirectGroup> sceneGroups;  // this frame's scene pass
+    // This frame's shadow batches: which plan batch (its draws), and its groups.
+    struct ShadowBatchGroups {
+        const std::vector<ShadowDraw>* draws = nullptr;
+        std::vector<IndirectGroup> groups;
+    };
+    std::vector<ShadowBatchGroups> shadowBatches;
     uint32_t maxDrawIndirectCount = 1;
     // What the last frame drew, for the report and the tests.
     uint32_t sceneCommands = 0, sceneInstances = 0, shadowCommands = 0, shadowInstances = 0;
@@ -82,28 +106,31 @@ struct GlobalBuffers {
 std::vector<uint32_t> sceneDrawOrder(const common::GpuScene& scene, const std::vector<uint32_t>& classOf);
 // Commands for `draws` (draw index, cascades), in the order given, appended at `instanceCount` and
 // `commandCount` of the two arrays: one command per run of draws of one mesh and material (its
-// vertexCount the mesh's index count, its instances the run's), one group per run of one material.
-void appendCommands(const common::GpuScene& scene, const std::vector<std::pair<uint32_t, uint32_t>>& draws,
-                    InstanceData* instances, uint32_t& instanceCount, VkDrawIndirectCommand* commands,
-                    uint32_t& commandCount, std::vector<IndirectGroup>& groups);
+// indices the mesh's, at `firstIndex[mesh]`; its instances the run's), one group per run of one
+// material.
+void appendCommands(const common::GpuScene& scene, const std::vector<uint32_t>& firstIndex,
+                    const std::vector<std::pair<uint32_t, uint32_t>>& draws, InstanceData* instances,
+                    uint32_t& instanceCount, VkDrawIndexedIndirectCommand* commands, uint32_t& commandCount,
+                    std::vector<IndirectGroup>& groups);
 
-GlobalBuffers createGlobalBuffers(const common::Device& device, uint32_t framesInFlight);
+// The scene's meshes as they are when the Render is made (the skinning pass's posed ones included).
+GlobalBuffers createGlobalBuffers(const common::Device& device, const common::GpuScene& scene,
+                                  uint32_t framesInFlight);
 // Frame slot `slot`'s matrices, the scene pass's instances and commands (its groups in
-// `sceneGroups`), and room for `shadowDraws` more instances and commands (the shadow plan's draws).
-// The slot's previous frame is done (its fence waited for): a buffer outgrown is destroyed and made
-// anew at twice the size needed.
+// `sceneGroups`), and the shadow plan's, batch by batch (`shadowBatches`). The slot's previous frame
+// is done (its fence waited for): a buffer outgrown is destroyed and made anew at twice the size
+// needed. All the host's work is here: recording only issues the draws.
 void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, uint32_t slot,
-                         const common::GpuScene& scene, const ScenePass& scenePass, uint64_t shadowDraws);
+                         const common::GpuScene& scene, const ScenePass& scenePass, const ShadowPlan& plan);
 // The scene pass's draws: per group its pipeline and textures bound, its material pushed, one
 // vkCmdDrawIndirect (sets 0 and 1 bound by the pass).
 void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                          const ScenePass& scenePass);
-// One batch of the shadow pass: its draws written as instances (with their cascades) and commands
-// after what the frame holds, then drawn a vkCmdDrawIndirect per material.
+// One batch of the shadow pass (`draws`, one of the plan's batches): the groups updateGlobalBuffers
+// wrote for it drawn, an indirect draw per material.
 void recordIndirectShadowBatch(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                                const ShadowPass& shadowPass, const ScenePass& scenePass,
-                               const common::GpuScene& scene, const std::vector<ShadowDraw>& draws,
-                               VkPipeline& bound);
+                               const std::vector<ShadowDraw>& draws, VkPipeline& bound);
 // "N commands for M instances in K indirect draws" for the scene and shadow passes.
 std::string describeGlobalBuffers(const GlobalBuffers& buffers);
 void destroyGlobalBuffers(const common::Device& device, GlobalBuffers& buffers);

@@ -22,7 +22,8 @@ Render createRender(common::RenderContext& c, const common::Scene& scene, common
                                        .metalRoughMaps = true,
                                        .occlusionMaps = true,
                                        .skins = true,
-                                       .deviceAddresses = true});
+                                       .deviceAddresses = true,
+                                       .copyableIndices = true});
     // The skinning shader reads the bind pose, the influences and the palette and writes the posed
     // vertices through the addresses each dispatch pushes: no descriptor sets.
     r.skinningPass =
@@ -57,7 +58,8 @@ Render createRender(common::RenderContext& c, const common::Scene& scene, common
     r.postPass =
         common::createPostPass(c.device, c.pipelineCache.handle, c.target.format, r.lightPass.output);
     r.passesMs = common::millisecondsSinceStart() - start;
-    r.globalBuffers = createGlobalBuffers(c.device, c.framesInFlight);
+    // Every mesh's indices in one buffer (the posed meshes' too: after the skinning pass made them).
+    r.globalBuffers = createGlobalBuffers(c.device, r.gpuScene, c.framesInFlight);
     return r;
 }
 
@@ -143,12 +145,9 @@ void updateRender(common::RenderContext& c, Render& r, uint32_t slot, const Fram
                                                kMovingCastersConstant, VK_TRUE);
     updateLights(r.lightPass, slot, shaderLights(v.scene),
                  {v.camera.position, v.scene.ambientIntensity, v.scene.ambientColor, 0u});
-    // The book's GlobalBuffers for this slot: every draw's matrices, the scene pass's instances
-    // and commands, and room for the shadow plan's draws (written as the shadow pass records them).
-    uint64_t shadowDraws = 0;
-    for (const std::vector<ShadowBatch>* batches : {&r.shadowPass.plan.cached, &r.shadowPass.plan.moving})
-        for (const ShadowBatch& batch : *batches) shadowDraws += batch.draws.size();
-    updateGlobalBuffers(c.device, r.globalBuffers, slot, r.gpuScene, r.scenePass, shadowDraws);
+    // The book's GlobalBuffers for this slot: every draw's matrices, and the instances and commands
+    // of the scene pass and of each batch of the shadow plan.
+    updateGlobalBuffers(c.device, r.globalBuffers, slot, r.gpuScene, r.scenePass, r.shadowPass.plan);
 }
 //< update-frame
 
@@ -164,7 +163,7 @@ void recordRender(common::RenderContext& c, Render& r, common::FrameCommands& f,
         recordShadowPass(f.cmd, r.shadowPass, r.scenePass, r.gpuScene, f.slot,
                          [&](VkCommandBuffer cmd, const std::vector<ShadowDraw>& draws, VkPipeline& bound) {
                              recordIndirectShadowBatch(cmd, r.globalBuffers, f.slot, r.shadowPass,
-                                                       r.scenePass, r.gpuScene, draws, bound);
+                                                       r.scenePass, draws, bound);
                          });
     });
     common::timedPass(c, f, [&] {

@@ -444,12 +444,14 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                         wanted.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
                                                : 0u;
                     usage |= addressed;
+                    const VkBufferUsageFlags indexUsage =
+                        VK_BUFFER_USAGE_INDEX_BUFFER_BIT | addressed |
+                        (wanted.copyableIndices ? VkBufferUsageFlags(VK_BUFFER_USAGE_TRANSFER_SRC_BIT) : 0u);
                     out.vertices =
                         uploadStaged(device, batch, vertices.data(), vertices.size() * sizeof(Vertex), usage,
                                      meshName(instance.file, gpu.meshes.size(), "vertices"));
                     out.indices = uploadStaged(device, batch, mesh.indices.data(),
-                                               mesh.indices.size() * sizeof(uint32_t),
-                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT | addressed,
+                                               mesh.indices.size() * sizeof(uint32_t), indexUsage,
                                                meshName(instance.file, gpu.meshes.size(), "indices"));
                     out.indexCount = uint32_t(mesh.indices.size());
                     out.boundsMin = out.boundsMax = vertices.front().position;
@@ -465,13 +467,15 @@ GpuScene loadGpuScene(const Device& device, const Scene& scene, ModelCache& mode
                     out.ownsVertices = false;
                     std::vector<uint32_t> turned = model.meshes[i].indices;
                     for (size_t k = 0; k + 2 < turned.size(); k += 3) std::swap(turned[k + 1], turned[k + 2]);
-                    out.indices =
-                        uploadStaged(device, batch, turned.data(), turned.size() * sizeof(uint32_t),
-                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                                         (wanted.deviceAddresses
-                                              ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
-                                              : 0u),
-                                     meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
+                    out.indices = uploadStaged(
+                        device, batch, turned.data(), turned.size() * sizeof(uint32_t),
+                        VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                            (wanted.deviceAddresses
+                                 ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+                                 : 0u) |
+                            (wanted.copyableIndices ? VkBufferUsageFlags(VK_BUFFER_USAGE_TRANSFER_SRC_BIT)
+                                                    : 0u),
+                        meshName(instance.file, gpu.meshes.size(), "mirrored indices"));
                     gpu.meshes.push_back(out);
                 }
         }

@@ -99,6 +99,9 @@ struct GpuSceneOptions {
     // chapter-18 on: vertex and index buffers made with SHADER_DEVICE_ADDRESS usage (their
     // Buffer::address), for vertex shaders that read them through pointers.
     bool deviceAddresses = false;
+    // chapter-19 on: index buffers a transfer may copy from (TRANSFER_SRC usage): the chapter copies
+    // every mesh's indices into one buffer.
+    bool copyableIndices = false;
 };
 
 // Throws InputError (naming the file) for a bad model or a corrupt texture; a missing texture

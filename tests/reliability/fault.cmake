@@ -96,7 +96,7 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
              "16;47;66;vkQueueSubmit2:3;5"
              "17;64;83;vkQueueSubmit2:3;5"
              "18;64;83;vkQueueSubmit2:3;5"
-             "19;64;89;vkQueueSubmit2:3;5")
+             "19;64;90;vkQueueSubmit2:3;5")
     list(GET spec 0 number)
     list(GET spec 1 gbuffer)
     list(GET spec 2 resize)
@@ -150,9 +150,9 @@ fault_test(fault.chapter-17.oom-posed-vertices FAULT vkAllocateMemory:58
 fault_test(fault.chapter-18.oom-posed-vertices FAULT vkAllocateMemory:58
     COMMAND $<TARGET_FILE:chapter-18> --device llvmpipe --validation --headless --width 320 --height 180
     EXPECT_STDERR "^chapter-18: error: ${OOM_NAMED}posed vertices: model 18, mesh 0\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
-# chapter-19's GlobalBuffers, made by the first frame's update (matrices, instances, draw commands):
-# the third of them.
-fault_test(fault.chapter-19.oom-draw-commands FAULT vkAllocateMemory:83
+# chapter-19's GlobalBuffers, made by the first frame's update (matrices, instances, draw commands),
+# after the scene's index buffer: the draw commands.
+fault_test(fault.chapter-19.oom-draw-commands FAULT vkAllocateMemory:84
     COMMAND $<TARGET_FILE:chapter-19> --device llvmpipe --validation --headless --width 320 --height 180
     EXPECT_STDERR "^chapter-19: error: ${OOM_NAMED}frame 0 draw commands\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
 # The moving casters' map (chapter-16/shadow_pass.cpp), made mid-run the first time a caster moves

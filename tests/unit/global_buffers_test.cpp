@@ -16,7 +16,6 @@ common::GpuScene threeMeshes() {
     for (uint32_t m = 0; m < 3; ++m) {
         common::GpuMesh mesh;
         mesh.indexCount = 3 * (m + 1);
-        mesh.indices.address = 0x1000 * (m + 1);
         mesh.vertices.address = 0x10000 * (m + 1);
         scene.meshes.push_back(mesh);
         common::GpuMaterial material;
@@ -27,10 +26,11 @@ common::GpuScene threeMeshes() {
 }
 
 const std::vector<uint32_t> kClassOf{0, 1, 2};
+const std::vector<uint32_t> kFirstIndex{0, 3, 9};  // the meshes' indices one after the other
 
 struct Written {
     std::vector<InstanceData> instances;
-    std::vector<VkDrawIndirectCommand> commands;
+    std::vector<VkDrawIndexedIndirectCommand> commands;
     std::vector<IndirectGroup> groups;
 };
 
@@ -41,7 +41,8 @@ Written write(const common::GpuScene& scene) {
     w.instances.resize(draws.size());
     w.commands.resize(draws.size());
     uint32_t instances = 0, commands = 0;
-    appendCommands(scene, draws, w.instances.data(), instances, w.commands.data(), commands, w.groups);
+    appendCommands(scene, kFirstIndex, draws, w.instances.data(), instances, w.commands.data(), commands,
+                   w.groups);
     w.instances.resize(instances);
     w.commands.resize(commands);
     return w;
@@ -54,14 +55,15 @@ TEST(GlobalBuffers, OneCommandForAMeshPlacedManyTimes) {
     for (uint32_t i = 0; i < 1000; ++i) scene.draws.push_back({.mesh = 0, .material = 0});
     Written w = write(scene);
     ASSERT_EQ(w.commands.size(), 1u);
-    EXPECT_EQ(w.commands[0].vertexCount, 3u);  // the index count: the shader pulls each index
+    EXPECT_EQ(w.commands[0].indexCount, 3u);
+    EXPECT_EQ(w.commands[0].firstIndex, 0u);
+    EXPECT_EQ(w.commands[0].vertexOffset, 0);  // the shader pulls vertex gl_VertexIndex, the index's value
     EXPECT_EQ(w.commands[0].instanceCount, 1000u);
     EXPECT_EQ(w.commands[0].firstInstance, 0u);
     ASSERT_EQ(w.instances.size(), 1000u);
     for (uint32_t i = 0; i < 1000; ++i) {
         EXPECT_EQ(w.instances[i].matrix, i);  // each instance its own draw's matrices
         EXPECT_EQ(w.instances[i].vertices, 0x10000u);
-        EXPECT_EQ(w.instances[i].indices, 0x1000u);
     }
     ASSERT_EQ(w.groups.size(), 1u);
     EXPECT_EQ(w.groups[0].commandCount, 1u);
@@ -85,7 +87,7 @@ TEST(GlobalBuffers, AGroupPerMaterialOpaqueBeforeCutOuts) {
     EXPECT_EQ(w.groups[2].commandCount, 1u);
     ASSERT_EQ(w.commands.size(), 6u);
     uint32_t expectedFirst = 0;
-    for (const VkDrawIndirectCommand& command : w.commands) {  // the instances follow each other
+    for (const VkDrawIndexedIndirectCommand& command : w.commands) {  // the instances follow each other
         EXPECT_EQ(command.firstInstance, expectedFirst);
         expectedFirst += command.instanceCount;
     }
@@ -95,7 +97,8 @@ TEST(GlobalBuffers, AGroupPerMaterialOpaqueBeforeCutOuts) {
             for (uint32_t i = 0; i < w.commands[c].instanceCount; ++i) {
                 const common::Draw& draw = scene.draws[w.instances[w.commands[c].firstInstance + i].matrix];
                 EXPECT_EQ(draw.material, group.material);  // a group draws its material only
-                EXPECT_EQ(scene.meshes[draw.mesh].indexCount, w.commands[c].vertexCount);
+                EXPECT_EQ(scene.meshes[draw.mesh].indexCount, w.commands[c].indexCount);
+                EXPECT_EQ(kFirstIndex[draw.mesh], w.commands[c].firstIndex);
             }
 }
 
@@ -104,7 +107,7 @@ TEST(GlobalBuffers, AnEmptySceneMakesNothing) {
     GlobalBuffers buffers;
     buffers.frames.resize(2);
     common::Device noDevice;  // nothing may be made: a call on it would fail
-    updateGlobalBuffers(noDevice, buffers, 0, scene, ScenePass{}, 0);
+    updateGlobalBuffers(noDevice, buffers, 0, scene, ScenePass{}, ShadowPlan{});
     EXPECT_EQ(buffers.grown, 0u);
     EXPECT_EQ(buffers.frames[0].matrices.buffer.handle, VK_NULL_HANDLE);
     EXPECT_EQ(buffers.frames[0].instances.buffer.handle, VK_NULL_HANDLE);
