@@ -115,6 +115,11 @@ case "$command" in
         install_missing
         stage_end "install"
         stage_start
+        # Mesa 25's lavapipe beside the machine's own (unpacked into the build tree, never
+        # installed): every chapter's golden images are checked on both drivers
+        # (tests/desktops/second_driver.cmake).
+        mkdir -p "$build"
+        "$root/scripts/mesa_backports.sh" "$build/mesa-backports" > /dev/null
         build_release
         # The fuzz targets are test programs like the others: built here, not in the test stage
         # (their own clang tree; the target exists where clang can link them).

@@ -211,9 +211,18 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
         return typeRank(a.properties.deviceType) < typeRank(b.properties.deviceType);
     });
     const Candidate& best = matching.front();
-    if (!best.unsuitable.empty())
-        throw Failure("cannot use Vulkan device '" + std::string(best.properties.deviceName) +
-                      "': " + best.unsuitable);
+    if (!best.unsuitable.empty()) {
+        // Where to get a device that can: Mesa's lavapipe has everything the chapters ask for; a
+        // lavapipe too old for it (Debian 12's 22.3 has no ray tracing) has a newer one in Debian's
+        // bookworm-backports, which scripts/mesa_backports.sh fetches without installing it.
+        bool lavapipe = lowercase(best.properties.deviceName).find("llvmpipe") != std::string::npos;
+        throw Failure(
+            "cannot use Vulkan device '" + std::string(best.properties.deviceName) + "': " + best.unsuitable +
+            (lavapipe ? " (Mesa 25's lavapipe has more: scripts/mesa_backports.sh DIR fetches it; run "
+                        "with VK_DRIVER_FILES=DIR/lvp_icd.json)"
+                      : " (Mesa's lavapipe has what the chapters need: install mesa-vulkan-drivers and "
+                        "run with --device llvmpipe)"));
+    }
     return best;
 }
 
