@@ -111,7 +111,7 @@ endforeach()
 
 # The hard cases (scenes/generate_figure.cpp), each played three frames and read back.
 add_test(NAME chapter-17.generate-figures COMMAND sh -c
-    "mkdir -p \"$FIGURES\" && for spec in 'strip 1' 'strip 31' 'strip 33' 'strip 1048577' 'strip 3145728' 'chain 256' fourth scaled hemispheres one-key tube walker arm; do set -- $spec; \"$0\" $1 \"$FIGURES/$1$2.gltf\" $2 || exit 1; done"
+    "mkdir -p \"$FIGURES\" && for spec in 'strip 1' 'strip 31' 'strip 33' 'strip 4097' 'strip 1048577' 'strip 3145728' 'chain 256' fourth scaled hemispheres one-key tube walker arm; do set -- $spec; \"$0\" $1 \"$FIGURES/$1$2.gltf\" $2 || exit 1; done"
     $<TARGET_FILE:generate_figure>)
 set_tests_properties(chapter-17.generate-figures PROPERTIES FIXTURES_SETUP ch17-figures
     ENVIRONMENT FIGURES=${FIGURES})

@@ -27,6 +27,8 @@
 //                                   drawIndirectFirstInstance, geometryShader and depthClamp.
 //   VKBOOK_HEAP_MIB=<n>             reports each device-local memory heap as at most n MiB (a GPU
 //                                   smaller than this machine's memory, which lavapipe reports).
+//   VKBOOK_MAX_COMPUTE_GROUPS=<n>   reports maxComputeWorkGroupCount[0] as n (a small device's
+//                                   dispatch limit, met by a small mesh).
 //   VKBOOK_MAX_ALLOCATIONS=<n>      reports maxMemoryAllocationCount as n (4096 on many Windows
 //                                   drivers; lavapipe has no limit).
 //   VKBOOK_EMULATE=swapchain_maintenance1  offers VK_EXT_swapchain_maintenance1 (lavapipe 22.3 has
@@ -233,6 +235,7 @@ struct Profile {
     std::vector<std::string> hiddenLater;  // formats hidden from surfaces once a swapchain exists
     unsigned long long heapMib = 0;        // 0: the device's own heap sizes
     uint32_t maxAllocations = 0;           // 0: the device's own maxMemoryAllocationCount
+    uint32_t maxComputeGroups = 0;         // 0: the device's own maxComputeWorkGroupCount[0]
 };
 
 const std::unordered_map<std::string, VkFormat>& formatNames() {
@@ -290,6 +293,8 @@ Profile parseProfile() {
         p.heapMib = std::strtoull(heap, nullptr, 10);
     if (const char* count = std::getenv("VKBOOK_MAX_ALLOCATIONS"); count && *count)
         p.maxAllocations = uint32_t(std::strtoul(count, nullptr, 10));
+    if (const char* groups = std::getenv("VKBOOK_MAX_COMPUTE_GROUPS"); groups && *groups)
+        p.maxComputeGroups = uint32_t(std::strtoul(groups, nullptr, 10));
     for (const std::string& name : commaList(std::getenv("VKBOOK_HIDE"))) {
         if (!name.starts_with("VK_") && !formatNames().count(name) && name != "scalarBlockLayout" &&
             name != "geometryShader" && name != "depthClamp" && name != "bufferDeviceAddress" &&
@@ -820,6 +825,9 @@ void lowerVersion(VkPhysicalDeviceProperties& properties) {
     if (profile().maxAllocations != 0 &&
         profile().maxAllocations < properties.limits.maxMemoryAllocationCount)
         properties.limits.maxMemoryAllocationCount = profile().maxAllocations;
+    if (profile().maxComputeGroups != 0 &&
+        profile().maxComputeGroups < properties.limits.maxComputeWorkGroupCount[0])
+        properties.limits.maxComputeWorkGroupCount[0] = profile().maxComputeGroups;
 }
 
 VKAPI_ATTR void VKAPI_CALL getPhysicalDeviceProperties(VkPhysicalDevice physical,
