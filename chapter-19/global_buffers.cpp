@@ -188,6 +188,8 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
     buffers.sceneCommands = buffers.sceneInstances = buffers.shadowCommands = buffers.shadowInstances = 0;
     buffers.sceneIndirectDraws = buffers.shadowIndirectDraws = 0;
     if (draws == 0) return;  // nothing to draw: nothing made, nothing written
+    if (buffers.indices.firstIndex.size() != scene.meshes.size())
+        throw common::Failure("chapter-19: the scene has meshes its index buffer was not made with");
 
     // Every draw's matrices, where this frame has put them.
     auto* matrices = static_cast<DrawConstants*>(frame.matrices.buffer.mapped);

@@ -71,11 +71,11 @@ struct GrowingBuffer {
 struct FrameBuffers {
     GrowingBuffer matrices;                        // DrawConstants per draw of the scene
     GrowingBuffer instances;                       // InstanceData: the scene pass's, then the shadow pass's
-    GrowingBuffer commands;                        // VkDrawIndirectCommand: the same
+    GrowingBuffer commands;                        // VkDrawIndexedIndirectCommand: the same
     uint32_t instanceCount = 0, commandCount = 0;  // written so far this frame
 };
 
-// The commands of one material: one vkCmdDrawIndirect (or more past maxDrawIndirectCount).
+// The commands of one material: one vkCmdDrawIndexedIndirect (or more past maxDrawIndirectCount).
 struct IndirectGroup {
     uint32_t material = 0;
     bool alphaTested = false;  // the shadow pass's cut-out pipeline
@@ -123,7 +123,7 @@ GlobalBuffers createGlobalBuffers(const common::Device& device, const common::Gp
 void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, uint32_t slot,
                          const common::GpuScene& scene, const ScenePass& scenePass, const ShadowPlan& plan);
 // The scene pass's draws: per group its pipeline and textures bound, its material pushed, one
-// vkCmdDrawIndirect (sets 0 and 1 bound by the pass).
+// vkCmdDrawIndexedIndirect (sets 0 and 1 bound by the pass).
 void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                          const ScenePass& scenePass);
 // One batch of the shadow pass (`draws`, one of the plan's batches): the groups updateGlobalBuffers

@@ -2,7 +2,7 @@
 //
 // chapter-18's scene and picture, drawn from buffers of draw commands: per frame, the host writes
 // every draw's matrices, an instance record per draw and the commands (global_buffers.cpp), and
-// each pass records one vkCmdDrawIndirect per material (render.cpp). This file is chapter-18's Main;
+// each pass records one indexed indirect draw per material (render.cpp). This file is chapter-18's Main;
 // what it changes: the device features it asks for (setUp), the report's line on the indirect
 // draws, and the chapter's name.
 #include <vulkan/vulkan.h>
@@ -219,7 +219,7 @@ void setUp(Chapter& c, const common::Options& options) {
     else
         c.scene = common::sceneFromOptions(options, models);
     if (!options.bookScene.empty()) useBookChapter17Scene(c.scene, options.bookScene);
-    // What this chapter adds: multiDrawIndirect (a vkCmdDrawIndirect of many commands) and
+    // What this chapter adds: multiDrawIndirect (an indirect draw of many commands) and
     // drawIndirectFirstInstance (each command's first instance); the rest is chapter-18's.
     c.context = common::openRenderContext(options, "chapter-19", "chapter-19: indirect drawing",
                                           {.dynamicRendering = true,

@@ -1,7 +1,7 @@
 // chapter-19's Render: chapter-18's (chapter-18/render.hpp), its scene and shadow passes drawing
 // indirectly: the book's GlobalBuffers (global_buffers.hpp) hold, per frame in flight, the draws'
 // matrices, their instances and the draw commands, written by the host each frame; each pass records
-// one vkCmdDrawIndirect per material. The same passes, in the same order, the same picture.
+// one vkCmdDrawIndexedIndirect per material. The same passes, in the same order, the same picture.
 #pragma once
 
 #include <cstdint>

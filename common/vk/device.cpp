@@ -218,8 +218,8 @@ Candidate choose(const Instance& instance, VkSurfaceKHR surface, std::string_vie
         bool lavapipe = lowercase(best.properties.deviceName).find("llvmpipe") != std::string::npos;
         throw Failure(
             "cannot use Vulkan device '" + std::string(best.properties.deviceName) + "': " + best.unsuitable +
-            (lavapipe ? " (Mesa 25's lavapipe has more: scripts/mesa_backports.sh DIR fetches it; run "
-                        "with VK_DRIVER_FILES=DIR/lvp_icd.json)"
+            (lavapipe ? " (a newer lavapipe may have it: scripts/mesa_backports.sh DIR fetches Mesa 25's; "
+                        "run with VK_DRIVER_FILES=DIR/lvp_icd.json)"
                       : " (Mesa's lavapipe has what the chapters need: install mesa-vulkan-drivers and "
                         "run with --device llvmpipe)"));
     }

@@ -1,11 +1,12 @@
-// chapter-19's GlobalBuffers (chapter-19/global_buffers.cpp) on the host: what it writes for a
-// scene -- one command per mesh and material with its instances, a group per material, opaque before
-// cut-outs -- and that an empty scene makes nothing.
+// chapter-19's GlobalBuffers (chapter-19/global_buffers.cpp): what it writes for a scene -- one
+// command per mesh and material with its instances, a group per material, opaque before cut-outs --
+// that an empty scene makes nothing, and that a buffer outgrown is made again at twice the need.
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "chapter-19/global_buffers.hpp"
+#include "common/vk/instance.hpp"
 
 namespace {
 
@@ -113,4 +114,43 @@ TEST(GlobalBuffers, AnEmptySceneMakesNothing) {
     EXPECT_EQ(buffers.frames[0].instances.buffer.handle, VK_NULL_HANDLE);
     EXPECT_EQ(buffers.frames[0].commands.buffer.handle, VK_NULL_HANDLE);
     EXPECT_TRUE(buffers.sceneGroups.empty());
+}
+
+// The one path no scene of the chapter's tests reaches (each frame slot's first frame needs the most):
+// a buffer outgrown is made again at twice the need, and a frame that fits makes nothing. On the
+// device the chapters use (buffers made, nothing submitted: the addresses are the test's own).
+TEST(GlobalBuffers, ABufferOutgrownIsMadeAgainAtTwiceTheNeed) {
+    common::Instance instance = common::createInstance("unit_tests", false, {});
+    common::Device device = common::createDevice(instance, VK_NULL_HANDLE, "llvmpipe",
+                                                 {.scalarBlockLayout = true, .bufferDeviceAddress = true});
+    common::GpuScene scene = threeMeshes();
+    for (uint32_t i = 0; i < 10; ++i) scene.draws.push_back({.mesh = 0, .material = 0});
+    ScenePass scenePass;
+    scenePass.pipelines.materialClasses.ofMaterial = kClassOf;
+    GlobalBuffers buffers;
+    buffers.frames.resize(1);
+    buffers.indices.firstIndex = kFirstIndex;  // where createSceneIndices would put the meshes
+    ShadowPlan plan;
+    updateGlobalBuffers(device, buffers, 0, scene, scenePass, plan);
+    EXPECT_EQ(buffers.grown, 3u);  // matrices, instances, commands: 4 KiB each at least
+    const VkDeviceSize firstInstances = buffers.frames[0].instances.capacity;
+    EXPECT_EQ(firstInstances, 4096u);
+    // A shadow batch of 1,000 draws: instances and commands outgrown, the matrices not.
+    ShadowBatch batch;
+    for (uint32_t i = 0; i < 1000; ++i) batch.draws.push_back({i % 10, 1u});
+    plan.cached.push_back(batch);
+    updateGlobalBuffers(device, buffers, 0, scene, scenePass, plan);
+    EXPECT_EQ(buffers.grown, 5u);
+    EXPECT_EQ(buffers.frames[0].instances.capacity, 2 * 1010 * sizeof(InstanceData));
+    EXPECT_EQ(buffers.frames[0].commands.capacity, 2 * 1010 * sizeof(VkDrawIndexedIndirectCommand));
+    EXPECT_EQ(buffers.shadowInstances, 1000u);
+    EXPECT_EQ(buffers.shadowCommands, 1u);  // one mesh, one material: one command
+    const auto* instances = static_cast<const InstanceData*>(buffers.frames[0].instances.buffer.mapped);
+    EXPECT_EQ(instances[10 + 999].layers, 1u);  // the shadow instances after the scene's, their cascades kept
+    // The same frame again: it fits, nothing is made.
+    updateGlobalBuffers(device, buffers, 0, scene, scenePass, plan);
+    EXPECT_EQ(buffers.grown, 5u);
+    destroyGlobalBuffers(device, buffers);
+    common::destroyDevice(device);
+    common::destroyInstance(instance);
 }
