@@ -241,7 +241,7 @@ void makeMovingMap(const common::Device& device, ShadowPass& pass) {
 //> redraw
 bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
                     const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
-                    const common::GpuScene& scene) {
+                    const common::GpuScene& scene, const std::function<void()>& beforeMakingMap) {
     // Where every draw is now, for the plan's culling and for noticing which moved.
     std::vector<CasterInput> casters;
     casters.reserve(scene.draws.size());
@@ -251,6 +251,7 @@ bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t fra
     }
     pass.plan = planShadows(pass.cache, cascades, casters);
     bool made = !pass.plan.moving.empty() && pass.movingMoments.handle == VK_NULL_HANDLE;
+    if (made && beforeMakingMap) beforeMakingMap();
     if (made) makeMovingMap(device, pass);
     CascadeUniform uniform = cascadeUniform(cascades, cameraView);
     uniform.moving = pass.plan.movingLayers;
@@ -361,7 +362,12 @@ void recordShadowRendering(VkCommandBuffer cmd, const ShadowPass& pass, const Sc
 //> record-shadow
 void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame, const ShadowDrawsRecorder& draws) {
-    const ShadowPlan& plan = pass.plan;
+    recordShadowPass(cmd, pass, pass.plan, scenePass, scene, frame, draws);
+}
+
+void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ShadowPlan& plan,
+                      const ScenePass& scenePass, const common::GpuScene& scene, uint32_t frame,
+                      const ShadowDrawsRecorder& draws) {
     // The cached map: the layers and bands this frame draws (nothing when nothing changed).
     if (!plan.cached.empty()) {
         recordShadowRendering(

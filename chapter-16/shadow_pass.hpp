@@ -115,10 +115,11 @@ ShadowPass createShadowPass(const common::Device& device, VkPipelineCache cache,
 // This frame's cascades into frame slot `frame`'s uniform, and what the shadow pass draws of
 // them (planShadows, shadow_cache.hpp) for the scene's draws where they are now. Makes the moving
 // casters' map the first time the plan needs it, after waiting for the device: returns true then
-// (the light pipeline is to read it from now on: kMovingCastersConstant).
+// (the light pipeline is to read it from now on: kMovingCastersConstant). `beforeMakingMap`, when
+// given, runs first (chapter-20: the render thread is waited for, as it may be recording).
 bool updateCascades(const common::Device& device, ShadowPass& pass, uint32_t frame,
                     const std::vector<Cascade>& cascades, const glm::mat4& cameraView,
-                    const common::GpuScene& scene);
+                    const common::GpuScene& scene, const std::function<void()>& beforeMakingMap = {});
 // What records a batch's draws inside the shadow rendering (viewport, scissor and sets 0 and 1 set;
 // `bound` the pipeline bound last): one recordShadowDraw each by default; chapter-19 draws them
 // indirectly.
@@ -126,6 +127,11 @@ using ShadowDrawsRecorder =
     std::function<void(VkCommandBuffer cmd, const std::vector<ShadowDraw>& draws, VkPipeline& bound)>;
 void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ScenePass& scenePass,
                       const common::GpuScene& scene, uint32_t frame, const ShadowDrawsRecorder& draws = {});
+// The same for a plan kept apart from the pass (chapter-20: the plan of the frame being recorded,
+// while the next frame's is made on another thread).
+void recordShadowPass(VkCommandBuffer cmd, ShadowPass& pass, const ShadowPlan& plan,
+                      const ScenePass& scenePass, const common::GpuScene& scene, uint32_t frame,
+                      const ShadowDrawsRecorder& draws);
 void destroyShadowPass(const common::Device& device, ShadowPass& pass);
 // Every layer drawn whole next frame (a resize; a change of --shadow-redraw in the overlay).
 void invalidateShadowCache(ShadowPass& pass, ShadowRedraw redraw);

@@ -120,6 +120,7 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
     const VkBufferUsageFlags addressed =
         options.deviceAddresses ? VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) : 0u;
     pass.maxGroups = device.properties.limits.maxComputeWorkGroupCount[0];
+    pass.dispatch.assign(framesInFlight, 0);
     // Each instance's draws, in the order loadGpuScene made them: its model's meshes, then its repeats.
     std::vector<std::vector<uint32_t>> drawsOf(sceneDesc.models.size());
     for (uint32_t d = 0; d < scene.draws.size(); ++d) drawsOf[scene.draws[d].instance].push_back(d);
@@ -321,7 +322,7 @@ SkinningPass createSkinningPass(const common::Device& device, VkPipelineCache ca
 //> pose
 void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const AnimationClock& clock,
                        uint32_t slot) {
-    pass.record = false;
+    pass.dispatch.at(slot) = 0;
     if (pass.models.empty()) return;
     const bool changed = pass.stale || clock.seconds != pass.posedAt || clock.clip != pass.posedClip;
     for (SkinnedModel& model : pass.models)
@@ -355,7 +356,7 @@ void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const Animat
                     refuse("reaches beyond 1e15 from the origin (or a number that is not finite)");
         }
     }
-    pass.record = true;
+    pass.dispatch[slot] = 1;
     pass.stale = false;
     pass.posedAt = clock.seconds;
     pass.posedClip = clock.clip;
@@ -364,7 +365,7 @@ void poseSkinnedModels(SkinningPass& pass, common::GpuScene& scene, const Animat
 
 //> record-skinning
 void recordSkinningPass(VkCommandBuffer cmd, SkinningPass& pass, uint32_t slot) {
-    if (!pass.record) return;
+    if (!pass.dispatch.at(slot)) return;
     // The posed buffers are read as vertices by the frames before this one (same queue): their
     // reads end before the shader writes, and the last frame's writes (and the fill that made
     // the buffers) are ordered before these.

@@ -99,9 +99,11 @@ struct SkinningPass {
     std::vector<common::Buffer>
         palettes;                // common::PaletteEntry per joint, per frame in flight, host-visible
     uint32_t maxGroups = 65535;  // maxComputeWorkGroupCount[0]: a larger mesh takes more dispatches
-    bool record = false;         // this frame's pose differs from the buffers': dispatch
-    bool stale = true;           // the buffers hold no pose yet (or a reload made a new shader)
-    double posedAt = -1.0;       // the clock time the buffers hold
+    // Per frame in flight: the slot's frame poses differently from the buffers: dispatch. (Kept per
+    // slot: chapter-20 poses the next frame while this one is recorded.)
+    std::vector<uint8_t> dispatch;
+    bool stale = true;      // the buffers hold no pose yet (or a reload made a new shader)
+    double posedAt = -1.0;  // the clock time the buffers hold
     int posedClip = -1;
     uint64_t dispatchedFrames = 0;
     uint64_t vertices = 0;    // skinned per dispatching frame

@@ -183,10 +183,11 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
     reserve(device, frame.commands, instances * sizeof(VkDrawIndexedIndirectCommand),
             VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, name + "draw commands", buffers.grown);
     frame.instanceCount = frame.commandCount = 0;
-    buffers.sceneGroups.clear();
-    buffers.shadowBatches.clear();
-    buffers.sceneCommands = buffers.sceneInstances = buffers.shadowCommands = buffers.shadowInstances = 0;
-    buffers.sceneIndirectDraws = buffers.shadowIndirectDraws = 0;
+    frame.sceneGroups.clear();
+    frame.shadowBatches.clear();
+    frame.sceneCommands = frame.sceneInstances = frame.shadowCommands = frame.shadowInstances = 0;
+    frame.sceneIndirectDraws = frame.shadowIndirectDraws = 0;
+    buffers.lastSlot = slot;
     if (draws == 0) return;  // nothing to draw: nothing made, nothing written
     if (buffers.indices.firstIndex.size() != scene.meshes.size())
         throw common::Failure("chapter-19: the scene has meshes its index buffer was not made with");
@@ -203,9 +204,9 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
     std::vector<std::pair<uint32_t, uint32_t>> order;
     order.reserve(draws);
     for (uint32_t d : buffers.sceneOrder) order.push_back({d, 0u});
-    append(frame, scene, buffers.indices.firstIndex, order, buffers.sceneGroups);
-    buffers.sceneCommands = frame.commandCount;
-    buffers.sceneInstances = frame.instanceCount;
+    append(frame, scene, buffers.indices.firstIndex, order, frame.sceneGroups);
+    frame.sceneCommands = frame.commandCount;
+    frame.sceneInstances = frame.instanceCount;
     // The shadow pass: each batch of the plan's, its draws by (opaque before cut-out, material,
     // mesh), each instance with the cascades the plan sends it to.
     for (const std::vector<ShadowBatch>* batches : {&plan.cached, &plan.moving})
@@ -219,28 +220,28 @@ void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, u
                 return std::tuple(scene.materials[x.material].alphaTested, x.material, x.mesh, a.first) <
                        std::tuple(scene.materials[y.material].alphaTested, y.material, y.mesh, b.first);
             });
-            buffers.shadowBatches.push_back({&batch.draws, {}});
-            append(frame, scene, buffers.indices.firstIndex, order, buffers.shadowBatches.back().groups);
+            frame.shadowBatches.push_back({&batch.draws, {}});
+            append(frame, scene, buffers.indices.firstIndex, order, frame.shadowBatches.back().groups);
         }
-    buffers.shadowCommands = frame.commandCount - buffers.sceneCommands;
-    buffers.shadowInstances = frame.instanceCount - buffers.sceneInstances;
+    frame.shadowCommands = frame.commandCount - frame.sceneCommands;
+    frame.shadowInstances = frame.instanceCount - frame.sceneInstances;
 }
 //< update-buffers
 
 //> record-scene
 void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                          const ScenePass& scenePass) {
-    if (buffers.sceneGroups.empty()) return;
-    const FrameBuffers& frame = buffers.frames[slot];
+    FrameBuffers& frame = buffers.frames[slot];
+    if (frame.sceneGroups.empty()) return;
     const ScenePipelines& pipelines = scenePass.pipelines;
     bindFrame(cmd, pipelines.layout, buffers, frame);
     VkPipeline bound = VK_NULL_HANDLE;
     drawGroups(
-        cmd, buffers, frame, buffers.sceneGroups, pipelines.layout, scenePass,
+        cmd, buffers, frame, frame.sceneGroups, pipelines.layout, scenePass,
         [&](const IndirectGroup& group) {
             return pipelines.pipelines[pipelines.materialClasses.ofMaterial[group.material]];
         },
-        bound, buffers.sceneIndirectDraws);
+        bound, frame.sceneIndirectDraws);
 }
 //< record-scene
 
@@ -248,26 +249,28 @@ void recordIndirectScene(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t s
 void recordIndirectShadowBatch(VkCommandBuffer cmd, GlobalBuffers& buffers, uint32_t slot,
                                const ShadowPass& shadowPass, const ScenePass& scenePass,
                                const std::vector<ShadowDraw>& draws, VkPipeline& bound) {
-    auto batch = std::find_if(buffers.shadowBatches.begin(), buffers.shadowBatches.end(),
-                              [&](const GlobalBuffers::ShadowBatchGroups& b) { return b.draws == &draws; });
-    if (batch == buffers.shadowBatches.end())
+    FrameBuffers& frame = buffers.frames[slot];
+    auto batch = std::find_if(frame.shadowBatches.begin(), frame.shadowBatches.end(),
+                              [&](const FrameBuffers::ShadowBatchGroups& b) { return b.draws == &draws; });
+    if (batch == frame.shadowBatches.end())
         throw common::Failure(
             "chapter-19: a shadow batch was recorded that the frame's update did not write");
-    const FrameBuffers& frame = buffers.frames[slot];
     bindFrame(cmd, shadowPass.pipelineLayout, buffers, frame);
     drawGroups(
         cmd, buffers, frame, batch->groups, shadowPass.pipelineLayout, scenePass,
         [&](const IndirectGroup& group) { return group.alphaTested ? shadowPass.cutout : shadowPass.opaque; },
-        bound, buffers.shadowIndirectDraws);
+        bound, frame.shadowIndirectDraws);
 }
 //< record-shadow
 
-std::string describeGlobalBuffers(const GlobalBuffers& b) {
+std::string describeGlobalBuffers(const GlobalBuffers& buffers) {
+    if (buffers.frames.empty()) return "nothing drawn";
+    const FrameBuffers& b = buffers.frames[buffers.lastSlot];
     return "scene " + std::to_string(b.sceneCommands) + " commands for " + std::to_string(b.sceneInstances) +
            " instances in " + std::to_string(b.sceneIndirectDraws) + " indirect draws; shadow " +
            std::to_string(b.shadowCommands) + " commands for " + std::to_string(b.shadowInstances) +
            " instances in " + std::to_string(b.shadowIndirectDraws) + " indirect draws; " +
-           std::to_string(b.grown) + " buffers made";
+           std::to_string(buffers.grown) + " buffers made";
 }
 
 void destroyGlobalBuffers(const common::Device& device, GlobalBuffers& buffers) {

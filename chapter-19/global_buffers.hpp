@@ -67,14 +67,6 @@ struct GrowingBuffer {
     VkDeviceSize capacity = 0;  // bytes; 0: no buffer yet
 };
 
-// One frame slot's buffers (host-visible and coherent: what the host writes is what the GPU reads).
-struct FrameBuffers {
-    GrowingBuffer matrices;                        // DrawConstants per draw of the scene
-    GrowingBuffer instances;                       // InstanceData: the scene pass's, then the shadow pass's
-    GrowingBuffer commands;                        // VkDrawIndexedIndirectCommand: the same
-    uint32_t instanceCount = 0, commandCount = 0;  // written so far this frame
-};
-
 // The commands of one material: one vkCmdDrawIndexedIndirect (or more past maxDrawIndirectCount).
 struct IndirectGroup {
     uint32_t material = 0;
@@ -82,22 +74,33 @@ struct IndirectGroup {
     uint32_t firstCommand = 0, commandCount = 0;
 };
 
-struct GlobalBuffers {
-    SceneIndices indices;              // what every command's indices index
-    std::vector<FrameBuffers> frames;  // per frame in flight
-    std::vector<uint32_t> sceneOrder;  // the scene's draws by (opaque before cut-out, class, material, mesh)
-    std::vector<IndirectGroup> sceneGroups;  // this frame's scene pass
-    // This frame's shadow batches: which plan batch (its draws), and its groups.
+// One frame slot's buffers (host-visible and coherent: what the host writes is what the GPU reads),
+// and what its frame records from them. Everything a frame writes is its slot's: chapter-20 writes
+// the next frame's slot while this one's is recorded.
+struct FrameBuffers {
+    GrowingBuffer matrices;                        // DrawConstants per draw of the scene
+    GrowingBuffer instances;                       // InstanceData: the scene pass's, then the shadow pass's
+    GrowingBuffer commands;                        // VkDrawIndexedIndirectCommand: the same
+    uint32_t instanceCount = 0, commandCount = 0;  // written so far this frame
+    std::vector<IndirectGroup> sceneGroups;        // the scene pass's
+    // The shadow batches: which plan batch (its draws), and its groups.
     struct ShadowBatchGroups {
         const std::vector<ShadowDraw>* draws = nullptr;
         std::vector<IndirectGroup> groups;
     };
     std::vector<ShadowBatchGroups> shadowBatches;
-    uint32_t maxDrawIndirectCount = 1;
-    // What the last frame drew, for the report and the tests.
+    // What the frame drew, for the report and the tests.
     uint32_t sceneCommands = 0, sceneInstances = 0, shadowCommands = 0, shadowInstances = 0;
-    uint32_t sceneIndirectDraws = 0, shadowIndirectDraws = 0;
-    uint64_t grown = 0;  // buffers made or made larger since the start
+    uint32_t sceneIndirectDraws = 0, shadowIndirectDraws = 0;  // counted as they are recorded
+};
+
+struct GlobalBuffers {
+    SceneIndices indices;              // what every command's indices index
+    std::vector<FrameBuffers> frames;  // per frame in flight
+    std::vector<uint32_t> sceneOrder;  // the scene's draws by (opaque before cut-out, class, material, mesh)
+    uint32_t maxDrawIndirectCount = 1;
+    uint32_t lastSlot = 0;  // the slot written last (the report's)
+    uint64_t grown = 0;     // buffers made or made larger since the start
 };
 
 // The order the scene pass draws in: opaque materials' classes before cut-outs', then by class,
@@ -117,7 +120,8 @@ void appendCommands(const common::GpuScene& scene, const std::vector<uint32_t>& 
 GlobalBuffers createGlobalBuffers(const common::Device& device, const common::GpuScene& scene,
                                   uint32_t framesInFlight);
 // Frame slot `slot`'s matrices, the scene pass's instances and commands (its groups in
-// `sceneGroups`), and the shadow plan's, batch by batch (`shadowBatches`). The slot's previous frame
+// the slot's `sceneGroups`), and the shadow plan's, batch by batch (its `shadowBatches`: `plan` stays
+// alive and unchanged until the frame is recorded). The slot's previous frame
 // is done (its fence waited for): a buffer outgrown is destroyed and made anew at twice the size
 // needed. All the host's work is here: recording only issues the draws.
 void updateGlobalBuffers(const common::Device& device, GlobalBuffers& buffers, uint32_t slot,

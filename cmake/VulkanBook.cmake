@@ -55,6 +55,17 @@ if(VKBOOK_SANITIZE)
     link_libraries(vkbook_keep_libraries_loaded)
 endif()
 
+# -DVKBOOK_TSAN=ON: ThreadSanitizer on every target (chapter-20's test build: tests/chapters/chapter-20.cmake
+# configures chapter-20 alone with it, into build/tsan).
+option(VKBOOK_TSAN "Build with ThreadSanitizer" OFF)
+if(VKBOOK_TSAN AND (MSVC OR WIN32 OR VKBOOK_SANITIZE))
+    message(FATAL_ERROR "VKBOOK_TSAN is for GCC or Clang on Linux, without VKBOOK_SANITIZE")
+endif()
+if(VKBOOK_TSAN)
+    add_compile_options(-fsanitize=thread -fno-omit-frame-pointer -O1 -g1)
+    add_link_options(-fsanitize=thread)
+endif()
+
 # vkbook_warnings(target): the warning set every target of ours builds with.
 function(vkbook_warnings target)
     if(MSVC)

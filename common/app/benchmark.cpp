@@ -89,10 +89,11 @@ void addCpuFrame(FrameStats& stats, uint32_t frame, double ms) {
     if (frame >= stats.warmup) stats.cpuMs.push_back(ms);
 }
 
-void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs) {
+void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs, double submitMs) {
     if (frame < stats.warmup) return;
     stats.updateMs.push_back(updateMs);
     stats.recordMs.push_back(recordMs);
+    stats.submitMs.push_back(submitMs);
 }
 
 namespace {
@@ -134,7 +135,8 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", "CPU frame", cpu.median, cpu.p95, cpu.min, cpu.max);
     report["cpu_frame_ms"] = toJson(cpu, stats.cpuMs);
     for (const auto& [name, key, values] : {std::tuple{"CPU update", "cpu_update_ms", &stats.updateMs},
-                                            std::tuple{"CPU record", "cpu_record_ms", &stats.recordMs}}) {
+                                            std::tuple{"CPU record", "cpu_record_ms", &stats.recordMs},
+                                            std::tuple{"CPU submit", "cpu_submit_ms", &stats.submitMs}}) {
         if (values->empty()) continue;
         Summary step = summarize(*values);
         std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", name, step.median, step.p95, step.min, step.max);

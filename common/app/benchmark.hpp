@@ -57,6 +57,7 @@ struct FrameStats {
     std::vector<std::string> passes;
     std::vector<double> cpuMs;               // per measured frame
     std::vector<double> updateMs, recordMs;  // per measured frame: the update step, the recording
+    std::vector<double> submitMs;            // per measured frame: the submission and the presentation
     std::vector<std::vector<double>> gpuMs;  // per measured frame: whole frame, then each pass
     double startupMs = 0;                    // process start (runChapter) to the first presented frame
     bool gpuTimestamps = false;
@@ -65,9 +66,10 @@ struct FrameStats {
 FrameStats createFrameStats(const Options& options, std::vector<std::string> passes);
 // Frame `frame` took `ms` on the CPU (counted once past the warm-up).
 void addCpuFrame(FrameStats& stats, uint32_t frame, double ms);
-// Frame `frame`'s update step (the chapter's: uniforms, instance data) and the recording of its
-// passes (the GUI's excluded) took these many CPU milliseconds.
-void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs);
+// Frame `frame`'s update step (the chapter's: uniforms, instance data), the recording of its
+// passes (the GUI's excluded), and its submission and presentation (the GUI's recording included)
+// took these many CPU milliseconds.
+void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs, double submitMs);
 // The table on stdout, and the JSON file. `info` names what was measured (device, driver,
 // resolution, layout, frames in flight...).
 void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::string, std::string>>& info);

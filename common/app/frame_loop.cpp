@@ -51,8 +51,6 @@ void timedPass(const RenderContext& c, FrameCommands& frame, const std::function
     endPass(c.run, frame.cmd, frame.slot, frame.pass++);
 }
 
-namespace {
-
 //> reload
 // Live reload: new pipelines for the passes whose shaders changed are made from the new code
 // while the frames in flight still draw with the old ones; then the new ones take their place,
@@ -84,8 +82,6 @@ bool recreateTarget(RenderContext& c, const FrameSteps& steps) {
     if (c.gui.enabled) retargetGuiPass(c.device, c.pipelineCache.handle, c.guiPass, c.target.encodedFormat);
     return true;
 }
-
-}  // namespace
 
 //> frame-loop
 void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
@@ -145,7 +141,7 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
             .cmd = sync.commandBuffer, .slot = slot, .frame = frame, .imageIndex = imageIndex};
         double recordStart = millisecondsSinceStart();
         steps.record(commands);
-        addCpuSteps(c.run.stats, frame, updateMs, millisecondsSinceStart() - recordStart);
+        double recordMs = millisecondsSinceStart() - recordStart;
         if (steps.acquireLate) {
             // The off-screen passes go to the GPU now, with nothing to wait for; the image is
             // acquired only for the passes that write it, recorded into a second command buffer.
@@ -166,6 +162,7 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
             commands.imageIndex = imageIndex;
             VK_CHECK(vkBeginCommandBuffer(commands.cmd, &beginInfo));
         }
+        double submitStart = millisecondsSinceStart();
         if (steps.present) steps.present(commands);
         if (c.gui.enabled)
             timedPass(c, commands,
@@ -193,6 +190,7 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
 
         if (lastFrame) screenshotLastFrame(c.run, c.device, c.target, imageIndex);
         bool current = presentTargetImage(c.target, c.device, imageIndex, sync.inFlight);
+        addCpuSteps(c.run.stats, frame, updateMs, recordMs, millisecondsSinceStart() - submitStart);
         endFrame(c.run, frame);
         if (lastFrame) break;
         if (!current && !recreateTarget(c, steps)) break;

@@ -97,6 +97,16 @@ struct FrameSteps {
 // Frames until the last (--frames, the window closed, Ctrl+C), then vkDeviceWaitIdle.
 void runFrameLoop(RenderContext& context, const FrameSteps& steps);
 
+// Two steps of the loop, for a chapter that writes its own (chapter-20's, on two threads); the
+// caller makes sure that no frame is being recorded meanwhile.
+// Live reload: `steps.remakePipelines` (and the GUI's) for the changed shaders, swapped in at frame
+// `frame`, or none and the error shown.
+void reloadShaders(RenderContext& context, const FrameSteps& steps, const ShaderReload& reload,
+                   uint32_t frame);
+// The window changed size: the device waited for, the swapchain and `steps.resize`. False when the
+// window is gone.
+bool recreateTarget(RenderContext& context, const FrameSteps& steps);
+
 // After the loop, what every chapter from 15 on reports: where the camera went (when it moved),
 // --benchmark's report with `info` (common::benchmarkInfo and the chapter's rows), the GUI
 // buffers' growth, where the lights went (when they moved).

@@ -66,6 +66,12 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
 }
 
 void endFrame(RunControl& run, uint32_t frame) {
+    endFrame(
+        run, frame,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count());
+}
+
+void endFrame(RunControl& run, uint32_t frame, double cpuMs) {
     if (frame == 0) run.stats.startupMs = millisecondsSinceStart();
     // For test scripts that drive a window (tests/desktops/frames.sh): with VKBOOK_TEST_EVENTS set,
     // each frame's end is a line, so that a script waits for frames, never for a guessed time.
@@ -74,8 +80,7 @@ void endFrame(RunControl& run, uint32_t frame) {
         std::printf("test-event: frame %u ended\n", frame);
         std::fflush(stdout);
     }
-    run.lastCpuMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run.frameStart).count();
+    run.lastCpuMs = cpuMs;
     addCpuFrame(run.stats, frame, run.lastCpuMs);
 }
 

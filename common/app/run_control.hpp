@@ -57,6 +57,9 @@ void screenshotLastFrame(const RunControl& run, const Device& device, const Targ
                          uint32_t imageIndex);
 // After presenting: the startup time (first frame) and the frame's CPU time.
 void endFrame(RunControl& run, uint32_t frame);
+// The same with the frame's CPU time given (chapter-20: the time between two frames handed to the
+// render thread).
+void endFrame(RunControl& run, uint32_t frame, double cpuMs);
 // After the loop and vkDeviceWaitIdle: the remaining GPU times and the --benchmark report, with
 // `info` saying what was measured (common::benchmarkInfo, plus anything chapter-specific).
 void reportRun(RunControl& run, const Device& device,

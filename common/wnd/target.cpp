@@ -449,12 +449,21 @@ void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
 }  // namespace
 
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex, VkFence frameDone) {
+    // A present that waited more than 100 ms: frames are long, and the next one is waited for here,
+    // where the window's events can be read (a present that waits reads none).
+    const auto start = std::chrono::steady_clock::now();
+    if (target.window && frameDone != VK_NULL_HANDLE && target.lastPresentMs > 100.0)
+        waitReadingEvents(target, device, frameDone);
+    bool current = presentImage(target, device, imageIndex);
+    if (target.window)  // the wait for the frame counted in
+        target.lastPresentMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return current && !target.resized;
+}
+
+bool presentImage(Target& target, const Device& device, uint32_t imageIndex) {
     if (target.window) {
-        // A present that waited more than 100 ms: frames are long, and the next one is waited for
-        // here, where the window's events can be read (a present that waits reads none).
         const auto presentStart = std::chrono::steady_clock::now();
-        if (frameDone != VK_NULL_HANDLE && target.lastPresentMs > 100.0)
-            waitReadingEvents(target, device, frameDone);
         // VK_EXT_swapchain_maintenance1: a fence that says when this presentation is done.
         VkSwapchainPresentFenceInfoEXT fenceInfo{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT,
                                                  .swapchainCount = 1};
@@ -486,7 +495,7 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
         target.presentedSinceRetiring[imageIndex] = true;
         if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
         VK_CHECK_RESULT(result, "vkQueuePresentKHR");
-        return !target.resized;
+        return true;
     }
     // Headless: nothing to show, but the semaphore is consumed as a present would consume it.
     // The batch is empty, so no stage of it waits: BOTTOM_OF_PIPE (ALL_COMMANDS would say the
@@ -499,7 +508,7 @@ bool presentTargetImage(Target& target, const Device& device, uint32_t imageInde
         .pWaitDstStageMask = &waitStage,
     };
     VK_CHECK(vkQueueSubmit(device.queue, 1, &consume, VK_NULL_HANDLE));
-    return !target.resized;
+    return true;
 }
 
 bool recreateTargetImages(Target& target, const Device& device) {

@@ -114,6 +114,10 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
 // meanwhile, so that a window closed during a long frame stops the run (common/core/stop.hpp).
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex,
                         VkFence frameDone = VK_NULL_HANDLE);
+// The presentation alone: false when the swapchain is out of date or suboptimal. It reads nothing
+// that the window's events write (no GLFW call, not `resized`): chapter-20 presents from a thread
+// of its own while the main thread reads the events.
+bool presentImage(Target& target, const Device& device, uint32_t imageIndex);
 // Waits for the device, then rebuilds images at the new size. A minimised window (zero-size
 // framebuffer) is waited out. Returns false if the window was closed while waiting.
 bool recreateTargetImages(Target& target, const Device& device);

@@ -7,7 +7,8 @@
 Each chapter-NN/ with NN >= 15, and chapter-15-lab/, is the book's Main (main.cpp) and Render
 (render.cpp), and runs on the frame loop of common/app/frame_loop.cpp: none of its files acquires,
 submits or presents a frame itself (the calls below), and its main.cpp hands the loop its steps.
-Chapters 06, 10 and 14 write their loop out and are not checked.
+Chapters 06, 10 and 14 write their loop out and are not checked. chapter-20 writes its own, on two
+threads, where that is the lesson: in frame_threads.cpp only, and its main.cpp runs it.
 """
 import os
 import re
@@ -17,6 +18,10 @@ import tempfile
 # What only the frame loop calls from chapter 15 on: the frame's acquire, submit and present.
 LOOP_CALLS = re.compile(r'\b(acquireTargetImage|presentTargetImage|QueueSubmit2?|vkAcquireNextImageKHR|'
                         r'vkQueuePresentKHR|beginFrame|endFrame)\s*\(')
+
+
+# A chapter whose own loop is its lesson: the file that holds it, and what its main.cpp calls.
+OWN_LOOPS = {'chapter-20': ('frame_threads.cpp', 'runThreadedFrameLoop(')}
 
 
 def chapters(repo):
@@ -42,15 +47,16 @@ def check(repo):
                 for number, line in enumerate(f, 1):
                     code = line.split('//', 1)[0]
                     call = LOOP_CALLS.search(code)
-                    if call:
+                    if call and OWN_LOOPS.get(chapter, ('',))[0] != name:
                         problems.append(f'{chapter}/{name}:{number}: calls {call.group(1)}: the frame loop is '
                                         'common/app/frame_loop.cpp\'s from chapter 15 on')
         main = os.path.join(folder, 'main.cpp')
         if os.path.isfile(main):
             with open(main, encoding='utf-8') as f:
                 text = f.read()
-            if 'common::runFrameLoop(' not in text:
-                problems.append(f'{chapter}/main.cpp: does not run common::runFrameLoop')
+            loop = OWN_LOOPS.get(chapter, (None, 'common::runFrameLoop('))[1]
+            if loop not in text:
+                problems.append(f'{chapter}/main.cpp: does not run {loop.rstrip("(")}')
     if not found:
         problems.append('no chapter from 15 on found')
     return problems
@@ -76,6 +82,15 @@ def self_test():
         'chapter-14 writes its loop out': ({'chapter-14/main.cpp': 'acquireTargetImage(t);\n',
                                             'chapter-15/main.cpp': good_main, 'chapter-15/render.cpp': '',
                                             'chapter-15/render.hpp': ''}, None),
+        'chapter-20 writes its threads\' loop out': ({'chapter-20/main.cpp': 'runThreadedFrameLoop(c, s);\n',
+                                                     'chapter-20/render.cpp': '', 'chapter-20/render.hpp': '',
+                                                     'chapter-20/frame_threads.cpp': 'presentImage(t);\n'
+                                                                                     'QueueSubmit2(q);\n'}, None),
+        'chapter-20 submits from its Render': ({'chapter-20/main.cpp': 'runThreadedFrameLoop(c, s);\n',
+                                                'chapter-20/render.hpp': '',
+                                                'chapter-20/render.cpp': 'QueueSubmit2(q);\n'}, 'calls QueueSubmit2'),
+        'chapter-20 without its loop': ({'chapter-20/main.cpp': good_main, 'chapter-20/render.cpp': '',
+                                         'chapter-20/render.hpp': ''}, 'does not run runThreadedFrameLoop'),
     }
     failures = 0
     for title, (files, expected) in cases.items():

@@ -113,7 +113,7 @@ TEST(GlobalBuffers, AnEmptySceneMakesNothing) {
     EXPECT_EQ(buffers.frames[0].matrices.buffer.handle, VK_NULL_HANDLE);
     EXPECT_EQ(buffers.frames[0].instances.buffer.handle, VK_NULL_HANDLE);
     EXPECT_EQ(buffers.frames[0].commands.buffer.handle, VK_NULL_HANDLE);
-    EXPECT_TRUE(buffers.sceneGroups.empty());
+    EXPECT_TRUE(buffers.frames[0].sceneGroups.empty());
 }
 
 // The one path no scene of the chapter's tests reaches (each frame slot's first frame needs the most):
@@ -143,8 +143,8 @@ TEST(GlobalBuffers, ABufferOutgrownIsMadeAgainAtTwiceTheNeed) {
     EXPECT_EQ(buffers.grown, 5u);
     EXPECT_EQ(buffers.frames[0].instances.capacity, 2 * 1010 * sizeof(InstanceData));
     EXPECT_EQ(buffers.frames[0].commands.capacity, 2 * 1010 * sizeof(VkDrawIndexedIndirectCommand));
-    EXPECT_EQ(buffers.shadowInstances, 1000u);
-    EXPECT_EQ(buffers.shadowCommands, 1u);  // one mesh, one material: one command
+    EXPECT_EQ(buffers.frames[buffers.lastSlot].shadowInstances, 1000u);
+    EXPECT_EQ(buffers.frames[buffers.lastSlot].shadowCommands, 1u);  // one mesh, one material: one command
     const auto* instances = static_cast<const InstanceData*>(buffers.frames[0].instances.buffer.mapped);
     EXPECT_EQ(instances[10 + 999].layers, 1u);  // the shadow instances after the scene's, their cascades kept
     // The same frame again: it fits, nothing is made.
