@@ -64,6 +64,10 @@ endif()
 if(VKBOOK_TSAN)
     add_compile_options(-fsanitize=thread -fno-omit-frame-pointer -O1 -g1)
     add_link_options(-fsanitize=thread)
+    # The driver and layers stay loaded: ThreadSanitizer's suppressions name the validation layer
+    # (tests/reliability/tsan/tsan.supp), and refuse a library unloaded under them.
+    add_library(vkbook_keep_libraries_loaded OBJECT ${CMAKE_CURRENT_LIST_DIR}/keep_libraries_loaded.cpp)
+    link_libraries(vkbook_keep_libraries_loaded)
 endif()
 
 # vkbook_warnings(target): the warning set every target of ours builds with.

@@ -1,4 +1,4 @@
-// Linked into every program of a sanitizer build (-DVKBOOK_SANITIZE=ON) only.
+// Linked into every program of a sanitizer build (-DVKBOOK_SANITIZE=ON or -DVKBOOK_TSAN=ON) only.
 //
 // The Vulkan loader dlclose()s the driver (lavapipe) and the layers at vkDestroyInstance, before
 // LeakSanitizer looks for leaks at exit. Anything those libraries leaked would then be reported

@@ -231,3 +231,16 @@ live_test(live-reload.chapter-19.indirect-vertex-edit edit chapter-19/scene.vert
     --device llvmpipe --animation-time 0.4)
 set_property(TEST live-reload.chapter-19.indirect-vertex-edit APPEND PROPERTY ENVIRONMENT
              "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")
+# chapter-20: the same edit, the pipelines made again at the threads' meeting while the render
+# thread waits; and again in the ThreadSanitizer build (tests/chapters/chapter-20.cmake), 0 reports.
+live_test(live-reload.chapter-20.indirect-vertex-edit edit chapter-19/scene.vert=chapter-20/scene.vert
+    COMMAND $<TARGET_FILE:chapter-20> --device llvmpipe --animation-time 0.4)
+set_property(TEST live-reload.chapter-20.indirect-vertex-edit APPEND PROPERTY ENVIRONMENT
+             "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")
+if(TARGET chapter-20 AND TSAN_CH20)
+    live_test(tsan.chapter-20.live-reload edit chapter-19/scene.vert=chapter-20/scene.vert
+        COMMAND ${TSAN_CH20} --device llvmpipe --animation-time 0.4)
+    set_tests_properties(tsan.chapter-20.live-reload PROPERTIES FIXTURES_REQUIRED tsan-chapter-20)
+    set_property(TEST tsan.chapter-20.live-reload APPEND PROPERTY ENVIRONMENT ${tsan_env}
+                 "GOOD=    outNormal = vec3(0.0, 1.0, 0.0)\;  // live_reload.sh")
+endif()
