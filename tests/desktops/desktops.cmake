@@ -247,6 +247,10 @@ foreach(feature multiDrawIndirect drawIndirectFirstInstance)
         COMMAND $<TARGET_FILE:chapter-19> --device llvmpipe --validation --headless
         EXPECT_EXIT 1 EXPECT_STDERR "it lacks the ${feature} feature" ONE_LINE_STDERR)
 endforeach()
+# chapter-20 asks for chapter-19's features: the same line, before any thread is started.
+desktop_device_test(desktop.no-multiDrawIndirect.chapter-20 VKBOOK_HIDE=multiDrawIndirect
+    COMMAND $<TARGET_FILE:chapter-20> --device llvmpipe --validation --headless
+    EXPECT_EXIT 1 EXPECT_STDERR "it lacks the multiDrawIndirect feature" ONE_LINE_STDERR)
 # Headless on a device that cannot render to B8G8R8A8_SRGB: R8G8B8A8_SRGB, the same image.
 desktop_image_test(desktop.no-bgra-srgb.chapter-06 ${GOLDEN}/chapter-06.png
     COMMAND $<TARGET_FILE:chapter-06> --device llvmpipe --validation --headless --benchmark --warmup 0 --frames 1

@@ -92,6 +92,13 @@ windows_test(windows.chapter-19-final WORKDIR /
     EXPECT_STDOUT "skinning check: 1241 vertices in 2 meshes.*guards intact" QUIET_STDERR)
 windows_image(windows.chapter-19-final ${WIN_OUT}/chapter-19-final.png --size 640 360
     --golden ${GOLDEN}/chapter-17-final.png ${GOLDEN_MATCH})
+# chapter-20: the same frame on two threads (std::thread on MinGW-w64's POSIX threads), walking.
+windows_test(windows.chapter-20-final WORKDIR /
+    COMMAND ${WIN_RUN} $<TARGET_FILE:chapter-20> --device llvmpipe --validation --headless ${SIZE}
+            --animation-time 0.4 --check-skinning --screenshot ${WIN_OUT}/chapter-20-final.png
+    EXPECT_STDOUT "skinning check: 1241 vertices in 2 meshes.*guards intact" QUIET_STDERR)
+windows_image(windows.chapter-20-final ${WIN_OUT}/chapter-20-final.png --size 640 360
+    --golden ${GOLDEN}/chapter-17-final.png ${GOLDEN_MATCH})
 # The default courtyard as glTF (tinygltf, fetched for this build): the OBJ form's golden images.
 foreach(number 10 14 15)
     windows_test(windows.chapter-${number}-gltf WORKDIR /

@@ -96,7 +96,8 @@ foreach(spec "06;3;8;vkQueueSubmit:9;4"
              "16;47;66;vkQueueSubmit2:3;5"
              "17;64;83;vkQueueSubmit2:3;5"
              "18;64;83;vkQueueSubmit2:3;5"
-             "19;64;90;vkQueueSubmit2:3;5")
+             "19;64;90;vkQueueSubmit2:3;5"
+             "20;64;90;vkQueueSubmit2:3;5")
     list(GET spec 0 number)
     list(GET spec 1 gbuffer)
     list(GET spec 2 resize)
@@ -155,6 +156,18 @@ fault_test(fault.chapter-18.oom-posed-vertices FAULT vkAllocateMemory:58
 fault_test(fault.chapter-19.oom-draw-commands FAULT vkAllocateMemory:84
     COMMAND $<TARGET_FILE:chapter-19> --device llvmpipe --validation --headless --width 320 --height 180
     EXPECT_STDERR "^chapter-19: error: ${OOM_NAMED}frame 0 draw commands\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
+# chapter-20: the same on its main thread -- frame 1's update, while the render thread draws frame 0:
+# the moving casters' map (made once the render thread has been waited for) and frame 1's instances.
+# Its render thread's failures are the loop's submit above (lost-at-frame-3-submit), handed to the
+# main thread and ended there with one line.
+foreach(spec "85;shadow moments: moving casters" "87;frame 1 instances")
+    list(GET spec 0 n)
+    list(GET spec 1 what)
+    string(REGEX REPLACE "[^a-z0-9]+" "-" case "${what}")
+    fault_test(fault.chapter-20.oom-${case} FAULT vkAllocateMemory:${n}
+        COMMAND $<TARGET_FILE:chapter-20> --device llvmpipe --validation --headless --width 320 --height 180 --frames 3
+        EXPECT_STDERR "^chapter-20: error: ${OOM_NAMED}${what}\" failed with VK_ERROR_OUT_OF_DEVICE_MEMORY \\(memory.cpp:[0-9]+\\)\n$")
+endforeach()
 # The moving casters' map (chapter-16/shadow_pass.cpp), made mid-run the first time a caster moves
 # (--light-motion walk: the point light's marker): one line naming it, exit code 1.
 fault_test(fault.chapter-16.oom-moving-casters FAULT vkAllocateMemory:65

@@ -58,5 +58,6 @@ names_test(names.chapter-16 LABELS shadow,scene,light,post,gui COMMAND $<TARGET_
 names_test(names.chapter-17 LABELS skinning,shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-17> --gui)
 names_test(names.chapter-18 LABELS skinning,shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-18> --gui)
 names_test(names.chapter-19 LABELS skinning,shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-19> --gui)
+names_test(names.chapter-20 LABELS skinning,shadow,scene,light,post,gui COMMAND $<TARGET_FILE:chapter-20> --gui)
 names_test(names.chapter-15-lab-shadows LABELS shadow,scene,light,post
     COMMAND $<TARGET_FILE:chapter-15-lab> --shadows pcf3 --shadow-layers passes)
