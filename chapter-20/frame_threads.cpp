@@ -233,24 +233,29 @@ void runThreadedFrameLoop(common::RenderContext& c, const ThreadedSteps& steps) 
         for (uint32_t frame = 0;; ++frame) {
             bool last = common::beginFrame(c.run, c.target, frame);  // the window's events
             uint32_t slot = frame % inFlight;
-            double mainStart = common::millisecondsSinceStart();
+            double inputStart = common::millisecondsSinceStart();
             if (c.target.window) {
                 double now = glfwGetTime();
                 steps.input(c.target.window, float(now - lastTime), !common::guiWantsKeyboard(c.gui),
                             !common::guiWantsMouse(c.gui));
                 lastTime = now;
             }
+            double inputMs = common::millisecondsSinceStart() - inputStart;
             // The slot is written once the frame that last read it is done: with one frame in
             // flight that frame is the one being recorded, so it is met first.
             if (inFlight == 1 && !meetRender()) break;
             common::FrameSync& sync = c.frames[slot];
+            double waitStart = common::millisecondsSinceStart();
             VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+            common::addFenceWait(c.run.stats, frame, common::millisecondsSinceStart() - waitStart);
             common::releaseRetiredPipelines(c.device, frame, inFlight);
             common::collectGpuTimes(c.run, c.device, slot);
+            double updateStart = common::millisecondsSinceStart();
             steps.update(frame, slot, [&] {
                 if (!meetRender()) common::requestStop(false);
             });
-            double mainMs = common::millisecondsSinceStart() - mainStart;
+            // The main thread's work on the frame (--benchmark's "CPU update"): its waits left out.
+            double mainMs = inputMs + common::millisecondsSinceStart() - updateStart;
 
             // The meeting: the frame before is presented; nothing is recorded until this one is
             // handed over. What changes what the render thread uses happens here.

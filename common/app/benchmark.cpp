@@ -96,6 +96,10 @@ void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double reco
     stats.submitMs.push_back(submitMs);
 }
 
+void addFenceWait(FrameStats& stats, uint32_t frame, double ms) {
+    if (frame >= stats.warmup) stats.waitMs.push_back(ms);
+}
+
 namespace {
 
 struct Summary {
@@ -134,9 +138,11 @@ void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::s
     Summary cpu = summarize(stats.cpuMs);
     std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", "CPU frame", cpu.median, cpu.p95, cpu.min, cpu.max);
     report["cpu_frame_ms"] = toJson(cpu, stats.cpuMs);
-    for (const auto& [name, key, values] : {std::tuple{"CPU update", "cpu_update_ms", &stats.updateMs},
-                                            std::tuple{"CPU record", "cpu_record_ms", &stats.recordMs},
-                                            std::tuple{"CPU submit", "cpu_submit_ms", &stats.submitMs}}) {
+    for (const auto& [name, key, values] :
+         {std::tuple{"CPU update", "cpu_update_ms", &stats.updateMs},
+          std::tuple{"CPU record", "cpu_record_ms", &stats.recordMs},
+          std::tuple{"CPU submit", "cpu_submit_ms", &stats.submitMs},
+          std::tuple{"CPU fence wait", "cpu_fence_wait_ms", &stats.waitMs}}) {
         if (values->empty()) continue;
         Summary step = summarize(*values);
         std::printf("%-18s %10.3f %10.3f %10.3f %10.3f\n", name, step.median, step.p95, step.min, step.max);

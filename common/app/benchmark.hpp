@@ -58,6 +58,7 @@ struct FrameStats {
     std::vector<double> cpuMs;               // per measured frame
     std::vector<double> updateMs, recordMs;  // per measured frame: the update step, the recording
     std::vector<double> submitMs;            // per measured frame: the submission and the presentation
+    std::vector<double> waitMs;              // per measured frame: the wait for the slot's fence
     std::vector<std::vector<double>> gpuMs;  // per measured frame: whole frame, then each pass
     double startupMs = 0;                    // process start (runChapter) to the first presented frame
     bool gpuTimestamps = false;
@@ -70,6 +71,8 @@ void addCpuFrame(FrameStats& stats, uint32_t frame, double ms);
 // passes (the GUI's excluded), and its submission and presentation (the GUI's recording included)
 // took these many CPU milliseconds.
 void addCpuSteps(FrameStats& stats, uint32_t frame, double updateMs, double recordMs, double submitMs);
+// Frame `frame` waited this long for its slot's fence (the GPU still drawing the frame before).
+void addFenceWait(FrameStats& stats, uint32_t frame, double ms);
 // The table on stdout, and the JSON file. `info` names what was measured (device, driver,
 // resolution, layout, frames in flight...).
 void reportBenchmark(const FrameStats& stats, const std::vector<std::pair<std::string, std::string>>& info);

@@ -113,7 +113,9 @@ void runFrameLoop(RenderContext& c, const FrameSteps& steps) {
 
         // The book's Render.render: wait until this slot's previous frame is done, then acquire
         // the image to present.
+        double waitStart = millisecondsSinceStart();
         VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+        addFenceWait(c.run.stats, frame, millisecondsSinceStart() - waitStart);
         releaseRetiredPipelines(c.device, frame, c.framesInFlight);
         collectGpuTimes(c.run, c.device, slot);
         uint32_t imageIndex = 0;
