@@ -34,7 +34,7 @@ if(XVFB_RUN)
     endforeach()
 endif()
 
-foreach(number 06 10 14 15 16 17 18 19)
+foreach(number 06 10 14 15 16 17 18 19 20)
     set(run $<TARGET_FILE:chapter-${number}> --device llvmpipe --validation --width 320 --height 180 --frames 3)
     string(REPLACE ";" "\\;" accepted "${ACCEPTED_BEST_PRACTICES}")
     string(REPLACE ";" "\\;" headless "${run};--headless")
