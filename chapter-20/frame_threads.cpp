@@ -24,6 +24,7 @@ struct FrameJob {
     bool last = false;              // the run's last frame: --screenshot takes its image
     ImDrawData* overlay = nullptr;  // --gui: the overlay's lists, kept until the next meeting
     double mainMs = 0.0;            // the main thread's time on it: input and update
+    uint64_t target = 0;            // the target (window size) its slot was written for
 };
 
 // What the render thread answers once the frame is presented (or could not be).
@@ -208,17 +209,34 @@ void runThreadedFrameLoop(common::RenderContext& c, const ThreadedSteps& steps) 
     {
         RenderThread render(c, steps);
         std::optional<FrameJob> unanswered;  // handed, its answer not yet read
+        uint64_t target = 0;                 // counts the times the target was made again
         double lastTime = glfwGetTime();
         auto lastMeeting = std::chrono::steady_clock::now();
-        // The answer of the frame handed last: a frame the out-of-date swapchain kept from being
-        // drawn is handed again once the target is made again (its slot is written and still its).
-        auto meetRender = [&]() -> bool {
+        // The window made again (a new size; the render thread waits): frames whose slots were
+        // written for the old size are written again before they are handed over.
+        auto remakeTarget = [&]() -> bool {
+            if (!common::recreateTarget(c, targetSteps)) return false;
+            ++target;
+            return true;
+        };
+        bool outOfDate = false;  // the last presentation said the target must be made again
+        std::function<bool()> meetRender;
+        auto rewriteFor = [&](FrameJob& job) {
+            if (job.target == target) return;
+            steps.update(job.frame, job.slot, [&] { meetRender(); });
+            job.target = target;
+        };
+        // The answer of the frame handed last. A frame the out-of-date swapchain kept from being
+        // drawn is handed again once the target is made again (its slot is written and still its),
+        // reading the window's events between tries: a close, or Ctrl+C, ends the run.
+        meetRender = [&]() -> bool {
             FrameDone done = render.meet();
             if (!unanswered) return true;
-            const FrameJob job = *unanswered;
+            FrameJob job = *unanswered;
             unanswered.reset();
             while (!done.drawn) {
-                if (!common::recreateTarget(c, targetSteps)) return false;
+                if (common::pollTarget(c.target) || common::stopRequested() || !remakeTarget()) return false;
+                rewriteFor(job);
                 render.hand(job);
                 done = render.meet();
             }
@@ -227,10 +245,13 @@ void runThreadedFrameLoop(common::RenderContext& c, const ThreadedSteps& steps) 
             common::endFrame(c.run, job.frame,
                              std::chrono::duration<double, std::milli>(now - lastMeeting).count());
             lastMeeting = now;
-            if (!done.current) c.target.resized = true;  // made again below, before the next frame
+            if (!done.current) outOfDate = true;  // made again at the meeting, before the next frame
             return true;
         };
         for (uint32_t frame = 0;; ++frame) {
+            // A new size seen before this frame's events is taken at its meeting; one its events
+            // bring, at the next (the frame is drawn at the size it was begun with, as chapter-19's).
+            bool resized = c.target.resized;
             bool last = common::beginFrame(c.run, c.target, frame);  // the window's events
             uint32_t slot = frame % inFlight;
             double inputStart = common::millisecondsSinceStart();
@@ -240,17 +261,23 @@ void runThreadedFrameLoop(common::RenderContext& c, const ThreadedSteps& steps) 
                             !common::guiWantsMouse(c.gui));
                 lastTime = now;
             }
+            steps.advance(frame);
             double inputMs = common::millisecondsSinceStart() - inputStart;
             // The slot is written once the frame that last read it is done: with one frame in
             // flight that frame is the one being recorded, so it is met first.
             if (inFlight == 1 && !meetRender()) break;
             common::FrameSync& sync = c.frames[slot];
             double waitStart = common::millisecondsSinceStart();
-            VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
+            if (c.target
+                    .window)  // reading the window's events meanwhile: a close is seen during a long frame
+                common::waitForFrame(c.target, c.device, sync.inFlight);
+            else
+                VK_CHECK(vkWaitForFences(c.device.handle, 1, &sync.inFlight, VK_TRUE, UINT64_MAX));
             common::addFenceWait(c.run.stats, frame, common::millisecondsSinceStart() - waitStart);
             common::releaseRetiredPipelines(c.device, frame, inFlight);
             common::collectGpuTimes(c.run, c.device, slot);
             double updateStart = common::millisecondsSinceStart();
+            FrameJob job{.frame = frame, .slot = slot, .last = last, .target = target};
             steps.update(frame, slot, [&] {
                 if (!meetRender()) common::requestStop(false);
             });
@@ -260,10 +287,12 @@ void runThreadedFrameLoop(common::RenderContext& c, const ThreadedSteps& steps) 
             // The meeting: the frame before is presented; nothing is recorded until this one is
             // handed over. What changes what the render thread uses happens here.
             if (!meetRender()) break;
-            if (c.target.resized && !common::recreateTarget(c, targetSteps)) break;
+            if ((resized || outOfDate) && !remakeTarget()) break;
+            outOfDate = false;
+            rewriteFor(job);
             if (common::ShaderReload reload = common::pollShaderSources())
                 common::reloadShaders(c, targetSteps, reload, frame);
-            FrameJob job{.frame = frame, .slot = slot, .last = last, .mainMs = mainMs};
+            job.mainMs = mainMs;
             if (c.gui.enabled) {
                 job.overlay = common::drawGui(c.gui, c.target, frame, steps.overlay);
                 common::updateGuiBuffers(c.device, c.guiPass, slot, job.overlay);

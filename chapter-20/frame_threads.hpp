@@ -10,7 +10,8 @@
 // - what recording reads of the update is the slot's (render.hpp's FrameSnapshot), never the live
 //   camera, lights or clock;
 // - every GLFW call is the main thread's; the render thread answers whether the window must be
-//   remade, and the main thread remakes it while no frame is recorded;
+//   remade, and the main thread remakes it while no frame is recorded, and writes again the slot of
+//   a frame written for the old size;
 // - a failure on either thread ends the run: the render thread's is handed to the main thread at
 //   their next meeting and thrown there.
 #pragma once
@@ -28,10 +29,13 @@ struct ThreadedSteps {
     std::function<void()> overlay;
     std::function<void()> resize;
     // The main thread, while the render thread records the frame before: the keys and mouse (in a
-    // window), then the update -- what moves (`frame`'s time and test motion), and what frame
-    // `frame` draws written to its slot `slot`, whose fence has signalled. `waitForRender` waits
-    // until no frame is recorded (for what the update must change under the render thread).
+    // window); what moves (`advance`: frame `frame`'s time and test motion); then what frame
+    // `frame` draws, written to its slot `slot`, whose fence has signalled (`update`).
+    // `waitForRender` waits until no frame is recorded (for what the update must change under the
+    // render thread). When the window is made again before the frame is handed over, `update`
+    // runs again for the new size (`advance` does not).
     std::function<void(GLFWwindow* window, float seconds, bool keys, bool mouse)> input;
+    std::function<void(uint32_t frame)> advance;
     std::function<void(uint32_t frame, uint32_t slot, const std::function<void()>& waitForRender)> update;
     // The render thread: the frame's passes, from its slot (`frame.slot`) and what stays.
     std::function<void(common::FrameCommands& frame)> record;

@@ -297,11 +297,14 @@ void run(const common::Options& options) {
                           .resize = [&] { resizeRender(c.context, c.render); },
                           .input = [&](GLFWwindow* window, float seconds, bool keys,
                                        bool mouse) { handleInput(c, window, seconds, keys, mouse); },
-                          .update =
-                              [&](uint32_t frame, uint32_t slot, const std::function<void()>& waitForRender) {
+                          .advance =
+                              [&](uint32_t frame) {
                                   common::moveForTesting(c.testMotion, frame, c.camera, c.lightControls,
                                                          c.scene, c.render.gpuScene);
                                   advanceClock(c, frame);
+                              },
+                          .update =
+                              [&](uint32_t, uint32_t slot, const std::function<void()>& waitForRender) {
                                   updateRender(c.context, c.render, slot, frameView(c), waitForRender);
                               },
                           .record =

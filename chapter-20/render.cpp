@@ -86,6 +86,8 @@ void destroyRender(common::RenderContext& c, Render& r) {
 void resizeRender(common::RenderContext& c, Render& r) {
     resizeScenePass(c.device, r.scenePass, c.target.extent);
     invalidateShadowCache(r.shadowPass, r.shadow.redraw);  // every cascade drawn whole again
+    // A frame written for the old size is written again (frame_threads.cpp): its pose too.
+    r.skinningPass.stale = true;
     resizeLightPass(c.device, r.lightPass, c.target.extent, r.scenePass.gbuffer);
     common::resizePostPass(c.device, r.postPass, r.lightPass.output);
     // The window may have moved to a screen with other formats: what writes the image follows.

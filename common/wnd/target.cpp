@@ -448,6 +448,10 @@ void waitReadingEvents(Target& target, const Device& device, VkFence fence) {
 
 }  // namespace
 
+void waitForFrame(Target& target, const Device& device, VkFence frameDone) {
+    waitReadingEvents(target, device, frameDone);
+}
+
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex, VkFence frameDone) {
     // A present that waited more than 100 ms: frames are long, and the next one is waited for here,
     // where the window's events can be read (a present that waits reads none).

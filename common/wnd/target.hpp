@@ -114,6 +114,9 @@ bool acquireTargetImage(Target& target, const Device& device, VkSemaphore imageA
 // meanwhile, so that a window closed during a long frame stops the run (common/core/stop.hpp).
 bool presentTargetImage(Target& target, const Device& device, uint32_t imageIndex,
                         VkFence frameDone = VK_NULL_HANDLE);
+// In a window: waits for `frameDone` reading the window's events meanwhile, as presentTargetImage
+// does after a long present (a close during a long frame ends the run; chapter-20's main thread).
+void waitForFrame(Target& target, const Device& device, VkFence frameDone);
 // The presentation alone: false when the swapchain is out of date or suboptimal. It reads nothing
 // that the window's events write (no GLFW call, not `resized`): chapter-20 presents from a thread
 // of its own while the main thread reads the events.

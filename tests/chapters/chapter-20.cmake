@@ -33,13 +33,15 @@ endif()
 # Frames that change, each run by chapter-19 and chapter-20 and compared to the bit: the figures
 # playing (12 frames, the skinned vertices checked); the camera and the point light walking (its
 # marker a moving caster: the moving casters' map made under the render thread's feet); one frame
-# in flight (the update waits for the frame being recorded) and three; a resize halfway.
+# in flight (the update waits for the frame being recorded) and three; a resize halfway, and one
+# on the last frame (the frame written for the old size is written again for the new one).
 set(CH20_MOVES
     "play|--frames 12 --check-skinning"
     "walk|--frames 16 --camera-motion walk --light-motion walk"
     "one-in-flight|--frames 8 --frames-in-flight 1 --camera-motion turn"
     "three-in-flight|--frames 10 --frames-in-flight 3 --camera-motion walk"
-    "resize|--frames 10 --resize 200x120 --camera-motion walk")
+    "resize|--frames 10 --resize 200x120 --camera-motion walk"
+    "resize-last|--frames 3 --resize 640x200 --camera-motion walk")
 foreach(spec ${CH20_MOVES})
     string(REPLACE "|" ";" spec "${spec}")
     list(GET spec 0 case)
