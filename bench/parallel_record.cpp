@@ -323,7 +323,6 @@ int run(int argc, char** argv) {
     VkFence done = VK_NULL_HANDLE;
     VkFenceCreateInfo fenceInfo{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(device.handle, &fenceInfo, nullptr, &done));
-    bool firstFrame = true;
 
     // One frame: the primary begun, the target to attachment, the rendering, `draws` recorded into
     // it (inline: the draws; else the secondaries executed), ended. Returns the milliseconds.
@@ -374,7 +373,6 @@ int run(int argc, char** argv) {
         VK_CHECK(vkQueueSubmit(device.queue, 1, &info, done));
         VK_CHECK(vkWaitForFences(device.handle, 1, &done, VK_TRUE, UINT64_MAX));
         VK_CHECK(vkResetFences(device.handle, 1, &done));
-        firstFrame = false;
     };
     auto summary = [](std::vector<double> times) {
         std::sort(times.begin(), times.end());
@@ -413,7 +411,6 @@ int run(int argc, char** argv) {
             std::fflush(stdout);
         }
     }
-    (void)firstFrame;
     vkDestroyFence(device.handle, done, nullptr);
     vkDestroyCommandPool(device.handle, primaryPool, nullptr);
     common::destroyBuffer(device, pass.vertices);
