@@ -4,7 +4,7 @@
 # found by rays (tests/accuracy/shadow_reference.cpp). docs/chapter-15-lab.md, "Shadows: speed
 # against error".
 #
-#   bench/shadow_study.sh [BUILD_DIR] OUT_DIR [--device NAME] [--size W H] [--rounds N]
+#   bench/shadow_study.sh [BUILD_DIR] OUT_DIR [--device NAME] [--size W H] [--rounds N] [--only NAMES]
 #   bench/shadow_study.sh --report OUT_DIR [PLOT.svg]
 #
 # The first form measures, into OUT_DIR: the study's scenes (the default courtyard with its sun
@@ -20,7 +20,10 @@
 # (chapter-16's defaults), and from there one thing changed at a time -- 1, 2 or 4 cascades; maps
 # of 512, 1024 or 4096; depth comparison with PCF over 2x2, 3x3 or 5x5 texels, and PCF 2x2 on
 # maps of 4096 (about the variance map's time at 2048: error at equal time); the cascades drawn
-# with multiview or a pass each -- and no shadows at all, for the time.
+# with multiview or a pass each; the variance map's moments in half floats; the depth alone at one
+# texel, compared in the shader (chapter-16's read without the bound) -- and no shadows at all, for
+# the time. --only "NAME,NAME": those configurations alone (none and vsm 3x2048 always: the
+# baseline the errors are counted against, and the time without shadows).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -37,6 +40,8 @@ configs=(
     "pcf 3x3|--shadows pcf3"
     "pcf 5x5|--shadows pcf5"
     "pcf 2x2, 4096|--shadows pcf2 --shadow-map-size 4096"
+    "vsm fp16|--shadows vsm16"
+    "depth 1 texel|--shadows depth"
     "multiview|--shadows vsm --shadow-layers multiview"
     "pass per cascade|--shadows vsm --shadow-layers passes"
 )
@@ -124,16 +129,27 @@ device=()
 size=(--width 1280 --height 720)
 rounds=3
 out=
+only=
 while [ $# -gt 0 ]; do
     case $1 in
         --device) device=(--device "$2"); shift ;;
         --size) size=(--width "$2" --height "$3"); shift 2 ;;
         --rounds) rounds=$2; shift ;;
+        --only) only=$2; shift ;;
         *) if [ -z "$out" ] && [ -d "$1/bin" ]; then build=$(cd "$1" && pwd); else out=$1; fi ;;
     esac
     shift
 done
 [ -n "$out" ] || { echo "shadow_study.sh: name an OUT_DIR" >&2; exit 2; }
+if [ -n "$only" ]; then
+    kept=()
+    for entry in "${configs[@]}"; do
+        name=${entry%%|*}
+        case ",none,vsm 3x2048,$only," in *",$name,"*) kept+=("$entry") ;; esac
+    done
+    [ ${#kept[@]} -gt 2 ] || { echo "shadow_study.sh: --only names no configuration: $only" >&2; exit 2; }
+    configs=("${kept[@]}")
+fi
 lab=$build/bin/chapter-15-lab
 [ -x "$lab" ] || { echo "shadow_study.sh: build $build first: no $lab" >&2; exit 2; }
 mkdir -p "$out"
@@ -168,9 +184,14 @@ for scene in sun40 sun10; do
         compares+=(--compare "$(slug "$name")=$dir/light.pfm")
     done
     if [ -x "$reference" ]; then
+        pictures=()  # the pictures of the errors, for the configurations measured
+        for picture in vsm_3x2048=vsm pcf_5x5=pcf5 size_512=512 vsm_fp16=vsm16 depth_1_texel=depth; do
+            case " ${compares[*]} " in
+                *" ${picture%%=*}="*) pictures+=(--errors "${picture%%=*}=$out/errors-$scene-${picture#*=}.png") ;;
+            esac
+        done
         "$reference" "$out/scene-$scene.json" "$out/dumps-$scene/vsm_3x2048" "${compares[@]}" \
-            --json "$out/errors-$scene.json" --errors "vsm_3x2048=$out/errors-$scene-vsm.png" \
-            --errors "pcf_5x5=$out/errors-$scene-pcf5.png" --errors "size_512=$out/errors-$scene-512.png"
+            --json "$out/errors-$scene.json" "${pictures[@]}"
     else
         echo "shadow_study.sh: no $reference (Embree missing): errors not measured" >&2
     fi

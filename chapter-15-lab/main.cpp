@@ -72,9 +72,10 @@ const common::ChapterInfo kChapter{
      // The shadow study (shadow_study.hpp): chapter-16's cascade shadows, drawn and filtered in
      // other ways.
      {"shadows",
-      {"none", "vsm", "pcf2", "pcf3", "pcf5"},
+      {"none", "vsm", "pcf2", "pcf3", "pcf5", "vsm16", "depth"},
       "the sun's shadow from chapter-16's cascades, for the shadow study: none (chapter-15's light); "
-      "the book's variance map; the depth compared by the sampler, filtered over 2x2, 3x3 or 5x5 texels"},
+      "the book's variance map; the depth compared by the sampler, filtered over 2x2, 3x3 or 5x5 texels; "
+      "the variance map in half floats; the depth alone, one texel compared in the shader"},
      {"shadow-layers",
       {"geometry", "multiview", "passes"},
       "how --shadows draws the cascades: one pass with the book's geometry shader; one pass with "

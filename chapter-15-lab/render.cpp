@@ -287,7 +287,8 @@ void addRenderInfo(std::vector<std::pair<std::string, std::string>>& info, const
         info.push_back({"shadow_study", shadowFilterName(study.filter) + ", " + layers[int(study.layers)] +
                                             ", " + std::to_string(study.cascades.count) + " cascades of " +
                                             std::to_string(study.cascades.mapSize)});
-        if (study.filter != ShadowFilter::Variance)
+        if (study.filter == ShadowFilter::Pcf2 || study.filter == ShadowFilter::Pcf3 ||
+            study.filter == ShadowFilter::Pcf5)
             info.push_back({"pcf_taps", r.shadowStudy.hardwarePcf ? "by the sampler (linear depth filtering)"
                                                                   : "gathered (no linear depth filtering)"});
     }

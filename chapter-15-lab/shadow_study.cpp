@@ -45,7 +45,7 @@ ShadowStudyOptions readShadowStudy(const common::Options& options) {
 }
 
 std::string shadowFilterName(ShadowFilter filter) {
-    const char* names[] = {"vsm", "pcf2", "pcf3", "pcf5"};
+    const char* names[] = {"vsm", "pcf2", "pcf3", "pcf5", "vsm16", "depth"};
     return names[int(filter)];
 }
 
@@ -56,15 +56,19 @@ bool hardwarePcf(const common::Device& device, VkFormat depthFormat) {
 }
 
 std::string shadowLightShader(const ShadowStudyOptions& options, bool hardware) {
-    std::string name = "chapter-15-lab/light-shadows-" + shadowFilterName(options.filter);
-    if (options.filter != ShadowFilter::Variance && !hardware) name += "-gather";
+    // vsm16 reads its moments as vsm does (the sampler returns floats whatever the format).
+    ShadowFilter filter =
+        options.filter == ShadowFilter::Variance16 ? ShadowFilter::Variance : options.filter;
+    std::string name = "chapter-15-lab/light-shadows-" + shadowFilterName(filter);
+    if (filter != ShadowFilter::Variance && filter != ShadowFilter::Depth && !hardware) name += "-gather";
     return name + ".frag";
 }
 
 namespace {
 
+// The filters that draw moments (the rest draw the depth alone).
 bool variance(const ShadowStudy& study) {
-    return study.options.filter == ShadowFilter::Variance;
+    return study.options.filter == ShadowFilter::Variance || study.options.filter == ShadowFilter::Variance16;
 }
 
 // The pipeline for the study's form, made by chapter-16's createShadowPipeline: chapter-16's
@@ -82,6 +86,7 @@ VkPipeline makeStudyPipeline(const common::Device& device, VkPipelineCache cache
         .geometry = layers == ShadowLayers::GeometryShader ? "chapter-15-lab/shadow.geom" : nullptr,
         .fragment = variance(study) ? "chapter-15-lab/shadow.frag" : "chapter-15-lab/shadow_depth.frag",
         .moments = variance(study),
+        .momentsFormat = study.momentsFormat,
         .viewMask = layers == ShadowLayers::Multiview ? (1u << study.options.cascades.count) - 1u : 0u};
     return createShadowPipeline(device, cache, study.pipelineLayout, study.depthFormat, shaders, alphaTest);
 }
@@ -107,14 +112,18 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
     ShadowStudy study;
     study.options = options;
     study.depthFormat = scenePass.formats.depth;
+    study.momentsFormat =
+        options.filter == ShadowFilter::Variance16 ? VK_FORMAT_R16G16_SFLOAT : kMomentsFormat;
     const CascadeSettings& settings = options.cascades;
     VkFormatProperties properties;
-    vkGetPhysicalDeviceFormatProperties(device.physical, kMomentsFormat, &properties);
+    vkGetPhysicalDeviceFormatProperties(device.physical, study.momentsFormat, &properties);
     VkFormatFeatureFlags needed =
         VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
     if (variance(study) && (properties.optimalTilingFeatures & needed) != needed)
         throw common::Failure(
-            "this device cannot render to and sample R32G32_SFLOAT, the variance map's format");
+            std::string("this device cannot render to and sample ") +
+            (options.filter == ShadowFilter::Variance16 ? "R16G16_SFLOAT" : "R32G32_SFLOAT") +
+            ", the variance map's format");
     vkGetPhysicalDeviceFormatProperties(device.physical, study.depthFormat, &properties);
     // Sampled in both forms: PCF reads it, and the light pass's binding 2 holds it either way.
     if ((properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0)
@@ -126,7 +135,7 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
     uint32_t momentsSize = variance(study) ? settings.mapSize : 1u;
     uint32_t momentsLayers = variance(study) ? settings.count : 1u;
     study.moments =
-        common::createLayeredImage(device, {momentsSize, momentsSize}, momentsLayers, kMomentsFormat,
+        common::createLayeredImage(device, {momentsSize, momentsSize}, momentsLayers, study.momentsFormat,
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                    VK_IMAGE_ASPECT_COLOR_BIT, "shadow study: moments");
     study.depth = common::createLayeredImage(
@@ -138,7 +147,7 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
             study.depthLayers.push_back(
                 layerView(device, study.depth.handle, study.depthFormat, VK_IMAGE_ASPECT_DEPTH_BIT, layer));
             if (variance(study))
-                study.momentLayers.push_back(layerView(device, study.moments.handle, kMomentsFormat,
+                study.momentLayers.push_back(layerView(device, study.moments.handle, study.momentsFormat,
                                                        VK_IMAGE_ASPECT_COLOR_BIT, layer));
         }
 
@@ -192,8 +201,12 @@ ShadowStudy createShadowStudy(const common::Device& device, VkPipelineCache cach
                                       buffer, sizeof(CascadeUniform));
         study.readSets.push_back(common::allocateDescriptorSet(device, study.descriptorPool, study.readLayout,
                                                                "light: shadow study"));
+        // depth: the depth image where chapter-16 reads its moments, through the same nearest
+        // sampler (no comparison: the shader compares the texel's depth itself).
+        bool depthAlone = options.filter == ShadowFilter::Depth;
         common::writeImageDescriptor(device, study.readSets.back(), 0, study.momentsSampler,
-                                     study.moments.view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+                                     depthAlone ? study.depth.view : study.moments.view,
+                                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
         common::writeBufferDescriptor(device, study.readSets.back(), 1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                       buffer, sizeof(CascadeUniform));
         common::writeImageDescriptor(device, study.readSets.back(), 2, study.depthSampler, study.depth.view,
@@ -233,7 +246,7 @@ void recordShadowStudy(VkCommandBuffer cmd, const ShadowStudy& study, const Scen
             study.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT));
-    else  // PCF: the moments' 1x1 stand-in in the layout its descriptor names (nothing reads it)
+    else  // PCF, depth: the moments' 1x1 stand-in in the layout its descriptor names (nothing reads it)
         init.push_back(common::imageBarrier(
             study.moments.handle, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,

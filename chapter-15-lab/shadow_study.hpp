@@ -2,8 +2,11 @@
 // draw and filter them, measured against a reference (docs/chapter-15-lab.md, "Shadows: speed
 // against error"). It builds on chapter-16's passes: its cascades (cascades.cpp), its cascade
 // uniform and layered images (shadow_pass.cpp), its shadow shaders and its light loop.
-//   --shadows vsm|pcf2|pcf3|pcf5: the book's variance map (moments + Chebyshev), or the depth alone
-//     compared by the sampler, with percentage-closer filtering over 2x2, 3x3 or 5x5 texels;
+//   --shadows vsm|pcf2|pcf3|pcf5|vsm16|depth: the book's variance map (moments + Chebyshev), or the
+//     depth alone compared by the sampler, with percentage-closer filtering over 2x2, 3x3 or 5x5
+//     texels; the variance map with half-float moments (R16G16_SFLOAT: 4 bytes a texel, not 8); or
+//     the depth alone, one texel read as chapter-16 reads its moments and compared in the shader
+//     (no bound, no filter: what chapter-16's read costs without the variance);
 //   --shadow-layers geometry|multiview|passes: one pass with the book's geometry shader writing
 //     gl_Layer; one pass with VK_KHR_multiview (core since 1.1: each cascade a view, gl_ViewIndex
 //     picks its matrix, no geometry stage); or one pass per cascade, each into its own layer.
@@ -25,7 +28,7 @@
 #include "common/vk/device.hpp"
 #include "common/vk/pipeline.hpp"
 
-enum class ShadowFilter { Variance, Pcf2, Pcf3, Pcf5 };
+enum class ShadowFilter { Variance, Pcf2, Pcf3, Pcf5, Variance16, Depth };
 enum class ShadowLayers { GeometryShader, Multiview, PassPerCascade };
 
 struct ShadowStudyOptions {
@@ -49,8 +52,9 @@ std::string shadowLightShader(const ShadowStudyOptions& options, bool hardware);
 struct ShadowStudy {
     ShadowStudyOptions options;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
-    common::Image moments;  // the variance map's moments (R32G32_SFLOAT); 1x1, unused, for PCF
-    common::Image depth;    // sampled by PCF
+    VkFormat momentsFormat = VK_FORMAT_UNDEFINED;  // R32G32_SFLOAT (chapter-16's), R16G16_SFLOAT (vsm16)
+    common::Image moments;  // the variance map's moments; 1x1, unused, for PCF and depth
+    common::Image depth;    // sampled by PCF and by depth (binding 0, through the nearest sampler)
     std::vector<VkImageView> momentLayers, depthLayers;     // --shadow-layers passes: a view per layer
     VkDescriptorSetLayout cascadesLayout = VK_NULL_HANDLE;  // set 0 of the shadow pipelines
     VkDescriptorSetLayout readLayout = VK_NULL_HANDLE;      // the light pass's set 3

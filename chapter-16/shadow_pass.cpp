@@ -73,7 +73,7 @@ VkPipeline createShadowPipeline(const common::Device& device, VkPipelineCache ca
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                             .viewMask = shaders.viewMask,
                                             .colorAttachmentCount = shaders.moments ? 1u : 0u,
-                                            .pColorAttachmentFormats = &kMomentsFormat,
+                                            .pColorAttachmentFormats = &shaders.momentsFormat,
                                             .depthAttachmentFormat = depthFormat};
     VkGraphicsPipelineCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,

@@ -52,8 +52,9 @@ struct ShadowPipelineShaders {
     const char* vertex = "chapter-16/shadow.vert";
     const char* geometry = "chapter-16/shadow.geom";  // nullptr: no geometry stage
     const char* fragment = "chapter-16/shadow.frag";
-    bool moments = true;    // a colour attachment of kMomentsFormat; false: depth alone
-    uint32_t viewMask = 0;  // multiview: a bit per cascade
+    bool moments = true;                      // a colour attachment of momentsFormat; false: depth alone
+    VkFormat momentsFormat = kMomentsFormat;  // chapter-15-lab's shadow study: also half floats
+    uint32_t viewMask = 0;                    // multiview: a bit per cascade
     bool vertexInput =
         true;  // the scene pass's MeshDrawing's: false when the vertex shader pulls (chapter-18)
 };

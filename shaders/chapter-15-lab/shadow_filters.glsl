@@ -11,13 +11,18 @@
 // the point lies between their centres: the sampler does it (LINEAR with compareEnable) where the
 // device filters its depth format linearly; elsewhere (PCF_GATHER: Mesa lavapipe) a gather of the
 // four comparisons, weighed here -- the same filter, up to the precision of the hardware's weights.
-// (The light pass's shader is compiled once per filter: SHADOW_VSM, SHADOW_PCF2 ...)
+// 4: the depth alone at one texel (binding 0 holds the depth image there, read as chapter-16 reads
+// its moments), lit where the point is no deeper: chapter-16's read without the bound. (The light
+// pass's shader is compiled once per filter: SHADOW_VSM, SHADOW_PCF2 ..., SHADOW_DEPTH; the half-
+// float moments, vsm16, read as SHADOW_VSM.)
 #if defined(SHADOW_PCF2)
 const int SHADOW_FILTER = 1;
 #elif defined(SHADOW_PCF3)
 const int SHADOW_FILTER = 2;
 #elif defined(SHADOW_PCF5)
 const int SHADOW_FILTER = 3;
+#elif defined(SHADOW_DEPTH)
+const int SHADOW_FILTER = 4;
 #else
 const int SHADOW_FILTER = 0;
 #endif
@@ -56,6 +61,10 @@ float pcfVisibility(vec3 world, vec3 N, int cascade, int texels) {
 
 float labSunVisibility(vec3 world, vec3 N, int cascade) {
     if (SHADOW_FILTER == 0) return sunVisibility(world, N, cascade);
+    if (SHADOW_FILTER == 4) {
+        vec3 coord = shadowCoord(world, N, cascade);
+        return coord.z <= shadowMomentsAt(coord.xy, cascade).x ? 1.0 : 0.0;
+    }
     return pcfVisibility(world, N, cascade, SHADOW_FILTER == 1 ? 2 : SHADOW_FILTER == 2 ? 3 : 5);
 }
 //< shadow-filters

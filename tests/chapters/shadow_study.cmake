@@ -11,7 +11,7 @@ chapter_test(lab.shadows-chapter-16-visibility
     COMMAND $<TARGET_FILE:chapter-16> --device llvmpipe --validation --headless ${STUDY_SIZE} --view visibility
             --frames 3 --screenshot ${TEST_OUT}/lab-shadows-chapter-16.png QUIET_STDERR)
 set_tests_properties(lab.shadows-chapter-16-visibility PROPERTIES FIXTURES_SETUP lab-shadows-ch16)
-foreach(filter vsm pcf2 pcf3 pcf5)
+foreach(filter vsm pcf2 pcf3 pcf5 vsm16 depth)
     foreach(layers geometry multiview passes)
         set(name lab.shadows-${filter}-${layers})
         chapter_test(${name}
@@ -39,6 +39,15 @@ chapter_test(lab.shadows-pcf-is-not-vsm COMMAND $<TARGET_FILE:image_compare> ${T
     EXPECT_EXIT 1 EXPECT_STDOUT "FAIL golden .*max abs diff [1-9]")
 set_tests_properties(lab.shadows-pcf-is-not-vsm PROPERTIES
     FIXTURES_REQUIRED "lab.shadows-pcf5-geometry;lab.shadows-vsm-geometry")
+
+# The half-float moments and the depth alone are other maps: other images.
+foreach(filter vsm16 depth)
+    chapter_test(lab.shadows-${filter}-is-not-vsm COMMAND $<TARGET_FILE:image_compare>
+        ${TEST_OUT}/lab.shadows-${filter}-geometry.png --golden ${TEST_OUT}/lab.shadows-vsm-geometry.png --max-diff 0
+        --max-fraction 0 EXPECT_EXIT 1 EXPECT_STDOUT "FAIL golden .*max abs diff [1-9]")
+    set_tests_properties(lab.shadows-${filter}-is-not-vsm PROPERTIES
+        FIXTURES_REQUIRED "lab.shadows-${filter}-geometry;lab.shadows-vsm-geometry")
+endforeach()
 
 # The report names the study; lavapipe cannot filter depth linearly, so PCF gathers its taps.
 chapter_test(lab.shadows-benchmark
@@ -77,8 +86,8 @@ if(TARGET shadow_reference)
     # The box over the plane (its shadow's outline known: chapters/chapter-16.cmake) and the cut-out, each
     # dumped at 640x360 with the variance map and with PCF 3x3.
     foreach(scene box_on_plane cutout_over_plane sun_down default)
-        foreach(filter vsm pcf3)
-            if(scene MATCHES "sun_down|default" AND filter STREQUAL "pcf3")
+        foreach(filter vsm pcf3 depth)
+            if(scene MATCHES "sun_down|default" AND filter MATCHES "pcf3|depth")
                 continue()
             endif()
             set(file ${SHADOWS_GLTF}/${scene}.json)
@@ -101,10 +110,11 @@ if(TARGET shadow_reference)
         chapter_test(lab.shadows-reference-${scene}
             COMMAND ${REFERENCE} ${SHADOWS_GLTF}/${scene}.json ${TEST_OUT}/study/${scene}-vsm
                     --compare vsm=${TEST_OUT}/study/${scene}-vsm/light.pfm
-                    --compare pcf3=${TEST_OUT}/study/${scene}-pcf3/light.pfm --max-wrong 0.002
-            EXPECT_STDOUT "reference: 640x360, [0-9]+ triangles, 1[3-9][0-9][0-9][0-9][0-9] pixels facing the sun.*\nvsm +[0-9.]+ +[0-9.]+ +0[.]000 +0[.]000 .*\npcf3 +[0-9.]+ +[0-9.]+ +0[.]000 +0[.]000 ")
+                    --compare pcf3=${TEST_OUT}/study/${scene}-pcf3/light.pfm
+                    --compare depth=${TEST_OUT}/study/${scene}-depth/light.pfm --max-wrong 0.002
+            EXPECT_STDOUT "reference: 640x360, [0-9]+ triangles, 1[3-9][0-9][0-9][0-9][0-9] pixels facing the sun.*\nvsm +[0-9.]+ +[0-9.]+ +0[.]000 +0[.]000 .*\npcf3 +[0-9.]+ +[0-9.]+ +0[.]000 +0[.]000 .*\ndepth +[0-9.]+ +[0-9.]+ +0[.]000 +0[.]000 ")
         set_tests_properties(lab.shadows-reference-${scene} PROPERTIES
-            FIXTURES_REQUIRED "lab.shadows-dump-${scene}-vsm;lab.shadows-dump-${scene}-pcf3")
+            FIXTURES_REQUIRED "lab.shadows-dump-${scene}-vsm;lab.shadows-dump-${scene}-pcf3;lab.shadows-dump-${scene}-depth")
     endforeach()
     # The same plane under the sun straight down, compared with the rays of the slanted sun: the
     # shadow is elsewhere, and the comparison must say so (exit 1: 1.8% wrong, over the 0.2%).
