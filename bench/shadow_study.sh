@@ -22,7 +22,7 @@
 # maps of 4096 (about the variance map's time at 2048: error at equal time); the cascades drawn
 # with multiview or a pass each; the variance map's moments in half floats; the depth alone at one
 # texel, compared in the shader (chapter-16's read without the bound) -- and no shadows at all, for
-# the time. --only "NAME,NAME": those configurations alone (none and vsm 3x2048 always: the
+# the time. --only "NAME;NAME": those configurations alone (none and vsm 3x2048 always: the
 # baseline the errors are counted against, and the time without shadows).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -135,19 +135,29 @@ while [ $# -gt 0 ]; do
         --device) device=(--device "$2"); shift ;;
         --size) size=(--width "$2" --height "$3"); shift 2 ;;
         --rounds) rounds=$2; shift ;;
-        --only) only=$2; shift ;;
+        --only)
+            [ $# -ge 2 ] && [ -n "$2" ] || { echo "shadow_study.sh: --only needs names, separated by ;" >&2; exit 2; }
+            only=$2; shift ;;
         *) if [ -z "$out" ] && [ -d "$1/bin" ]; then build=$(cd "$1" && pwd); else out=$1; fi ;;
     esac
     shift
 done
 [ -n "$out" ] || { echo "shadow_study.sh: name an OUT_DIR" >&2; exit 2; }
 if [ -n "$only" ]; then
+    IFS=';' read -r -a wanted <<< "$only"
+    for name in "${wanted[@]}"; do
+        known=0
+        for entry in "${configs[@]}"; do [ "${entry%%|*}" = "$name" ] && known=1; done
+        [ $known = 1 ] || { echo "shadow_study.sh: --only: no configuration named '$name'" >&2; exit 2; }
+    done
     kept=()
     for entry in "${configs[@]}"; do
         name=${entry%%|*}
-        case ",none,vsm 3x2048,$only," in *",$name,"*) kept+=("$entry") ;; esac
+        keep=0
+        [ "$name" = none ] || [ "$name" = "vsm 3x2048" ] && keep=1
+        for w in "${wanted[@]}"; do [ "$w" = "$name" ] && keep=1; done
+        [ $keep = 1 ] && kept+=("$entry")
     done
-    [ ${#kept[@]} -gt 2 ] || { echo "shadow_study.sh: --only names no configuration: $only" >&2; exit 2; }
     configs=("${kept[@]}")
 fi
 lab=$build/bin/chapter-15-lab
